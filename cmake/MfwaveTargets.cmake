@@ -1,0 +1,51 @@
+# Helpers that give every project target the same standard, warnings and layout.
+
+# Warnings for project code only: dependencies come in through imported targets, whose
+# headers are SYSTEM includes and so stay quiet.
+function(mfwave_set_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor
+                                           -Wold-style-cast -Wcast-align -Woverloaded-virtual)
+  if(MFWAVE_WARNINGS_AS_ERRORS)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+endfunction()
+
+# mfwave_add_library(<folder> SOURCES ... DEPENDS ...)
+# One static library per concept folder under lib/, target mfwave_<folder>, alias mfwave::<folder>.
+# Headers are included as "<folder>/<Name>.hpp" relative to lib/.
+function(mfwave_add_library folder)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+  set(target mfwave_${folder})
+  if(ARG_SOURCES)
+    add_library(${target} STATIC ${ARG_SOURCES})
+    target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR}/lib)
+    target_link_libraries(${target} PUBLIC ${ARG_DEPENDS})
+    mfwave_set_warnings(${target})
+  else()
+    add_library(${target} INTERFACE)
+    target_include_directories(${target} INTERFACE ${PROJECT_SOURCE_DIR}/lib)
+    target_link_libraries(${target} INTERFACE ${ARG_DEPENDS})
+  endif()
+  add_library(mfwave::${folder} ALIAS ${target})
+endfunction()
+
+# mfwave_add_test(<name> SOURCES ... DEPENDS ...): a GoogleTest executable registered with CTest.
+function(mfwave_add_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS;LABELS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest_main)
+  mfwave_set_warnings(${name})
+  set(labels unit)
+  if(ARG_LABELS)
+    set(labels ${ARG_LABELS})
+  endif()
+  gtest_discover_tests(${name} PROPERTIES LABELS "${labels}" DISCOVERY_TIMEOUT 60)
+endfunction()
+
+# mfwave_add_executable(<name> SOURCES ... DEPENDS ...): a driver or analysis tool.
+function(mfwave_add_executable name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPENDS})
+  mfwave_set_warnings(${name})
+endfunction()

@@ -1,0 +1,46 @@
+#pragma once
+// The linear case M u'' + C u' + K u = f(t), with sparse M, C, K assembled once (linear
+// elastodynamics on fixed particles, collocation). Implicit integrators (Newmark) use the matrices;
+// explicit ones use acceleration(), which needs M diagonal (lumped).
+
+#include "systems/SecondOrderSystem.hpp"
+
+#include <functional>
+
+namespace mfwave {
+
+class LinearSecondOrderSystem : public SecondOrderSystem {
+ public:
+  using ForceFunction = std::function<void(Real t, Vector& f)>;
+
+  // M, C, K must be square and of the same size; C may be empty (0 x 0) for no damping.
+  // `force` fills f(t) (size n); an empty function means f = 0.
+  LinearSecondOrderSystem(SparseMatrix mass, SparseMatrix damping, SparseMatrix stiffness,
+                          ForceFunction force = {});
+
+  Index size() const override { return stiffness_.rows(); }
+  bool dependsOnVelocity() const override { return damping_.nonZeros() > 0; }
+
+  // a = M^{-1} (f(t) - C v - K u). Requires a diagonal mass matrix (throws InputError otherwise).
+  void acceleration(Real t, const Vector& u, const Vector& v, Vector& a) override;
+
+  const SparseMatrix& mass() const { return mass_; }
+  const SparseMatrix& damping() const { return damping_; }  // 0 x 0 when undamped
+  const SparseMatrix& stiffness() const { return stiffness_; }
+  bool hasDamping() const { return damping_.nonZeros() > 0; }
+  void force(Real t, Vector& f) const;
+
+  // Total mechanical energy 1/2 v^T M v + 1/2 u^T K u (meaningful for symmetric K).
+  Real kineticEnergy(const Vector& v) const;
+  Real strainEnergy(const Vector& u) const;
+
+ private:
+  SparseMatrix mass_;
+  SparseMatrix damping_;
+  SparseMatrix stiffness_;
+  ForceFunction force_;
+  Vector inverseMassDiagonal_;  // empty when M is not diagonal
+  Vector work_;
+};
+
+}  // namespace mfwave

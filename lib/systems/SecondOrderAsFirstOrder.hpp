@@ -1,0 +1,26 @@
+#pragma once
+// Views a second-order system u'' = a(t, u, u') as the first-order system y = [u; v],
+// y' = [v; a(t, u, v)], so first-order integrators (ARKODE) can drive any second-order method.
+
+#include "systems/FirstOrderSystem.hpp"
+#include "systems/SecondOrderSystem.hpp"
+
+namespace mfwave {
+
+class SecondOrderAsFirstOrder : public FirstOrderSystem {
+ public:
+  explicit SecondOrderAsFirstOrder(SecondOrderSystem& system);
+
+  Index size() const override { return 2 * system_.size(); }
+  void rhs(Real t, const Vector& y, Vector& ydot) override;
+
+  // Pack u and v into y = [u; v], and split y back.
+  Vector pack(const Vector& u, const Vector& v) const;
+  void unpack(const Vector& y, Vector& u, Vector& v) const;
+
+ private:
+  SecondOrderSystem& system_;
+  Vector u_, v_, a_;
+};
+
+}  // namespace mfwave

@@ -1,0 +1,25 @@
+#pragma once
+// A semi-discrete system of second order in time, u'' = a(t, u, u'), in the method-of-lines
+// spirit: a spatial discretisation implements it, an integrator advances it, and neither knows
+// the other. Integrators never see particles.
+
+#include "core/Types.hpp"
+
+namespace mfwave {
+
+class SecondOrderSystem {
+ public:
+  virtual ~SecondOrderSystem() = default;
+
+  // Number of unknowns (for a vector field on particles: particles * components).
+  virtual Index size() const = 0;
+
+  // The acceleration a = u'' at time t for displacement u and velocity v. `a` has size().
+  virtual void acceleration(Real t, const Vector& u, const Vector& v, Vector& a) = 0;
+
+  // True if the acceleration depends on v (damping, dashpots, viscosity). Explicit integrators
+  // use it to skip the velocity predictor when it is not needed.
+  virtual bool dependsOnVelocity() const { return true; }
+};
+
+}  // namespace mfwave

@@ -1,0 +1,68 @@
+#include "core/Error.hpp"
+#include "systems/LinearSecondOrderSystem.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace mfwave;
+
+namespace {
+
+SparseMatrix diagonal(const std::vector<Real>& d) {
+  SparseMatrix m(static_cast<int>(d.size()), static_cast<int>(d.size()));
+  for (size_t i = 0; i < d.size(); ++i) m.insert(static_cast<int>(i), static_cast<int>(i)) = d[i];
+  return m;
+}
+
+}  // namespace
+
+TEST(LinearSecondOrderSystem, AccelerationIsInverseMassTimesResidual) {
+  // Two masses on springs: M = diag(2, 4), K = [[3, -1], [-1, 2]], C = diag(0.5, 0), f = (t, 1).
+  SparseMatrix k(2, 2);
+  k.insert(0, 0) = 3;
+  k.insert(0, 1) = -1;
+  k.insert(1, 0) = -1;
+  k.insert(1, 1) = 2;
+  LinearSecondOrderSystem system(diagonal({2, 4}), diagonal({0.5, 0}), k, [](Real t, Vector& f) {
+    f[0] = t;
+    f[1] = 1;
+  });
+  Vector u(2), v(2), a(2);
+  u << 1, 2;
+  v << 3, 4;
+  system.acceleration(0.5, u, v, a);
+  EXPECT_NEAR(a[0], (0.5 - (3 * 1 - 1 * 2) - 0.5 * 3) / 2, 1e-15);
+  EXPECT_NEAR(a[1], (1 - (-1 * 1 + 2 * 2)) / 4.0, 1e-15);
+  EXPECT_TRUE(system.dependsOnVelocity());
+  EXPECT_NEAR(system.kineticEnergy(v), 0.5 * (2 * 9 + 4 * 16), 1e-14);
+  EXPECT_NEAR(system.strainEnergy(u), 0.5 * (3 - 2 - 2 + 8), 1e-14);
+}
+
+TEST(LinearSecondOrderSystem, UndampedWithoutForceDoesNotDependOnVelocity) {
+  LinearSecondOrderSystem system(diagonal({1}), SparseMatrix(), diagonal({4}));
+  EXPECT_FALSE(system.dependsOnVelocity());
+  Vector u(1), v(1), a(1);
+  u << 0.5;
+  v << 100;
+  system.acceleration(0, u, v, a);
+  EXPECT_DOUBLE_EQ(a[0], -2.0);
+}
+
+TEST(LinearSecondOrderSystem, ConsistentMassIsRejectedForExplicitUse) {
+  SparseMatrix m(2, 2);
+  m.insert(0, 0) = 2;
+  m.insert(0, 1) = 1;
+  m.insert(1, 0) = 1;
+  m.insert(1, 1) = 2;
+  LinearSecondOrderSystem system(m, SparseMatrix(), diagonal({1, 1}));
+  Vector u = Vector::Zero(2), v = Vector::Zero(2), a;
+  EXPECT_THROW(system.acceleration(0, u, v, a), InputError);
+}
+
+TEST(LinearSecondOrderSystem, MismatchedSizesNameTheMatrix) {
+  try {
+    LinearSecondOrderSystem system(diagonal({1, 1, 1}), SparseMatrix(), diagonal({1, 1}));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "mass");
+  }
+}

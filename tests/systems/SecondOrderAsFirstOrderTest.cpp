@@ -1,0 +1,28 @@
+#include "systems/LinearSecondOrderSystem.hpp"
+#include "systems/SecondOrderAsFirstOrder.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace mfwave;
+
+TEST(SecondOrderAsFirstOrder, StacksVelocityAndAcceleration) {
+  SparseMatrix m(1, 1), k(1, 1), c(1, 1);
+  m.insert(0, 0) = 2;
+  k.insert(0, 0) = 8;
+  c.insert(0, 0) = 1;
+  LinearSecondOrderSystem oscillator(m, c, k);
+  SecondOrderAsFirstOrder first(oscillator);
+  ASSERT_EQ(first.size(), 2);
+  Vector u(1), v(1);
+  u << 0.5;
+  v << -1;
+  const Vector y = first.pack(u, v);
+  Vector ydot;
+  first.rhs(0, y, ydot);
+  EXPECT_DOUBLE_EQ(ydot[0], -1);
+  EXPECT_DOUBLE_EQ(ydot[1], (-8 * 0.5 - 1 * -1) / 2.0);
+  Vector u2, v2;
+  first.unpack(y, u2, v2);
+  EXPECT_EQ(u2, u);
+  EXPECT_EQ(v2, v);
+}
