@@ -1,0 +1,97 @@
+#include "ScriptedIntegrator.hpp"
+#include "core/Error.hpp"
+#include "observers/StabilityMonitor.hpp"
+#include "observers/TimeLoop.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+using namespace mfwave;
+using mfwave::testing::ScriptedIntegrator;
+
+TEST(StabilityMonitor, StopsAtTheFirstNonFiniteValueAndNamesParticleStepAndTime) {
+  // 3 components per particle; dof 7 is particle 2, component 1.
+  ScriptedIntegrator integrator(Vector::Ones(9), Vector::Zero(9), 0.5, [](long step, Vector& u, Vector&) {
+    if (step == 4) u[7] = std::numeric_limits<Real>::quiet_NaN();
+  });
+  StabilityMonitorOptions options;
+  options.components = 3;
+  StabilityMonitor monitor(options);
+  TimeLoop loop;
+  loop.add(monitor);
+  try {
+    loop.run(integrator, 10.0);
+    FAIL() << "the NaN was not caught";
+  } catch (const InstabilityError& e) {
+    EXPECT_EQ(e.step(), 4);
+    EXPECT_DOUBLE_EQ(e.time(), 2.0);
+    EXPECT_EQ(e.particle(), 2);
+    const std::string message = e.what();
+    EXPECT_NE(message.find("non-finite"), std::string::npos) << message;
+    EXPECT_NE(message.find("particle 2"), std::string::npos) << message;
+    EXPECT_NE(message.find("component 1"), std::string::npos) << message;
+  }
+  EXPECT_EQ(integrator.stepCount(), 4);  // stopped at once
+}
+
+TEST(StabilityMonitor, CatchesGeometricGrowthSoonAfterItExceedsTheFactor) {
+  // Growth by 1.3 a step (central difference just above its limit grows like this).
+  ScriptedIntegrator integrator(Vector::Constant(4, 1.0), Vector::Zero(4), 1.0,
+                                [](long, Vector& u, Vector&) { u *= 1.3; });
+  StabilityMonitorOptions options;
+  options.growthFactor = 1e3;
+  options.window = 30;
+  StabilityMonitor monitor(options);
+  TimeLoop loop;
+  loop.add(monitor);
+  EXPECT_THROW(loop.run(integrator, 1000.0), InstabilityError);
+  // At step 31 the reference is the amplitude at step 0 and 1.3^31 = 3.4e3 > 1e3: caught there.
+  EXPECT_EQ(integrator.stepCount(), 31);
+}
+
+TEST(StabilityMonitor, GrowthSlowerThanTheWindowCanSeeNeedsTheAbsoluteLimit) {
+  // 1.2^30 = 237 < 1e3: the window criterion alone lets this pass, by design (documented).
+  ScriptedIntegrator integrator(Vector::Constant(1, 1.0), Vector::Zero(1), 1.0,
+                                [](long, Vector& u, Vector&) { u *= 1.2; });
+  StabilityMonitorOptions options;
+  options.window = 30;
+  StabilityMonitor monitor(options);
+  TimeLoop loop;
+  loop.add(monitor);
+  EXPECT_NO_THROW(loop.run(integrator, 100.0));
+}
+
+TEST(StabilityMonitor, LetsABoundedOscillationAndAResponseFromRestRun) {
+  // From rest, growing quickly to a bounded oscillation: no false alarm.
+  ScriptedIntegrator integrator(Vector::Zero(2), Vector::Zero(2), 0.01, [](long step, Vector& u, Vector& v) {
+    const Real t = 0.01 * static_cast<Real>(step);
+    u[0] = (1 - std::exp(-t)) * std::sin(40 * t) * 1e-3;
+    u[1] = 1e-12 * t;
+    v[0] = std::cos(40 * t);
+  });
+  StabilityMonitor monitor;
+  TimeLoop loop;
+  loop.add(monitor);
+  EXPECT_NO_THROW(loop.run(integrator, 20.0));
+}
+
+TEST(StabilityMonitor, AbsoluteLimitStopsSlowGrowth) {
+  ScriptedIntegrator integrator(Vector::Constant(1, 1.0), Vector::Zero(1), 1.0,
+                                [](long, Vector& u, Vector&) { u *= 1.001; });
+  StabilityMonitorOptions options;
+  options.absoluteLimit = 2.0;
+  StabilityMonitor monitor(options);
+  TimeLoop loop;
+  loop.add(monitor);
+  EXPECT_THROW(loop.run(integrator, 1e4), InstabilityError);
+  EXPECT_EQ(integrator.stepCount(), 694);  // first k with 1.001^k > 2
+}
+
+TEST(StabilityMonitor, RejectsMeaninglessOptions) {
+  StabilityMonitorOptions options;
+  options.growthFactor = 0.5;
+  EXPECT_THROW(StabilityMonitor{options}, InputError);
+}
