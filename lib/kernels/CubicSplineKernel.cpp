@@ -1,0 +1,44 @@
+#include "kernels/CubicSplineKernel.hpp"
+
+#include <array>
+#include <cmath>
+
+namespace mfwave {
+
+namespace {
+// Li primer eq. (8): 2/3 (1-D), 10/(7 pi) (2-D), 1/pi (3-D).
+constexpr std::array<Real, 3> kSigma = {2.0 / 3.0, 10.0 / (7.0 * M_PI), 1.0 / M_PI};
+}  // namespace
+
+CubicSplineKernel::CubicSplineKernel(int dimension, Real h)
+    : Kernel(dimension, h, 2.0, kSigma, "smoothing_length") {}
+
+// f = 1 - 3/2 q^2 + 3/4 q^3 (q <= 1), 1/4 (2 - q)^3 (1 < q <= 2).
+Real CubicSplineKernel::shape(Real q) const {
+  if (q < 1.0) return 1.0 + q * q * (-1.5 + 0.75 * q);
+  if (q < 2.0) {
+    const Real t = 2.0 - q;
+    return 0.25 * t * t * t;
+  }
+  return 0.0;
+}
+
+Real CubicSplineKernel::slopeOverQ(Real q) const {
+  if (q < 1.0) return -3.0 + 2.25 * q;
+  if (q < 2.0) {
+    const Real t = 2.0 - q;
+    return -0.75 * t * t / q;
+  }
+  return 0.0;
+}
+
+Kernel::Curvature CubicSplineKernel::curvature(Real q) const {
+  if (q < 1.0) return {-3.0 + 2.25 * q, -3.0 + 4.5 * q};
+  if (q < 2.0) {
+    const Real t = 2.0 - q;
+    return {-0.75 * t * t / q, 1.5 * t};
+  }
+  return {0.0, 0.0};
+}
+
+}  // namespace mfwave
