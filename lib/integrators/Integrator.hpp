@@ -42,4 +42,9 @@ class SecondOrderIntegrator : public Integrator {
   virtual void initialise(SecondOrderSystem& system, Real t0, const Vector& u0, const Vector& v0, Real dt) = 0;
 };
 
+// What every SecondOrderIntegrator::initialise checks first: u0 and v0 have the system's size and
+// are finite, t0 is finite, dt is positive and finite. Throws InputError ("initial_state",
+// "time_step").
+void checkInitialState(const SecondOrderSystem& system, Real t0, const Vector& u0, const Vector& v0, Real dt);
+
 }  // namespace mfwave

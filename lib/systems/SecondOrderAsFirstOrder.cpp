@@ -12,13 +12,17 @@ SecondOrderAsFirstOrder::SecondOrderAsFirstOrder(SecondOrderSystem& system) : sy
 }
 
 void SecondOrderAsFirstOrder::rhs(Real t, const Vector& y, Vector& ydot) {
+  ydot.resize(2 * system_.size());
+  rhsView(t, y, ydot);
+}
+
+void SecondOrderAsFirstOrder::rhsView(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) {
   const Index n = system_.size();
   // The copies keep the SecondOrderSystem interface on whole vectors; they cost two streams of
   // memory per evaluation, small beside any spatial operator.
   u_ = y.head(n);
   v_ = y.tail(n);
   system_.acceleration(t, u_, v_, a_);
-  ydot.resize(2 * n);
   ydot.head(n) = v_;
   ydot.tail(n) = a_;
 }

@@ -13,6 +13,7 @@ class SecondOrderAsFirstOrder : public FirstOrderSystem {
 
   Index size() const override { return 2 * system_.size(); }
   void rhs(Real t, const Vector& y, Vector& ydot) override;
+  void rhsView(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) override;
 
   // Pack u and v into y = [u; v], and split y back.
   Vector pack(const Vector& u, const Vector& v) const;

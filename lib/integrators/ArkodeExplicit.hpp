@@ -1,0 +1,74 @@
+#pragma once
+// Explicit Runge-Kutta integration of a first-order system y' = F(t, y) by SUNDIALS ARKODE's
+// ERKStep, with a fixed step or with error control. This adapter is the only code in mfwave that
+// sees SUNDIALS: its header keeps SUNDIALS types out (pimpl), so a SUNDIALS upgrade (7.x moves
+// ERKStep* to ARKode*) touches ArkodeExplicit.cpp alone.
+//
+// ARKODE works directly on the adapter's Eigen vector (N_VMake_Serial over its storage), and the
+// right-hand side is evaluated on Eigen::Maps of ARKODE's vectors (FirstOrderSystem::rhsView): no
+// copies between the two libraries.
+
+#include "core/Types.hpp"
+#include "systems/FirstOrderSystem.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mfwave {
+
+struct ArkodeOptions {
+  // Butcher table by name; see ArkodeExplicit::tableNames(). "classic_rk4" has no embedded
+  // method and so runs with a fixed step only.
+  std::string table = "classic_rk4";
+  bool adaptive = false;
+  Real fixedStep = 0;              // fixed mode: the step (> 0), checked at initialise
+  Real relativeTolerance = 1e-6;   // adaptive mode
+  Real absoluteTolerance = 1e-9;   // adaptive mode
+  Real initialStep = 0;            // adaptive mode: first step; 0 lets ARKODE estimate it
+  long maxStepsPerAdvance = 10000000;  // ARKODE's mxstep: steps allowed in one advanceTo
+};
+
+struct ArkodeStatistics {
+  long steps = 0;           // accepted steps
+  long stepAttempts = 0;    // accepted + rejected
+  long rhsEvaluations = 0;  // calls of F
+  long failedSteps = 0;     // steps rejected by the error test
+};
+
+class ArkodeExplicit {
+ public:
+  // Checks the options that do not need a system: table name (InputError "integrator.table",
+  // listing the valid names), an embedding for adaptive runs, tolerances.
+  explicit ArkodeExplicit(ArkodeOptions options = {});
+  ~ArkodeExplicit();
+  ArkodeExplicit(ArkodeExplicit&&) noexcept;
+  ArkodeExplicit& operator=(ArkodeExplicit&&) noexcept;
+  ArkodeExplicit(const ArkodeExplicit&) = delete;
+  ArkodeExplicit& operator=(const ArkodeExplicit&) = delete;
+
+  // The names accepted in ArkodeOptions::table.
+  static std::vector<std::string> tableNames();
+
+  // Binds the system (it must outlive the integrator's use) and sets y(t0) = y0. May be called
+  // again to restart.
+  void initialise(FirstOrderSystem& system, Real t0, const Vector& y0);
+  // One step: of the fixed size, or one internal adaptive step of the size ARKODE chooses.
+  void step();
+  // Advances to exactly t (>= time()); the last step is shortened to land on t.
+  void advanceTo(Real t);
+
+  Real time() const;
+  const Vector& state() const;   // y at time()
+  Real lastStepSize() const;     // 0 before the first step
+  ArkodeStatistics statistics() const;
+  const ArkodeOptions& options() const;
+  int order() const;             // order of the method in the table
+  bool isInitialised() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace mfwave

@@ -1,0 +1,29 @@
+#pragma once
+// Builds a second-order integrator by name, for drivers and scene files.
+
+#include "integrators/ArkodeExplicit.hpp"
+#include "integrators/Integrator.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mfwave {
+
+struct IntegratorOptions {
+  // "newmark": Newmark parameters (default: average acceleration, unconditionally stable).
+  Real newmarkBeta = 0.25;
+  Real newmarkGamma = 0.5;
+  // "arkode": table, fixed or adaptive, tolerances. The step comes from initialise(..., dt).
+  ArkodeOptions arkode;
+};
+
+// The names makeSecondOrderIntegrator accepts.
+std::vector<std::string> secondOrderIntegratorNames();
+
+// "central_difference", "leapfrog", "newmark", "arkode"; anything else:
+// InputError("integrator", "unknown integrator 'x'; valid: ...").
+std::unique_ptr<SecondOrderIntegrator> makeSecondOrderIntegrator(const std::string& name,
+                                                                 const IntegratorOptions& options = {});
+
+}  // namespace mfwave
