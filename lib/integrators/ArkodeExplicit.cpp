@@ -134,7 +134,7 @@ struct ArkodeExplicit::Impl {
       // Views of ARKODE's storage: stage vectors are ARKODE's, not ours, and need no copy.
       Eigen::Map<const Vector> yView(N_VGetArrayPointer_Serial(y), n);
       Eigen::Map<Vector> ydotView(N_VGetArrayPointer_Serial(ydot), n);
-      self->system->rhsView(t, yView, ydotView);
+      self->system->rhs(t, yView, ydotView);
       return 0;
     } catch (...) {
       // Exceptions must not cross SUNDIALS's C frames: keep it, fail the call, rethrow after.

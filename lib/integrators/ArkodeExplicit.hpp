@@ -5,7 +5,7 @@
 // ERKStep* to ARKode*) touches ArkodeExplicit.cpp alone.
 //
 // ARKODE works directly on the adapter's Eigen vector (N_VMake_Serial over its storage), and the
-// right-hand side is evaluated on Eigen::Maps of ARKODE's vectors (FirstOrderSystem::rhsView): no
+// right-hand side is evaluated on Eigen::Maps of ARKODE's vectors (FirstOrderSystem::rhs takes Eigen::Ref): no
 // copies between the two libraries.
 
 #include "core/Types.hpp"

@@ -10,19 +10,9 @@ class FirstOrderSystem {
  public:
   virtual ~FirstOrderSystem() = default;
   virtual Index size() const = 0;
-  // ydot = F(t, y); ydot has size().
-  virtual void rhs(Real t, const Vector& y, Vector& ydot) = 0;
-
-  // The same on views of foreign storage (ARKODE's N_Vector data), so an adapter can evaluate F
-  // without copying y in and ydot out. ydot already has size(). A distinct name, not an overload,
-  // so systems that override only rhs() do not hide it (-Woverloaded-virtual). The default copies;
-  // systems on a hot path override it.
-  virtual void rhsView(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) {
-    const Vector yCopy = y;
-    Vector ydotCopy(size());
-    rhs(t, yCopy, ydotCopy);
-    ydot = ydotCopy;
-  }
+  // ydot = F(t, y); y and ydot have size(). Eigen::Ref takes whole vectors or views of foreign
+  // storage (ARKODE's N_Vector data), so adapters evaluate F without copies.
+  virtual void rhs(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) = 0;
 };
 
 }  // namespace mfwave

@@ -42,13 +42,14 @@ void LinearSecondOrderSystem::force(Real t, Vector& f) const {
   if (force_) force_(t, f);
 }
 
-void LinearSecondOrderSystem::acceleration(Real t, const Vector& u, const Vector& v, Vector& a) {
+void LinearSecondOrderSystem::acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v,
+                                           Eigen::Ref<Vector> a) {
   if (inverseMassDiagonal_.size() == 0)
     throw InputError("mass", "explicit integration needs a diagonal (lumped) mass matrix with positive entries");
   force(t, work_);
   work_.noalias() -= stiffness_ * u;
   if (hasDamping()) work_.noalias() -= damping_ * v;
-  a = inverseMassDiagonal_.cwiseProduct(work_);
+  a.noalias() = inverseMassDiagonal_.cwiseProduct(work_);
 }
 
 Real LinearSecondOrderSystem::kineticEnergy(const Vector& v) const { return 0.5 * v.dot(mass_ * v); }

@@ -22,7 +22,8 @@ class LinearSecondOrderSystem : public SecondOrderSystem {
   bool dependsOnVelocity() const override { return damping_.nonZeros() > 0; }
 
   // a = M^{-1} (f(t) - C v - K u). Requires a diagonal mass matrix (throws InputError otherwise).
-  void acceleration(Real t, const Vector& u, const Vector& v, Vector& a) override;
+  void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v,
+                    Eigen::Ref<Vector> a) override;
 
   const SparseMatrix& mass() const { return mass_; }
   const SparseMatrix& damping() const { return damping_; }  // 0 x 0 when undamped

@@ -4,27 +4,13 @@
 
 namespace mfwave {
 
-SecondOrderAsFirstOrder::SecondOrderAsFirstOrder(SecondOrderSystem& system) : system_(system) {
-  const Index n = system_.size();
-  u_.resize(n);
-  v_.resize(n);
-  a_.resize(n);
-}
+SecondOrderAsFirstOrder::SecondOrderAsFirstOrder(SecondOrderSystem& system) : system_(system) {}
 
-void SecondOrderAsFirstOrder::rhs(Real t, const Vector& y, Vector& ydot) {
-  ydot.resize(2 * system_.size());
-  rhsView(t, y, ydot);
-}
-
-void SecondOrderAsFirstOrder::rhsView(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) {
+void SecondOrderAsFirstOrder::rhs(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) {
   const Index n = system_.size();
-  // The copies keep the SecondOrderSystem interface on whole vectors; they cost two streams of
-  // memory per evaluation, small beside any spatial operator.
-  u_ = y.head(n);
-  v_ = y.tail(n);
-  system_.acceleration(t, u_, v_, a_);
-  ydot.head(n) = v_;
-  ydot.tail(n) = a_;
+  // u, v and a are views into y and ydot: no copies.
+  system_.acceleration(t, y.head(n), y.tail(n), ydot.tail(n));
+  ydot.head(n) = y.tail(n);
 }
 
 Vector SecondOrderAsFirstOrder::pack(const Vector& u, const Vector& v) const {

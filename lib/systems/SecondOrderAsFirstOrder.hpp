@@ -12,8 +12,7 @@ class SecondOrderAsFirstOrder : public FirstOrderSystem {
   explicit SecondOrderAsFirstOrder(SecondOrderSystem& system);
 
   Index size() const override { return 2 * system_.size(); }
-  void rhs(Real t, const Vector& y, Vector& ydot) override;
-  void rhsView(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) override;
+  void rhs(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) override;
 
   // Pack u and v into y = [u; v], and split y back.
   Vector pack(const Vector& u, const Vector& v) const;
@@ -21,7 +20,6 @@ class SecondOrderAsFirstOrder : public FirstOrderSystem {
 
  private:
   SecondOrderSystem& system_;
-  Vector u_, v_, a_;
 };
 
 }  // namespace mfwave

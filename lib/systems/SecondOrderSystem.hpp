@@ -14,8 +14,11 @@ class SecondOrderSystem {
   // Number of unknowns (for a vector field on particles: particles * components).
   virtual Index size() const = 0;
 
-  // The acceleration a = u'' at time t for displacement u and velocity v. `a` has size().
-  virtual void acceleration(Real t, const Vector& u, const Vector& v, Vector& a) = 0;
+  // The acceleration a = u'' at time t for displacement u and velocity v. All three have size().
+  // Eigen::Ref lets callers pass whole vectors or views of foreign storage (the halves of
+  // ARKODE's [u; v]) without copies.
+  virtual void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v,
+                            Eigen::Ref<Vector> a) = 0;
 
   // True if the acceleration depends on v (damping, dashpots, viscosity). Explicit integrators
   // use it to skip the velocity predictor when it is not needed.

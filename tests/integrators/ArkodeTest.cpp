@@ -121,11 +121,10 @@ TEST(ArkodeSecondOrder, ClassicRk4IsTheTextbookMethod) {
 }
 
 TEST(ArkodeExplicit, IntegratesAPlainFirstOrderSystem) {
-  // y' = -y + sin t overriding only rhs(): exercises the default (copying) rhsView.
+  // y' = -y + sin t, a system that is not a second-order one in disguise.
   struct Forced : FirstOrderSystem {
     Index size() const override { return 2; }
-    void rhs(Real t, const Vector& y, Vector& ydot) override {
-      ydot.resize(2);
+    void rhs(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) override {
       ydot[0] = -y[0] + std::sin(t);
       ydot[1] = -2 * y[1];
     }

@@ -93,7 +93,7 @@ TYPED_TEST(ExplicitScheme, OneAccelerationEvaluationPerStep) {
     explicit Counting(SecondOrderSystem& s) : inner(s) {}
     Index size() const override { return inner.size(); }
     bool dependsOnVelocity() const override { return inner.dependsOnVelocity(); }
-    void acceleration(Real t, const Vector& u, const Vector& v, Vector& a) override {
+    void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) override {
       ++calls;
       inner.acceleration(t, u, v, a);
     }

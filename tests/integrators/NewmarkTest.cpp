@@ -126,7 +126,7 @@ TEST(Newmark, ParametersOutOfRangeNameTheirKey) {
 TEST(Newmark, NeedsALinearSystem) {
   struct Pendulum : SecondOrderSystem {
     Index size() const override { return 1; }
-    void acceleration(Real, const Vector& u, const Vector&, Vector& a) override { a = -u.array().sin().matrix(); }
+    void acceleration(Real, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector>, Eigen::Ref<Vector> a) override { a = -u.array().sin().matrix(); }
   } pendulum;
   Newmark newmark;
   try {

@@ -17,7 +17,7 @@ TEST(SecondOrderAsFirstOrder, StacksVelocityAndAcceleration) {
   u << 0.5;
   v << -1;
   const Vector y = first.pack(u, v);
-  Vector ydot;
+  Vector ydot(2);
   first.rhs(0, y, ydot);
   EXPECT_DOUBLE_EQ(ydot[0], -1);
   EXPECT_DOUBLE_EQ(ydot[1], (-8 * 0.5 - 1 * -1) / 2.0);
