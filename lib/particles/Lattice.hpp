@@ -1,0 +1,33 @@
+#pragma once
+// Regular lattices of particles filling a line, a rectangle or a block, with the box faces
+// tagged. Nodes sit at lower + i*dx for i = 0..L/dx on every axis, so both ends of each axis
+// carry particles (boundary conditions are imposed on them) and there are L/dx + 1 per axis.
+// The spacing must divide every side length: a lattice that does not reach the far face would
+// silently move the boundary.
+
+#include "core/Types.hpp"
+#include "particles/ParticleSet.hpp"
+
+#include <array>
+
+namespace mfwave {
+
+// Number of lattice intervals L/dx along each axis of the box [lower, upper] with spacing dx.
+// Throws InputError("spacing", ...) for dx <= 0, non-finite dx, or a dx that does not divide a
+// side (L/dx more than 1e-9 relative away from an integer), and InputError("geometry", ...)
+// naming the axis when upper <= lower or a bound is not finite.
+template <int D>
+std::array<Index, D> latticeIntervals(const Vec<D>& lower, const Vec<D>& upper, Real dx);
+
+// Physical particles on the lattice of [lower, upper] with spacing dx, x varying fastest.
+// Coordinates are lower + (upper - lower) * i / n, which is lower + i*dx up to the 1e-9 the
+// spacing check allows, and hits both ends exactly. Volumes are dx^D, global ids 0..N-1, and
+// faceMask marks the faces each surface particle lies on.
+template <int D>
+ParticleSet<D> makeLattice(const Vec<D>& lower, const Vec<D>& upper, Real dx);
+
+ParticleSet<1> makeLine(Real x0, Real x1, Real dx);
+ParticleSet<2> makeRectangle(const Vec2& lower, const Vec2& upper, Real dx);
+ParticleSet<3> makeBlock(const Vec3& lower, const Vec3& upper, Real dx);
+
+}  // namespace mfwave

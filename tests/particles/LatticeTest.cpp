@@ -1,0 +1,151 @@
+// Lattice generators: counts, end nodes, face tags, outward normals and input errors.
+
+#include "core/Error.hpp"
+#include "particles/BoxFace.hpp"
+#include "particles/Lattice.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+
+using namespace mfwave;
+
+namespace {
+
+// The InputError key thrown by f, or "" when f throws nothing; the message goes to `message`.
+template <class F>
+std::string errorKey(F&& f, std::string* message = nullptr) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    if (message) *message = e.what();
+    return e.key();
+  }
+  return "";
+}
+
+// Histogram of facetCount over a set: [interior, face, edge, corner].
+template <int D>
+std::array<Index, 4> facetHistogram(const ParticleSet<D>& set) {
+  std::array<Index, 4> h{};
+  for (Index i = 0; i < set.size(); ++i) ++h[static_cast<std::size_t>(set.facetCount(i))];
+  return h;
+}
+
+}  // namespace
+
+TEST(Lattice, LineCountsEndsAndTags) {
+  const ParticleSet<1> line = makeLine(-1, 1, 0.125);
+  ASSERT_EQ(line.size(), 17);
+  EXPECT_EQ(line.physicalCount(), 17);
+  EXPECT_EQ(line.position(0)[0], -1);
+  EXPECT_EQ(line.position(1)[0], -0.875);
+  EXPECT_EQ(line.position(16)[0], 1);
+  EXPECT_EQ(line.faceMask[0], faceBit(BoxFace::MinusX));
+  EXPECT_EQ(line.faceMask[16], faceBit(BoxFace::PlusX));
+  EXPECT_EQ(line.outwardNormal(0), Vec1(-1));
+  EXPECT_EQ(line.volume[5], 0.125);
+  EXPECT_EQ((facetHistogram<1>(line)), (std::array<Index, 4>{15, 2, 0, 0}));
+}
+
+TEST(Lattice, SpacingThatDividesOnlyUpToRoundingIsAccepted) {
+  const ParticleSet<1> line = makeLine(0, 1, 0.1);  // 1 / 0.1 is not exactly 10 in binary
+  ASSERT_EQ(line.size(), 11);
+  EXPECT_EQ(line.position(10)[0], 1.0);  // the far end is hit exactly
+  EXPECT_NEAR(line.position(3)[0], 0.3, 1e-15);
+}
+
+TEST(Lattice, RectangleCountsEndsAndTags) {
+  const ParticleSet<2> rect = makeRectangle(Vec2(0, -1), Vec2(2, 0.5), 0.25);
+  ASSERT_EQ(rect.size(), 9 * 7);
+  EXPECT_EQ(rect.position(0), Vec2(0, -1));
+  EXPECT_EQ(rect.position(1), Vec2(0.25, -1));  // x varies fastest
+  EXPECT_EQ(rect.position(9), Vec2(0, -0.75));
+  EXPECT_EQ(rect.position(62), Vec2(2, 0.5));
+  EXPECT_EQ((facetHistogram<2>(rect)), (std::array<Index, 4>{7 * 5, 2 * 7 + 2 * 5, 4, 0}));
+  EXPECT_DOUBLE_EQ(rect.volume[0], 0.0625);
+  EXPECT_NEAR((rect.outwardNormal(62) - Vec2(1, 1) / std::sqrt(2.0)).norm(), 0, 1e-15);
+}
+
+TEST(Lattice, BlockCountsAndFaceEdgeCornerTags) {
+  const ParticleSet<3> block = makeBlock(Vec3(0, 0, 0), Vec3(7, 7, 7), 0.5);
+  ASSERT_EQ(block.size(), 3375);
+  EXPECT_EQ(block.position(0), Vec3(0, 0, 0));
+  EXPECT_EQ(block.position(1), Vec3(0.5, 0, 0));
+  EXPECT_EQ(block.position(3374), Vec3(7, 7, 7));
+  EXPECT_EQ(block.globalId[3374], 3374);
+  EXPECT_EQ(block.volume[100], 0.125);
+  EXPECT_EQ((facetHistogram<3>(block)), (std::array<Index, 4>{13 * 13 * 13, 6 * 13 * 13, 12 * 13, 8}));
+  for (int face = 0; face < 6; ++face) {
+    Index onFace = 0;
+    for (Index i = 0; i < block.size(); ++i) onFace += (block.faceMask[static_cast<std::size_t>(i)] >> face) & 1;
+    EXPECT_EQ(onFace, 15 * 15) << "face " << face;
+  }
+}
+
+TEST(Lattice, BlockOffsetFromOriginWithUnequalSides) {
+  const ParticleSet<3> block = makeBlock(Vec3(-1, 0, 2), Vec3(1, 0.5, 3), 0.25);
+  ASSERT_EQ(block.size(), 9 * 3 * 5);
+  EXPECT_EQ(block.position(0), Vec3(-1, 0, 2));
+  EXPECT_EQ(block.position(block.size() - 1), Vec3(1, 0.5, 3));
+  EXPECT_EQ((facetHistogram<3>(block)), (std::array<Index, 4>{7 * 1 * 3, 2 * (7 * 1 + 7 * 3 + 1 * 3),
+                                                               4 * (7 + 1 + 3), 8}));
+}
+
+TEST(Lattice, OutwardNormalsAtCornersEdgesAndFaces) {
+  const ParticleSet<3> block = makeBlock(Vec3(0, 0, 0), Vec3(7, 7, 7), 0.5);
+  Index corners = 0;
+  for (Index i = 0; i < block.size(); ++i) {
+    const Vec3 x = block.position(i);
+    Vec3 expected = Vec3::Zero();
+    for (int a = 0; a < 3; ++a) expected[a] = x[a] == 0 ? -1 : (x[a] == 7 ? 1 : 0);
+    const int facets = block.facetCount(i);
+    ASSERT_EQ(facets, static_cast<int>(expected.cwiseAbs().sum())) << "particle " << i;
+    if (facets > 0) expected /= std::sqrt(static_cast<Real>(facets));
+    ASSERT_NEAR((block.outwardNormal(i) - expected).norm(), 0, 1e-15) << "particle " << i;
+    const auto normals = block.facetNormals(i);
+    ASSERT_EQ(static_cast<int>(normals.size()), facets);
+    Vec3 sum = Vec3::Zero();
+    for (const Vec3& n : normals) {
+      EXPECT_EQ(n.norm(), 1);
+      EXPECT_EQ(n.cwiseAbs().sum(), 1);  // axis-aligned
+      sum += n;
+    }
+    if (facets == 3) {
+      ++corners;
+      EXPECT_NEAR(std::abs(block.outwardNormal(i)[0]), 1 / std::sqrt(3.0), 1e-15);
+      EXPECT_EQ(sum.cwiseAbs(), Vec3(1, 1, 1));
+    }
+  }
+  EXPECT_EQ(corners, 8);
+}
+
+TEST(Lattice, BadSpacingIsAnInputError) {
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  const Real inf = std::numeric_limits<Real>::infinity();
+  EXPECT_EQ(errorKey([] { makeLine(0, 1, 0); }), "spacing");
+  EXPECT_EQ(errorKey([] { makeLine(0, 1, -0.1); }), "spacing");
+  EXPECT_EQ(errorKey([nan] { makeLine(0, 1, nan); }), "spacing");
+  EXPECT_EQ(errorKey([inf] { makeRectangle(Vec2(0, 0), Vec2(1, 1), inf); }), "spacing");
+  EXPECT_EQ(errorKey([] { makeLine(0, 1, 3); }), "spacing");  // larger than the length
+}
+
+TEST(Lattice, SpacingThatDoesNotDivideNamesTheAxis) {
+  std::string message;
+  EXPECT_EQ(errorKey([] { makeBlock(Vec3(0, 0, 0), Vec3(1, 0.9, 1), 0.2); }, &message), "spacing");
+  EXPECT_NE(message.find("does not divide the length"), std::string::npos) << message;
+  EXPECT_NE(message.find("axis y"), std::string::npos) << message;
+  EXPECT_EQ(errorKey([] { makeLine(0, 1, 0.3); }), "spacing");
+}
+
+TEST(Lattice, InvertedOrEmptyBoxIsAGeometryError) {
+  std::string message;
+  EXPECT_EQ(errorKey([] { makeRectangle(Vec2(0, 1), Vec2(1, 0), 0.1); }, &message), "geometry");
+  EXPECT_NE(message.find("axis y"), std::string::npos) << message;
+  EXPECT_EQ(errorKey([] { makeLine(1, 1, 0.1); }), "geometry");
+  EXPECT_EQ(errorKey([] { makeBlock(Vec3(0, 0, 2), Vec3(1, 1, 1), 0.5); }, &message), "geometry");
+  EXPECT_NE(message.find("axis z"), std::string::npos) << message;
+}
