@@ -1,20 +1,10 @@
 #include "integrators/CentralDifference.hpp"
 
-#include "core/Error.hpp"
-
 namespace mfwave {
 
 void CentralDifference::initialise(SecondOrderSystem& system, Real t0, const Vector& u0, const Vector& v0,
                                    Real dt) {
-  checkInitialState(system, t0, u0, v0, dt);
-  system_ = &system;
-  t0_ = t0;
-  dt_ = dt;
-  time_ = t0;
-  steps_ = 0;
-  u_ = u0;
-  v_ = v0;
-  a_.resize(u0.size());
+  bind(system, t0, u0, v0, dt);
   system.acceleration(t0, u_, v_, a_);  // v0 is exact here: no predictor needed for a_0
   // Half a step back, so that the first full step is the Taylor start u_1 = u_0 + dt v_0 + dt^2/2 a_0.
   vHalf_ = v_ - 0.5 * dt_ * a_;
@@ -22,13 +12,11 @@ void CentralDifference::initialise(SecondOrderSystem& system, Real t0, const Vec
 }
 
 void CentralDifference::step() {
-  if (!system_) throw Error("central_difference: step() called before initialise()");
+  requireInitialised();
   // Ding-Long-Wu eq. 23 in staggered form.
   vHalf_.noalias() += dt_ * a_;  // v_{n+1/2} = v_{n-1/2} + dt a_n
   u_.noalias() += dt_ * vHalf_;  // u_{n+1} = u_n + dt v_{n+1/2}
-  ++steps_;
-  // t0 + n dt, not a running sum: keeps time on the step grid for advanceTo and observers.
-  time_ = t0_ + static_cast<Real>(steps_) * dt_;
+  advanceClock();
   if (system_->dependsOnVelocity()) {
     // Predictor v_{n+1}* = v_{n+1/2} + dt/2 a_n: an O(dt^2) estimate of v_{n+1}, enough for a
     // second-order scheme without a second evaluation.

@@ -1,30 +1,19 @@
 #include "integrators/Leapfrog.hpp"
 
-#include "core/Error.hpp"
-
 namespace mfwave {
 
 void Leapfrog::initialise(SecondOrderSystem& system, Real t0, const Vector& u0, const Vector& v0, Real dt) {
-  checkInitialState(system, t0, u0, v0, dt);
-  system_ = &system;
-  t0_ = t0;
-  dt_ = dt;
-  time_ = t0;
-  steps_ = 0;
-  u_ = u0;
-  v_ = v0;
-  a_.resize(u0.size());
+  bind(system, t0, u0, v0, dt);
   vHalf_.resize(u0.size());
   system.acceleration(t0, u_, v_, a_);
   if (system.dependsOnVelocity()) vPredict_.resize(u0.size());
 }
 
 void Leapfrog::step() {
-  if (!system_) throw Error("leapfrog: step() called before initialise()");
+  requireInitialised();
   vHalf_ = v_ + 0.5 * dt_ * a_;   // kick
   u_.noalias() += dt_ * vHalf_;   // drift
-  ++steps_;
-  time_ = t0_ + static_cast<Real>(steps_) * dt_;
+  advanceClock();
   if (system_->dependsOnVelocity()) {
     // v_{n+1} is not known before a_{n+1}: predict it to O(dt^2) with the old acceleration.
     vPredict_ = vHalf_ + 0.5 * dt_ * a_;

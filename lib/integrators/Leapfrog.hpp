@@ -9,32 +9,18 @@
 // dt a_n. It differs only in which velocity is stored. One acceleration evaluation per step
 // (a_n is kept from the previous step).
 
-#include "integrators/Integrator.hpp"
+#include "integrators/FixedStepSecondOrderIntegrator.hpp"
 
 namespace mfwave {
 
-class Leapfrog : public SecondOrderIntegrator {
+class Leapfrog : public FixedStepSecondOrderIntegrator {
  public:
   std::string name() const override { return "leapfrog"; }
   // Evaluates a_0 = a(t0, u0, v0) once.
   void initialise(SecondOrderSystem& system, Real t0, const Vector& u0, const Vector& v0, Real dt) override;
   void step() override;
-  Real time() const override { return time_; }
-  long stepCount() const override { return steps_; }
-  Real stepSize() const override { return dt_; }
-  StateView state() const override { return {steps_, time_, u_, v_}; }
-
-  const Vector& acceleration() const { return a_; }
 
  private:
-  SecondOrderSystem* system_ = nullptr;
-  Real t0_ = 0;
-  Real dt_ = 0;
-  Real time_ = 0;
-  long steps_ = 0;
-  Vector u_;          // u_n
-  Vector v_;          // v_n
-  Vector a_;          // a_n
   Vector vHalf_;      // v_{n+1/2} (work)
   Vector vPredict_;   // v* (velocity-dependent systems only)
 };

@@ -17,15 +17,9 @@ Newmark::Newmark(Real beta, Real gamma) : beta_(beta), gamma_(gamma) {
 void Newmark::initialise(SecondOrderSystem& system, Real t0, const Vector& u0, const Vector& v0, Real dt) {
   auto* linear = dynamic_cast<LinearSecondOrderSystem*>(&system);
   if (!linear) throw InputError("integrator", "Newmark needs a linear system M u'' + C u' + K u = f");
-  checkInitialState(system, t0, u0, v0, dt);
+  bind(system, t0, u0, v0, dt);
   const Index n = system.size();
-  system_ = linear;
-  t0_ = t0;
-  dt_ = dt;
-  time_ = t0;
-  steps_ = 0;
-  u_ = u0;
-  v_ = v0;
+  linear_ = linear;
   uPredict_.resize(n);
   vPredict_.resize(n);
   aNext_.resize(n);
@@ -50,17 +44,16 @@ void Newmark::initialise(SecondOrderSystem& system, Real t0, const Vector& u0, c
 }
 
 void Newmark::step() {
-  if (!system_) throw Error("newmark: step() called before initialise()");
+  requireInitialised();
   const Real dt2 = dt_ * dt_;
   // Predictors, eqs. 28-29.
   uPredict_ = u_ + dt_ * v_ + (dt2 * (0.5 - beta_)) * a_;
   vPredict_ = v_ + (dt_ * (1 - gamma_)) * a_;
-  ++steps_;
-  time_ = t0_ + static_cast<Real>(steps_) * dt_;
+  advanceClock();
   // Effective right-hand side, eq. 27.
-  system_->force(time_, rhs_);
-  rhs_.noalias() -= system_->stiffness() * uPredict_;
-  if (system_->hasDamping()) rhs_.noalias() -= system_->damping() * vPredict_;
+  linear_->force(time_, rhs_);
+  rhs_.noalias() -= linear_->stiffness() * uPredict_;
+  if (linear_->hasDamping()) rhs_.noalias() -= linear_->damping() * vPredict_;
   effective_.solve(rhs_, aNext_);
   a_.swap(aNext_);
   // Correctors, eqs. 30-31.

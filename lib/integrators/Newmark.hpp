@@ -16,13 +16,13 @@
 // and damping). The initial acceleration solves M a_0 = f(t0) - C v0 - K u0 the same way.
 
 #include "integrators/FactorisedMatrix.hpp"
-#include "integrators/Integrator.hpp"
+#include "integrators/FixedStepSecondOrderIntegrator.hpp"
 
 namespace mfwave {
 
 class LinearSecondOrderSystem;
 
-class Newmark : public SecondOrderIntegrator {
+class Newmark : public FixedStepSecondOrderIntegrator {
  public:
   // beta in [0, 1/2], gamma in [0, 1]; otherwise InputError("newmark.beta" / "newmark.gamma").
   explicit Newmark(Real beta = 0.25, Real gamma = 0.5);
@@ -32,26 +32,16 @@ class Newmark : public SecondOrderIntegrator {
   // and the effective matrix; throws mfwave::Error if either is singular.
   void initialise(SecondOrderSystem& system, Real t0, const Vector& u0, const Vector& v0, Real dt) override;
   void step() override;
-  Real time() const override { return time_; }
-  long stepCount() const override { return steps_; }
-  Real stepSize() const override { return dt_; }
-  StateView state() const override { return {steps_, time_, u_, v_}; }
 
   Real beta() const { return beta_; }
   Real gamma() const { return gamma_; }
-  const Vector& acceleration() const { return a_; }
   // True when the effective matrix was diagonal and no sparse factorisation was needed.
   bool effectiveMatrixIsDiagonal() const { return effective_.isDiagonal(); }
 
  private:
   Real beta_;
   Real gamma_;
-  LinearSecondOrderSystem* system_ = nullptr;
-  Real t0_ = 0;
-  Real dt_ = 0;
-  Real time_ = 0;
-  long steps_ = 0;
-  Vector u_, v_, a_;
+  LinearSecondOrderSystem* linear_ = nullptr;  // system_, seen as the linear system it must be
   Vector uPredict_, vPredict_, rhs_, aNext_;
   FactorisedMatrix effective_;
 };

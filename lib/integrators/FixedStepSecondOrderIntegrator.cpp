@@ -1,0 +1,24 @@
+#include "integrators/FixedStepSecondOrderIntegrator.hpp"
+
+#include "core/Error.hpp"
+
+namespace mfwave {
+
+void FixedStepSecondOrderIntegrator::bind(SecondOrderSystem& system, Real t0, const Vector& u0, const Vector& v0,
+                                          Real dt) {
+  checkInitialState(system, t0, u0, v0, dt);
+  system_ = &system;
+  t0_ = t0;
+  dt_ = dt;
+  time_ = t0;
+  steps_ = 0;
+  u_ = u0;
+  v_ = v0;
+  a_.resize(u0.size());
+}
+
+void FixedStepSecondOrderIntegrator::requireInitialised() const {
+  if (!system_) throw Error(name() + ": step() called before initialise()");
+}
+
+}  // namespace mfwave

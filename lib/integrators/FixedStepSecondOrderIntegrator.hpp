@@ -1,0 +1,41 @@
+#pragma once
+// Bookkeeping shared by the fixed-step integrators of u'' = a(t, u, u') (central difference,
+// leapfrog, Newmark): the bound system, the step grid t_n = t0 + n dt, and the synchronous state
+// (u_n, v_n, a_n). Derived classes implement step() and call advanceClock() once per step.
+
+#include "integrators/Integrator.hpp"
+
+namespace mfwave {
+
+class FixedStepSecondOrderIntegrator : public SecondOrderIntegrator {
+ public:
+  Real time() const override { return time_; }
+  long stepCount() const override { return steps_; }
+  Real stepSize() const override { return dt_; }
+  StateView state() const override { return {steps_, time_, u_, v_}; }
+  // a_n at the current time.
+  const Vector& acceleration() const { return a_; }
+
+ protected:
+  // Checks the initial state (checkInitialState), stores it, resets the clock and sizes a_.
+  void bind(SecondOrderSystem& system, Real t0, const Vector& u0, const Vector& v0, Real dt);
+  // One step further on the grid. t0 + n dt, not a running sum, keeps time on the step grid for
+  // advanceTo and the observers.
+  void advanceClock() {
+    ++steps_;
+    time_ = t0_ + static_cast<Real>(steps_) * dt_;
+  }
+  // Throws Error naming the integrator when step() comes before initialise().
+  void requireInitialised() const;
+
+  SecondOrderSystem* system_ = nullptr;
+  Real t0_ = 0;
+  Real dt_ = 0;
+  Real time_ = 0;
+  long steps_ = 0;
+  Vector u_;  // u_n
+  Vector v_;  // v_n (synchronous)
+  Vector a_;  // a_n
+};
+
+}  // namespace mfwave
