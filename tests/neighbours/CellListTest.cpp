@@ -1,6 +1,7 @@
 // CellList: grid invariants, the counting sort, point queries against brute force, and the
 // awkward clouds (far-flung, flat, empty, non-finite).
 
+#include "support/InputErrorKey.hpp"
 #include "BruteForce.hpp"
 
 #include "core/Error.hpp"
@@ -17,16 +18,6 @@ using namespace mfwave;
 using namespace mfwave::testing;
 
 namespace {
-
-template <class F>
-std::string errorKey(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.key();
-  }
-  return "";
-}
 
 // Sorted neighbours of y reported by the cell list, checking the reported squared distances.
 template <int D>
@@ -60,11 +51,11 @@ void expectQueriesMatchBruteForce(const Coordinates<D>& x, Real radius, unsigned
 }  // namespace
 
 TEST(CellList, RadiusMustBePositiveAndFinite) {
-  EXPECT_EQ(errorKey([] { CellList<3> c(0.0); }), "radius");
-  EXPECT_EQ(errorKey([] { CellList<2> c(-1.0); }), "radius");
-  EXPECT_EQ(errorKey([] { CellList<1> c(std::numeric_limits<Real>::quiet_NaN()); }), "radius");
-  EXPECT_EQ(errorKey([] { CellList<1> c(std::numeric_limits<Real>::infinity()); }), "radius");
-  EXPECT_EQ(errorKey([] { CellList<1> c(0.5); }), "");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([] { CellList<3> c(0.0); }), "radius");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([] { CellList<2> c(-1.0); }), "radius");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([] { CellList<1> c(std::numeric_limits<Real>::quiet_NaN()); }), "radius");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([] { CellList<1> c(std::numeric_limits<Real>::infinity()); }), "radius");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([] { CellList<1> c(0.5); }), "");
 }
 
 TEST(CellList, SortedStorageIsAStableCountingSort) {
@@ -116,7 +107,7 @@ TEST(CellList, PointQueriesMatchBruteForce3D) {
 
 TEST(CellList, QueryRadiusLargerThanTheSearchRadiusIsRejected) {
   const CellList<2> cells(randomCloud<2>(10, 0, 1, 1), 0.1);
-  EXPECT_EQ(errorKey([&] { cells.forEachNeighbour(Vec2(0.5, 0.5), 0.2, [](Index, Real) {}); }), "radius");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([&] { cells.forEachNeighbour(Vec2(0.5, 0.5), 0.2, [](Index, Real) {}); }), "radius");
 }
 
 TEST(CellList, FarFlungParticleKeepsTheGridSmall) {
@@ -161,7 +152,7 @@ TEST(CellList, BadPositionsAreRejected) {
   x[1][7] = std::numeric_limits<Real>::infinity();
   EXPECT_THROW(CellList<2>(x, 0.1), Error);
   x[1].pop_back();
-  EXPECT_EQ(errorKey([&] { CellList<2> c(x, 0.1); }), "positions");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([&] { CellList<2> c(x, 0.1); }), "positions");
 }
 
 TEST(CellList, BuildsFromAParticleSet) {

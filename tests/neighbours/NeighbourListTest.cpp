@@ -2,6 +2,7 @@
 // particles, duplicates), the strict-distance rule on a lattice, exact mean counts, ghost
 // rows, and independence from the OpenMP thread count.
 
+#include "support/InputErrorKey.hpp"
 #include "BruteForce.hpp"
 
 #include "core/Error.hpp"
@@ -48,16 +49,6 @@ void expectMatchesBruteForce(const Coordinates<D>& x, Real radius, Real minimumM
   const NeighbourList list = buildNeighbourList(cells);
   EXPECT_TRUE(sameLists(list, bruteNeighbourList<D>(x, radius))) << D << "-D, R = " << radius;
   EXPECT_GE(list.meanCount(), minimumMean) << "R = " << radius;  // the test searched something
-}
-
-template <class F>
-std::string errorKey(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.key();
-  }
-  return "";
 }
 
 // Number of integer vectors k in Z^3 with |k| < r, each weighted by how many ordered pairs of
@@ -199,7 +190,7 @@ TEST(NeighbourList, RowsForPhysicalParticlesOnlyStillSeeGhosts) {
   }
   EXPECT_EQ(*(physical.row(0).begin()), 0);  // sorted: the corner's own index comes first...
   EXPECT_GE(*(physical.row(0).end() - 1), set.physicalCount());  // ...its ghosts last
-  EXPECT_EQ(errorKey([&] { buildNeighbourList(cells, set.size() + 1); }), "rows");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([&] { buildNeighbourList(cells, set.size() + 1); }), "rows");
 }
 
 TEST(NeighbourList, IndependentOfTheThreadCount) {

@@ -1,6 +1,7 @@
 // Ghost layers: counts per chosen faces, kinds and ordering, lattice positions, and that a
 // kernel support around edge and corner particles is complete.
 
+#include "support/InputErrorKey.hpp"
 #include "core/Error.hpp"
 #include "particles/BoxFace.hpp"
 #include "particles/GhostLayers.hpp"
@@ -46,16 +47,6 @@ std::set<Offset> fullBall(Real radius) {
       for (long z = -r; z <= r; ++z)
         if (x * x + y * y + z * z <= radius * radius) ball.emplace(x, y, z);
   return ball;
-}
-
-template <class F>
-std::string errorKey(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.key();
-  }
-  return "";
 }
 
 }  // namespace
@@ -141,11 +132,11 @@ TEST(GhostLayers, ZeroLayersAddNothing) {
 
 TEST(GhostLayers, BadInputIsRejected) {
   ParticleSet<2> rect = makeRectangle(Vec2(0, 0), Vec2(1, 1), 0.5);
-  EXPECT_EQ(errorKey([&] { addGhostLayers<2>(rect, Vec2(0, 0), Vec2(1, 1), 0.5, -1, allFaces(2)); }),
+  EXPECT_EQ(mfwave::testing::inputErrorKey([&] { addGhostLayers<2>(rect, Vec2(0, 0), Vec2(1, 1), 0.5, -1, allFaces(2)); }),
             "ghost_layers");
-  EXPECT_EQ(errorKey([&] { addGhostLayers<2>(rect, Vec2(0, 0), Vec2(1, 1), 0.5, 1, faceBit(BoxFace::PlusZ)); }),
+  EXPECT_EQ(mfwave::testing::inputErrorKey([&] { addGhostLayers<2>(rect, Vec2(0, 0), Vec2(1, 1), 0.5, 1, faceBit(BoxFace::PlusZ)); }),
             "ghost_faces");
-  EXPECT_EQ(errorKey([&] { addGhostLayers<2>(rect, Vec2(0, 0), Vec2(1, 1), 0.3, 1, allFaces(2)); }),
+  EXPECT_EQ(mfwave::testing::inputErrorKey([&] { addGhostLayers<2>(rect, Vec2(0, 0), Vec2(1, 1), 0.3, 1, allFaces(2)); }),
             "spacing");
   EXPECT_EQ(rect.size(), 9);
 }
