@@ -1,0 +1,48 @@
+#pragma once
+// The command line every driver and analysis tool shares:
+//   --scene FILE, --set key.path=value (repeated), --out DIR, --threads N, --quiet, --help, --version.
+// A driver may add its own options to app() before parse(). --help lists the options and, in its
+// footer, the scene keys the driver reads.
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mfwave {
+
+struct DriverOptions {
+  std::string scenePath;               // --scene (empty if not given)
+  std::vector<std::string> overrides;  // --set key.path=value, in order
+  std::string outputFolder;            // --out (empty: the scene's output.folder)
+  int threads = 0;                     // --threads (0: OpenMP's default)
+  bool quiet = false;                  // --quiet: no progress, only the summary
+};
+
+class DriverCommandLine {
+ public:
+  // `sceneKeys` is the text --help prints after the options (the scene keys the driver reads).
+  DriverCommandLine(std::string program, std::string description, std::string sceneKeys = {},
+                    bool sceneRequired = true);
+
+  CLI::App& app() { return app_; }
+
+  // Parses argv. Returns an exit code when the program should stop now (0 after --help or
+  // --version, 2 after a usage error, with the message printed), or nothing to carry on.
+  // Applies --threads to OpenMP.
+  std::optional<int> parse(int argc, char** argv);
+
+  const DriverOptions& options() const { return options_; }
+  const std::string& program() const { return program_; }
+
+ private:
+  std::string program_;
+  CLI::App app_;
+  DriverOptions options_;
+};
+
+// The version string every driver prints: "<program> (mfwave <version>)".
+std::string versionString(const std::string& program);
+
+}  // namespace mfwave

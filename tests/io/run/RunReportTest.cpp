@@ -1,0 +1,73 @@
+#include "core/Error.hpp"
+#include "io/run/ProgressReporter.hpp"
+#include "io/run/RunDriver.hpp"
+#include "io/run/RunSummary.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace mfwave;
+
+TEST(ProgressReporter, ShowsStepTimeRateAndTimeLeft) {
+  std::ostringstream out;
+  ProgressReporter progress(2.0, 1000, out, 0.0);
+  const Vector u = Vector::Zero(3);
+  progress.begin({0, 0.0, u, u});
+  // Half the simulated time after 10 s of wall time for 500 steps: 5e4 particle-steps/s, 10 s left.
+  const std::string line = progress.line({500, 1.0, u, u}, 10.0);
+  EXPECT_NE(line.find("step 500"), std::string::npos) << line;
+  EXPECT_NE(line.find("(50 %)"), std::string::npos) << line;
+  EXPECT_NE(line.find("5.00e+04 particle-steps/s"), std::string::npos) << line;
+  EXPECT_NE(line.find("left 10 s"), std::string::npos) << line;
+  progress.observe({1, 0.1, u, u});
+  EXPECT_NE(out.str().find("step 1"), std::string::npos);
+}
+
+TEST(ProgressReporter, StaysQuietWhenNotOnATerminal) {
+  // ctest pipes standard error, so the terminal check fails and nothing is printed.
+  if (::isatty(STDERR_FILENO)) GTEST_SKIP() << "standard error is a terminal here";
+  ProgressReporter progress(1.0, 10, true);
+  EXPECT_FALSE(progress.enabled());
+}
+
+TEST(RunSummary, WritesEveryFigureAsJson) {
+  RunSummary s;
+  s.program = "wavefield";
+  s.scene = "block-ricker";
+  s.particles = 9261;
+  s.meanNeighbours = 7;
+  s.steps = 100;
+  s.wallSeconds = 2;
+  s.errors = {{"relative_l2", 0.125}};
+  s.notes = {"no PNG: no display"};
+  s.finish();
+  EXPECT_GT(s.peakMemoryMiB, 1.0);
+  EXPECT_DOUBLE_EQ(s.particleStepsPerSecond(), 9261 * 100 / 2.0);
+  const auto path = std::filesystem::temp_directory_path() / "mfwave-summary.json";
+  s.writeJson(path.string());
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(path));
+  EXPECT_EQ(j["particles"], 9261);
+  EXPECT_DOUBLE_EQ(j["errors"]["relative_l2"].get<double>(), 0.125);
+  EXPECT_DOUBLE_EQ(j["particle_steps_per_second"].get<double>(), 463050.0);
+  EXPECT_EQ(j["notes"][0], "no PNG: no display");
+  std::ostringstream text;
+  s.print(text);
+  EXPECT_NE(text.str().find("particles 9261"), std::string::npos) << text.str();
+}
+
+TEST(RunDriver, MapsErrorsToExitCodes) {
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(runDriver("p", [] { return 0; }), 0);
+  EXPECT_EQ(runDriver("p", []() -> int { throw InputError("geometry.spacing", "must be positive"); }), 2);
+  EXPECT_EQ(runDriver("p", []() -> int { throw InstabilityError("blew up", 5, 0.5, 7); }), 3);
+  EXPECT_EQ(runDriver("p", []() -> int { throw Error("disk full"); }), 1);
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_NE(err.find("p: error: geometry.spacing: must be positive"), std::string::npos) << err;
+  EXPECT_NE(err.find("p: run stopped: blew up"), std::string::npos) << err;
+}
