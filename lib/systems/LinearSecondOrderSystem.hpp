@@ -30,6 +30,8 @@ class LinearSecondOrderSystem : public SecondOrderSystem {
   const SparseMatrix& stiffness() const { return stiffness_; }
   bool hasDamping() const { return damping_.nonZeros() > 0; }
   void force(Real t, Vector& f) const;
+  // Replaces f(t): loads are attached after a method has assembled M, C and K.
+  void setForce(ForceFunction force) { force_ = std::move(force); }
 
   // Total mechanical energy 1/2 v^T M v + 1/2 u^T K u (meaningful for symmetric K).
   Real kineticEnergy(const Vector& v) const;

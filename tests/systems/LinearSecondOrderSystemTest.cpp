@@ -47,6 +47,15 @@ TEST(LinearSecondOrderSystem, UndampedWithoutForceDoesNotDependOnVelocity) {
   EXPECT_DOUBLE_EQ(a[0], -2.0);
 }
 
+TEST(LinearSecondOrderSystem, LoadsAttachedLaterDriveTheAcceleration) {
+  LinearSecondOrderSystem system(diagonal({2, 4}), SparseMatrix(), diagonal({1, 1}));
+  system.setForce([](Real t, Vector& f) { f[1] = 8 * t; });
+  Vector u = Vector::Zero(2), v = Vector::Zero(2), a(2);
+  system.acceleration(0.5, u, v, a);
+  EXPECT_DOUBLE_EQ(a[0], 0);
+  EXPECT_DOUBLE_EQ(a[1], 1);
+}
+
 TEST(LinearSecondOrderSystem, ConsistentMassIsRejectedForExplicitUse) {
   SparseMatrix m(2, 2);
   m.insert(0, 0) = 2;
