@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build git pkg-config
   libsundials-dev libeigen3-dev libsuitesparse-dev libfftw3-dev libvtk9-dev
   libgtest-dev libbenchmark-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
-  xvfb xauth python3-matplotlib python3-numpy
+  libx11-dev xvfb xauth python3-matplotlib python3-numpy
 )
 
 missing=()

@@ -1,0 +1,105 @@
+#pragma once
+// Shared by the lib/io/vtk tests: scratch folders, reading files back, a scripted integrator and
+// a scoped change of an environment variable.
+
+#include "integrators/Integrator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace mfwave::vtktest {
+
+namespace fs = std::filesystem;
+
+// The folder of this test process under the system temporary folder; removed when the process
+// ends unless MFWAVE_KEEP_TEST_OUTPUT is set (to look at the pictures).
+inline const fs::path& scratchRoot() {
+  struct Root {
+    fs::path path = fs::temp_directory_path() / ("mfwave-vtk-" + std::to_string(::getpid()));
+    ~Root() {
+      std::error_code ignored;
+      if (std::getenv("MFWAVE_KEEP_TEST_OUTPUT") == nullptr) fs::remove_all(path, ignored);
+    }
+  };
+  static const Root root;
+  return root.path;
+}
+
+// An empty folder for the current test, named after it.
+inline fs::path scratchFolder() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = scratchRoot() / (std::string(info->test_suite_name()) + "." + info->name());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+inline std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Names of the files in `dir` (not recursive), sorted.
+inline std::vector<std::string> filesIn(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// Each step runs `script(step, u, v)`; time = step * dt. States are exactly known.
+class ScriptIntegrator : public Integrator {
+ public:
+  ScriptIntegrator(Vector u, Vector v, Real dt, std::function<void(long, Vector&, Vector&)> script)
+      : u_(std::move(u)), v_(std::move(v)), dt_(dt), script_(std::move(script)) {}
+  std::string name() const override { return "script"; }
+  void step() override { script_(++steps_, u_, v_); }
+  Real time() const override { return static_cast<Real>(steps_) * dt_; }
+  long stepCount() const override { return steps_; }
+  Real stepSize() const override { return dt_; }
+  StateView state() const override { return {steps_, time(), u_, v_}; }
+
+ private:
+  Vector u_, v_;
+  Real dt_;
+  long steps_ = 0;
+  std::function<void(long, Vector&, Vector&)> script_;
+};
+
+// Sets (or, with nullopt, unsets) an environment variable for the life of the object.
+class ScopedEnvironment {
+ public:
+  ScopedEnvironment(std::string name, const std::optional<std::string>& value) : name_(std::move(name)) {
+    if (const char* old = std::getenv(name_.c_str())) old_ = old;
+    if (value)
+      ::setenv(name_.c_str(), value->c_str(), 1);
+    else
+      ::unsetenv(name_.c_str());
+  }
+  ~ScopedEnvironment() {
+    if (old_)
+      ::setenv(name_.c_str(), old_->c_str(), 1);
+    else
+      ::unsetenv(name_.c_str());
+  }
+  ScopedEnvironment(const ScopedEnvironment&) = delete;
+  ScopedEnvironment& operator=(const ScopedEnvironment&) = delete;
+
+ private:
+  std::string name_;
+  std::optional<std::string> old_;
+};
+
+}  // namespace mfwave::vtktest
