@@ -1,0 +1,30 @@
+#pragma once
+// The largest stable step of central difference (and leapfrog) for an assembled linear system
+// M u'' + K u = f with lumped M: dt_crit = 2 / omega_max, omega_max^2 the largest eigenvalue of
+// M^{-1} K. Two numbers, so a user sees how sure the limit is:
+//  - an estimate by power iteration (a lower bound on omega_max for symmetric K, so the step is
+//    slightly optimistic: keep a margin, e.g. a CFL fraction of 0.9 or less);
+//  - a Gershgorin bound, max_i sum_j |K_ij| / M_ii, which is never below omega_max^2 (its step is
+//    safe, but may be pessimistic for wide stencils).
+
+#include "systems/LinearSecondOrderSystem.hpp"
+
+namespace mfwave {
+
+struct StableTimeStep {
+  Real powerIterationOmegaSquared = 0;  // estimate of the largest eigenvalue of M^{-1} K
+  Real gershgorinOmegaSquared = 0;      // upper bound on it
+  int iterations = 0;
+  bool converged = false;
+
+  Real estimate() const;  // 2 / sqrt(powerIterationOmegaSquared)
+  Real safe() const;      // 2 / sqrt(gershgorinOmegaSquared)
+};
+
+// Power iteration on M^{-1} K from a fixed pseudo-random start (reproducible), until the Rayleigh
+// quotient changes by less than `relativeTolerance` between iterations. Throws InputError if M is
+// not diagonal with positive entries.
+StableTimeStep centralDifferenceStableStep(const LinearSecondOrderSystem& system, Real relativeTolerance = 1e-6,
+                                           int maximumIterations = 20000);
+
+}  // namespace mfwave
