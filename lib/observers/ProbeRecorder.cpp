@@ -11,7 +11,7 @@ std::vector<std::string> columnNames(const std::vector<Probe>& probes, int compo
   std::vector<std::string> names;
   for (std::size_t p = 0; p < probes.size(); ++p) {
     const Probe& probe = probes[p];
-    const std::string key = "probes[" + std::to_string(p) + "]";
+    const std::string key = "probe[" + std::to_string(p) + "]";
     if (probe.component < 0 || probe.component >= components || probe.component > 2)
       throw InputError(key + ".component", "must lie in [0, " + std::to_string(components - 1) + "]");
     if (probe.particle < 0) throw InputError(key + ".particle", "must not be negative");
@@ -39,7 +39,7 @@ void ProbeRecorder::observe(const StateView& state) {
     const Index dof = probe.particle * components_ + probe.component;
     const Vector& field = probe.quantity == ProbeQuantity::Velocity ? state.velocity : state.displacement;
     if (dof >= field.size())
-      throw InputError("probes[" + std::to_string(p) + "].particle",
+      throw InputError("probe[" + std::to_string(p) + "].particle",
                        "particle " + std::to_string(probe.particle) + " does not exist (the state has " +
                            std::to_string(field.size() / components_) + " particles)");
     row_[p] = field[dof];

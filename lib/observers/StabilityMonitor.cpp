@@ -12,57 +12,84 @@ StabilityMonitor::StabilityMonitor(StabilityMonitorOptions options) : options_(o
   if (options_.window < 1) throw InputError("stability.window", "must be at least 1");
   if (options_.components < 1) throw InputError("stability.components", "must be at least 1");
   if (!(options_.absoluteLimit > 0)) throw InputError("stability.absolute_limit", "must be positive");
+  if (!(options_.oscillationThreshold > 0))
+    throw InputError("stability.oscillation_threshold", "must be positive");
 }
 
-void StabilityMonitor::observe(const StateView& state) {
-  check(state, state.displacement, "displacement", displacementHistory_, displacementReference_);
-  check(state, state.velocity, "velocity", velocityHistory_, velocityReference_);
+void StabilityMonitor::fail(const StateView& state, const Vector& field, const char* name, Index worst,
+                            const std::string& why) const {
+  std::ostringstream message;
+  message.precision(6);
+  const long particle = static_cast<long>(worst / options_.components);
+  const long component = static_cast<long>(worst % options_.components);
+  message << "numerical instability at step " << state.step << ", t = " << state.time << ": " << why << " in "
+          << name << " of particle " << particle << " (component " << component << ", value " << field[worst]
+          << ")";
+  throw InstabilityError(message.str(), state.step, state.time, particle);
 }
 
-void StabilityMonitor::check(const StateView& state, const Vector& field, const char* name,
-                             std::deque<Real>& history, Real& reference) {
-  Index worst = -1;
+Real StabilityMonitor::scan(const StateView& state, const Vector& field, const char* name, Index& worst) const {
   Real amplitude = 0;
+  worst = 0;
   for (Index i = 0; i < field.size(); ++i) {
     const Real value = std::abs(field[i]);
     if (!std::isfinite(value)) {
       worst = i;
-      amplitude = value;
-      break;
+      fail(state, field, name, worst, "non-finite value");
     }
     if (value > amplitude) {
       amplitude = value;
       worst = i;
     }
   }
-  auto fail = [&](const std::string& why) {
-    std::ostringstream message;
-    message.precision(6);
-    const long particle = static_cast<long>(worst / options_.components);
-    const long component = static_cast<long>(worst % options_.components);
-    message << "numerical instability at step " << state.step << ", t = " << state.time << ": " << why
-            << " in " << name << " of particle " << particle << " (component " << component
-            << ", value " << field[worst] << ")";
-    throw InstabilityError(message.str(), state.step, state.time, particle);
-  };
-  if (worst >= 0 && !std::isfinite(amplitude)) fail("non-finite value");
   if (amplitude > options_.absoluteLimit) {
     std::ostringstream why;
     why << "amplitude " << amplitude << " above the limit " << options_.absoluteLimit;
-    fail(why.str());
+    fail(state, field, name, worst, why.str());
   }
-  if (reference > 0 && amplitude > options_.growthFactor * reference) {
-    std::ostringstream why;
-    why << "runaway growth: amplitude " << amplitude << " is more than " << options_.growthFactor
-        << " times its earlier maximum " << reference;
-    fail(why.str());
-  }
+  return amplitude;
+}
+
+bool StabilityMonitor::grewAgainstHistory(History& history, Real amplitude) const {
+  const bool grew = history.reference > 0 && amplitude > options_.growthFactor * history.reference;
   // The reference is the largest amplitude seen at least `window` observations ago.
-  history.push_back(amplitude);
-  if (static_cast<long>(history.size()) > options_.window) {
-    reference = std::max(reference, history.front());
-    history.pop_front();
+  history.amplitudes.push_back(amplitude);
+  if (static_cast<long>(history.amplitudes.size()) > options_.window) {
+    history.reference = std::max(history.reference, history.amplitudes.front());
+    history.amplitudes.pop_front();
   }
+  return grew;
+}
+
+Real StabilityMonitor::oscillationRatio(const Vector& u) const {
+  const Real scale = previous_.norm();
+  if (scale == 0) return 0;
+  return (u - 2 * previous_ + beforePrevious_).norm() / scale;
+}
+
+void StabilityMonitor::observe(const StateView& state) {
+  Index worstU = 0, worstV = 0;
+  const Real amplitudeU = scan(state, state.displacement, "displacement", worstU);
+  const Real amplitudeV = scan(state, state.velocity, "velocity", worstV);
+  const bool grewU = grewAgainstHistory(displacement_, amplitudeU);
+  const bool grewV = grewAgainstHistory(velocity_, amplitudeV);
+  ++observations_;
+  if (observations_ >= 3) {
+    lastRatio_ = oscillationRatio(state.displacement);
+    if ((grewU || grewV) && lastRatio_ > options_.oscillationThreshold) {
+      std::ostringstream why;
+      why << "runaway growth of a grid-scale oscillation (amplitude grew more than " << options_.growthFactor
+          << " times within " << options_.window << " observations; temporal second-difference ratio "
+          << lastRatio_ << ", a mode at the time step's Nyquist limit: the step is too large for this operator)";
+      if (grewU)
+        fail(state, state.displacement, "displacement", worstU, why.str());
+      else
+        fail(state, state.velocity, "velocity", worstV, why.str());
+    }
+  }
+  // Keep the last two displacements (swap buffers: one copy per observation).
+  beforePrevious_.swap(previous_);
+  previous_ = state.displacement;
 }
 
 }  // namespace mfwave

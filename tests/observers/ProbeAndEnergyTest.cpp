@@ -51,7 +51,7 @@ TEST(ProbeRecorder, AProbeOutsideTheStateNamesItsKey) {
     loop.run(integrator, 1);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(e.key(), "probes[0].particle");
+    EXPECT_EQ(e.key(), "probe[0].particle");
   }
   EXPECT_THROW(ProbeRecorder({{"bad", 0, 3, ProbeQuantity::Velocity}}, 3), InputError);
 }

@@ -1,0 +1,209 @@
+// wavefield: runs any scene with the reference finite-difference discretisation (a scalar wave,
+// rho u_tt = (lambda + 2 mu) Lap(u)) on a line, rectangle or block, and writes probes, energy,
+// VTK frames and PNG frames as the scene asks. It is the sample of how every study driver is
+// wired: scene -> particles + neighbours -> method -> integrator -> observers -> summary.
+//
+//   wavefield --scene data/scenes/block-ricker.toml [--set key=value ...] [--out DIR]
+
+#include "analysis/StableTimeStep.hpp"
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "integrators/IntegratorFactory.hpp"
+#include "io/run/DriverCommandLine.hpp"
+#include "io/run/ProgressReporter.hpp"
+#include "io/run/RunDriver.hpp"
+#include "io/run/RunSummary.hpp"
+#include "io/scene/BuildParticles.hpp"
+#include "io/scene/LoadScene.hpp"
+#include "io/scene/Scene.hpp"
+#include "io/vtk/PngFrameRenderer.hpp"
+#include "io/vtk/VtkFrameWriter.hpp"
+#include "methods/finite_difference/FiniteDifferenceWaveOperator.hpp"
+#include "neighbours/NeighbourList.hpp"
+#include "observers/EnergyObserver.hpp"
+#include "observers/ProbeRecorder.hpp"
+#include "observers/StabilityMonitor.hpp"
+#include "observers/TimeLoop.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+using namespace mfwave;
+
+namespace {
+
+const char* kProgram = "wavefield";
+
+// The reference method holds every named face fixed and takes point loads: anything else in the
+// scene is a combination it cannot honour, reported against the scene key.
+std::uint8_t fixedFaces(const Scene& scene) {
+  for (std::size_t i = 0; i < scene.boundaries.size(); ++i)
+    if (scene.boundaries[i].type != BoundaryType::Fixed)
+      throw InputError("boundary[" + std::to_string(i) + "].type",
+                       "the finite_difference method supports only 'fixed' boundaries, got '" +
+                           boundaryTypeName(scene.boundaries[i].type) + "'");
+  for (std::size_t i = 0; i < scene.loads.size(); ++i)
+    if (scene.loads[i].type != LoadType::PointForce)
+      throw InputError("load[" + std::to_string(i) + "].type", "the finite_difference method takes point_force loads only");
+  return facesWith(scene.boundaries, BoundaryType::Fixed);
+}
+
+template <int D>
+Index nearestParticle(const ParticleSet<D>& particles, const std::vector<Real>& position) {
+  Vec<D> x;
+  for (int a = 0; a < D; ++a) x[a] = position[static_cast<std::size_t>(a)];
+  Index best = 0;
+  Real bestDistance = std::numeric_limits<Real>::infinity();
+  for (Index i = 0; i < particles.physicalCount(); ++i) {
+    const Real d = (particles.position(i) - x).squaredNorm();
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
+template <int D>
+int run(const Scene& scene, const std::string& folder, const DriverOptions& cli, const std::string& resolvedScene) {
+  RunSummary summary;
+  summary.program = kProgram;
+  summary.scene = scene.info.name;
+  summary.method = scene.method.name;
+  summary.integrator = scene.integrator.name;
+
+  // particles + neighbours
+  const ParticleSet<D> particles = buildParticles<D>(scene.geometry);
+  const Real dx = scene.geometry.spacing;
+  const NeighbourList neighbours = buildNeighbourList(CellList<D>(particles, 1.5 * dx));
+
+  // discretisation: the scalar reference with c^2 = (lambda + 2 mu) / rho
+  FiniteDifferenceWaveOptions fd;
+  fd.spacing = dx;
+  fd.density = scene.material.material().density();
+  fd.modulus = scene.material.material().pWaveModulus();
+  fd.fixedFaces = fixedFaces(scene);
+  LinearSecondOrderSystem system = assembleFiniteDifferenceWave(particles, neighbours, fd);
+
+  // loads: each point force acts on the particle nearest its position (the direction is not used
+  // by a scalar method)
+  std::vector<std::pair<Index, LoadSpec>> pointLoads;
+  for (const LoadSpec& load : scene.loads) pointLoads.emplace_back(nearestParticle(particles, load.position), load);
+  if (!pointLoads.empty())
+    system.setForce([pointLoads](Real t, Vector& f) {
+      for (const auto& [particle, load] : pointLoads) f[particle] += load.amplitude * load.timeFunction(t);
+    });
+
+  // integrator, with the step a fraction of the operator's stable central-difference step
+  const StableTimeStep stable = centralDifferenceStableStep(system, 1e-6, 5000);
+  if (scene.integrator.timeStep && (scene.integrator.name == "central_difference" || scene.integrator.name == "leapfrog") &&
+      *scene.integrator.timeStep > stable.estimate())
+    throw InputError("integrator.time_step", "is above the stable step " + std::to_string(stable.estimate()) +
+                                                 " of " + scene.integrator.name + " for this operator");
+  const Real dt = scene.integrator.timeStepFor(stable.estimate());
+  auto integrator = makeSecondOrderIntegrator(scene.integrator.name, scene.integrator.options);
+  const Vector zero = Vector::Zero(system.size());
+  integrator->initialise(system, 0, zero, zero, dt);
+
+  // observers
+  StabilityMonitorOptions stabilityOptions;
+  stabilityOptions.growthFactor = scene.stability.growthFactor;
+  stabilityOptions.window = scene.stability.window;
+  stabilityOptions.absoluteLimit = scene.stability.absoluteLimit;
+  StabilityMonitor monitor(stabilityOptions);
+  std::vector<Probe> probeList = resolveProbes(scene.probes, particles);
+  for (Probe& probe : probeList) probe.component = 0;  // a scalar state has one component
+  ProbeRecorder probes(probeList, 1);
+  EnergyObserver energy(EnergyObserver::ofLinearSystem(system));
+  ProgressReporter progress(scene.integrator.endTime, particles.size(), !cli.quiet);
+  std::optional<VtkFrameWriter<D>> frames;
+  std::optional<PngFrameRenderer<D>> images;
+  TimeLoop loop;
+  loop.add(monitor);
+  loop.add(progress);
+  if (!scene.probes.empty()) loop.add(probes, scene.output.probeEvery);
+  if (scene.output.energy) loop.add(energy, scene.output.probeEvery);
+  if (scene.output.vtk) {
+    frames.emplace(particles, folder, "frame", 1);
+    loop.add(*frames, scene.output.every);
+  }
+  if (scene.output.png) {
+    PngOptions png;
+    png.field = scene.output.pngField;
+    png.component = scene.output.pngComponent == "magnitude" ? PngOptions::magnitude : 0;  // scalar state
+    png.pointSize = scene.output.pngPointSize;
+    png.width = scene.output.pngWidth;
+    png.height = scene.output.pngHeight;
+    images.emplace(particles, folder, "frame", 1, png);
+    loop.add(*images, scene.output.every);
+  }
+
+  {
+    AtomicFile file(folder + "/scene.resolved.toml");
+    file.stream() << resolvedScene;
+    file.commit();
+  }
+  const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
+
+  // outputs and summary
+  summary.files.push_back("scene.resolved.toml");
+  if (!scene.probes.empty()) {
+    probes.series().writeCsv(folder + "/probes.csv");
+    summary.files.push_back("probes.csv");
+  }
+  if (scene.output.energy) {
+    energy.series().writeCsv(folder + "/energy.csv");
+    summary.files.push_back("energy.csv");
+  }
+  if (frames) summary.files.push_back("frame.pvd (" + std::to_string(frames->framesWritten()) + " frames)");
+  if (images) {
+    if (images->skippedReason().empty())
+      summary.files.push_back("frame_*.png (" + std::to_string(images->framesRendered()) + " images)");
+    else
+      summary.notes.push_back("no PNG frames: " + images->skippedReason());
+  }
+  summary.particles = particles.size();
+  summary.meanNeighbours = neighbours.meanCount();
+  summary.steps = stats.steps;
+  summary.timeStep = dt;
+  summary.simulatedTime = stats.endTime;
+  summary.wallSeconds = stats.wallSeconds;
+  summary.figures.push_back({"stable_step_estimate", stable.estimate()});
+  summary.figures.push_back({"stable_step_gershgorin", stable.safe()});
+  if (scene.output.energy) summary.figures.push_back({"final_total_energy", energy.series().column(2).back()});
+  summary.notes.push_back("no reference solution for this scene: no error reported");
+  summary.finish();
+  summary.files.push_back("summary.json");
+  summary.writeJson(folder + "/summary.json");
+  summary.print(std::cout);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const SceneSchema schema = SceneSchema::common();
+  DriverCommandLine cli(kProgram, "wavefield: run a scene with the reference finite-difference scalar wave",
+                        schema.describe());
+  if (const auto exit = cli.parse(argc, argv)) return *exit;
+
+  return runDriver(kProgram, [&]() -> int {
+    SceneReader reader = loadScene(cli.options().scenePath, cli.options().overrides, schema);
+    const Scene scene = readScene(reader);
+    reader.checkAllKeysRead();  // unknown keys: before any work
+    if (scene.method.name != "finite_difference")
+      throw InputError("method.name", "wavefield runs the finite_difference method only");
+    const std::string folder = cli.options().outputFolder.empty() ? scene.output.folder : cli.options().outputFolder;
+    std::filesystem::create_directories(folder);
+    switch (scene.geometry.dimension) {
+      case 1:
+        return run<1>(scene, folder, cli.options(), reader.resolvedToml());
+      case 2:
+        return run<2>(scene, folder, cli.options(), reader.resolvedToml());
+      default:
+        return run<3>(scene, folder, cli.options(), reader.resolvedToml());
+    }
+  });
+}

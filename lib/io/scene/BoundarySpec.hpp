@@ -1,0 +1,34 @@
+#pragma once
+// [[boundary]]: conditions on box faces. Each face is in at most one entry; faces not named are
+// free; faces of periodic axes take no condition.
+
+#include "core/TimeFunction.hpp"
+#include "io/scene/GeometrySpec.hpp"
+#include "io/scene/SceneReader.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace mfwave {
+
+enum class BoundaryType { Free, Fixed, Traction, Displacement, Transmitting };
+
+// "free", "fixed", "traction", "displacement", "transmitting".
+std::string boundaryTypeName(BoundaryType type);
+
+struct BoundarySpec {
+  std::vector<int> faces;    // BoxFace numbers, in the order given
+  std::uint8_t faceMask = 0; // the same as a mask
+  BoundaryType type = BoundaryType::Free;
+  std::vector<Real> traction;  // Traction: Pa, one entry per axis
+  std::vector<Real> value;     // Displacement: m, one entry per axis
+  TimeFunction timeFunction = TimeFunction::constant(1);  // Traction and Displacement
+};
+
+std::vector<BoundarySpec> readBoundaries(SceneReader& reader, const GeometrySpec& geometry);
+
+// Mask of the faces that carry a condition of `type`.
+std::uint8_t facesWith(const std::vector<BoundarySpec>& boundaries, BoundaryType type);
+
+}  // namespace mfwave

@@ -1,0 +1,71 @@
+#include "io/scene/IntegratorSpec.hpp"
+
+#include "io/scene/Format.hpp"
+
+#include <cmath>
+
+namespace mfwave {
+
+Real IntegratorSpec::timeStepFor(Real stableStep) const {
+  return endTime / static_cast<Real>(stepsFor(stableStep));
+}
+
+long IntegratorSpec::stepsFor(Real stableStep) const {
+  if (timeStep) return std::lround(endTime / *timeStep);
+  return std::max(1L, static_cast<long>(std::ceil(endTime / (cfl * stableStep) - 1e-9)));
+}
+
+IntegratorSpec readIntegrator(SceneReader& reader) {
+  reader.table("integrator", true);
+  IntegratorSpec s;
+  s.name = reader.string("integrator.name");
+  s.endTime = reader.number("integrator.end_time");
+  if (reader.has("integrator.time_step") && reader.has("integrator.cfl"))
+    reader.fail("integrator.cfl", "cannot be combined with time_step: give time_step (a fixed step) or cfl "
+                                  "(a fraction of the stable step), not both");
+  if (reader.has("integrator.time_step")) {
+    s.timeStep = reader.number("integrator.time_step");
+    const Real steps = s.endTime / *s.timeStep;
+    if (std::abs(steps - std::round(steps)) > 1e-8 * std::max(Real(1), steps) || std::round(steps) < 1)
+      reader.fail("integrator.time_step", scene::formatNumber(*s.timeStep) + " does not divide end_time = " +
+                                              scene::formatNumber(s.endTime) + " into whole steps");
+    s.cfl = 0;
+  } else {
+    s.cfl = reader.number("integrator.cfl", 0.5);
+  }
+
+  const auto onlyWith = [&](const char* key, const std::string& integrator) {
+    const std::string path = std::string("integrator.") + key;
+    if (s.name != integrator && reader.has(path))
+      reader.fail(path, "only allowed with name = \"" + integrator + "\" (name is \"" + s.name + "\")");
+    return s.name == integrator;
+  };
+  const bool newmarkBeta = onlyWith("newmark_beta", "newmark");
+  const bool newmarkGamma = onlyWith("newmark_gamma", "newmark");
+  if (newmarkBeta && newmarkGamma) {
+    s.options.newmarkBeta = reader.number("integrator.newmark_beta");
+    s.options.newmarkGamma = reader.number("integrator.newmark_gamma");
+  }
+  bool arkode = true;
+  for (const char* key : {"arkode_table", "arkode_adaptive", "arkode_relative_tolerance", "arkode_absolute_tolerance"})
+    arkode = onlyWith(key, "arkode") && arkode;
+  if (arkode) {
+    ArkodeOptions& a = s.options.arkode;
+    a.table = reader.string("integrator.arkode_table");
+    a.adaptive = reader.boolean("integrator.arkode_adaptive");
+    a.relativeTolerance = reader.number("integrator.arkode_relative_tolerance");
+    a.absoluteTolerance = reader.number("integrator.arkode_absolute_tolerance");
+    try {
+      ArkodeExplicit check(a);  // the table, its embedding for adaptive runs, the tolerances
+    } catch (const InputError& e) {
+      const std::string key = e.key() == "integrator.table"                ? "integrator.arkode_table"
+                              : e.key() == "integrator.relative_tolerance" ? "integrator.arkode_relative_tolerance"
+                              : e.key() == "integrator.absolute_tolerance" ? "integrator.arkode_absolute_tolerance"
+                                                                           : "integrator.name";
+      reader.fail(key, scene::problemOf(e));
+    }
+  }
+  return s;
+}
+
+}  // namespace mfwave

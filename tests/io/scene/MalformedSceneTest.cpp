@@ -1,0 +1,77 @@
+// Every file in malformed/ is a scene with one mistake. Its first line names the key path the
+// error must carry ("# expect-key: boundary[1].faces[1]"); an optional "# expect-text:" line
+// gives a substring of the message. Each is read as a driver reads it (common sections, then
+// the unknown-key check) and must fail with a SceneError at that key, whose message names the
+// file and a line. The driver tests reuse these files: keep the convention.
+
+#include "io/scene/LoadScene.hpp"
+#include "io/scene/Scene.hpp"
+#include "SceneTestSupport.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+namespace mfwave {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> malformedScenes() {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(MFWAVE_MALFORMED_SCENES_DIR))
+    if (entry.path().extension() == ".toml") names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+struct Expectation {
+  std::string key, text;
+};
+
+Expectation expectationOf(const std::string& path) {
+  std::ifstream in(path);
+  Expectation e;
+  std::string line;
+  for (int n = 0; n < 5 && std::getline(in, line); ++n) {
+    const std::string keyTag = "# expect-key: ", textTag = "# expect-text: ";
+    if (line.rfind(keyTag, 0) == 0) e.key = line.substr(keyTag.size());
+    if (line.rfind(textTag, 0) == 0) e.text = line.substr(textTag.size());
+  }
+  return e;
+}
+
+class MalformedScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(MalformedScene, FailsAtTheExpectedKey) {
+  const std::string path = std::string(MFWAVE_MALFORMED_SCENES_DIR) + "/" + GetParam();
+  const Expectation expected = expectationOf(path);
+  ASSERT_FALSE(expected.key.empty()) << GetParam() << " has no '# expect-key:' first line";
+  const SceneError e = testing::sceneErrorOf([&] {
+    SceneReader reader = loadScene(path);
+    testing::readFully(reader);
+  });
+  const std::string message = e.what();
+  EXPECT_EQ(e.key(), expected.key) << message;
+  // The file name and a line number: ".../NN-name.toml:12: key: problem" (":12:5:" for syntax).
+  const std::regex located(std::regex_replace(GetParam(), std::regex(R"([.\-\[\]])"), R"(\$&)") + R"(:[1-9][0-9]*:)");
+  EXPECT_TRUE(std::regex_search(message, located)) << message;
+  if (!expected.text.empty()) {
+    EXPECT_NE(message.find(expected.text), std::string::npos) << message;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Files, MalformedScene, ::testing::ValuesIn(malformedScenes()),
+                         [](const ::testing::TestParamInfo<std::string>& file) {
+                           std::string name = file.param.substr(0, file.param.size() - 5);
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return "f" + name;
+                         });
+
+TEST(MalformedScenes, AtLeastThirtyCases) { EXPECT_GE(malformedScenes().size(), 30u); }
+
+}  // namespace
+}  // namespace mfwave

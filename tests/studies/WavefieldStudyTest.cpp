@@ -1,0 +1,139 @@
+// Runs the wavefield driver as a user would: the sample 3-D scene writes its frames, collection,
+// probes and summary; every malformed scene of tests/io/scene/malformed fails with exit code 2
+// and names its key, and none crashes.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+  bool exited;     // false: killed by a signal (a crash)
+  int exitCode;
+  std::string log;  // standard output and error
+};
+
+Outcome runWavefield(const std::string& arguments, const std::string& name, const std::string& prefix = "") {
+  const fs::path log = fs::temp_directory_path() / ("mfwave-wavefield-" + name + ".log");
+  const std::string command = prefix + WAVEFIELD_EXECUTABLE + std::string(" --quiet ") + arguments + " > " +
+                              log.string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WIFEXITED(status) != 0, WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+std::string firstLineValue(const fs::path& file, const std::string& marker) {
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind(marker, 0) == 0) return line.substr(marker.size());
+  return "";
+}
+
+}  // namespace
+
+TEST(WavefieldStudy, SampleBlockSceneWritesFramesProbesAndSummary) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-wavefield-block";
+  fs::remove_all(out);
+  // A shorter run of the README's sample scene: the pulse has left the source by t = 0.6.
+  const Outcome run = runWavefield(std::string("--scene ") + SCENES_FOLDER + "/block-ricker.toml --set integrator.end_time=0.6 " +
+                                       "--out " + out.string(),
+                                   "block");
+  ASSERT_TRUE(run.exited && run.exitCode == 0) << run.log;
+  EXPECT_TRUE(fs::exists(out / "frame.pvd"));
+  EXPECT_TRUE(fs::exists(out / "frame_000000.vtp"));
+  EXPECT_TRUE(fs::exists(out / "frame_000002.vtp"));  // steps 0, 25, 50 of 72
+  EXPECT_TRUE(fs::exists(out / "probes.csv"));
+  EXPECT_TRUE(fs::exists(out / "scene.resolved.toml"));
+  const nlohmann::json summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  EXPECT_EQ(summary["particles"], 9261);
+  EXPECT_EQ(summary["steps"], 72);  // dt = 0.5 x stable step 0.0167, landing on t = 0.6
+  EXPECT_GT(summary["particle_steps_per_second"].get<double>(), 0);
+  // The probe above the source has seen the pulse: its peak velocity is well above round-off.
+  std::ifstream probes(out / "probes.csv");
+  std::string header, line;
+  std::getline(probes, header);
+  EXPECT_EQ(header, "time [s],centre v_x [m/s],above v_x [m/s]");
+  double peakAbove = 0;
+  while (std::getline(probes, line)) peakAbove = std::max(peakAbove, std::abs(std::stod(line.substr(line.rfind(',') + 1))));
+  EXPECT_GT(peakAbove, 1e-3);
+}
+
+TEST(WavefieldStudy, PngFramesUnderXvfb) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path out = fs::temp_directory_path() / "mfwave-wavefield-png";
+  fs::remove_all(out);
+  const Outcome run = runWavefield(std::string("--scene ") + SCENES_FOLDER +
+                                       "/block-ricker.toml --set integrator.end_time=0.3 --set geometry.spacing=0.1 " +
+                                       "--out " + out.string(),
+                                   "png", "xvfb-run -a -s '-screen 0 1280x1024x24' ");
+  ASSERT_TRUE(run.exited && run.exitCode == 0) << run.log;
+  EXPECT_TRUE(fs::exists(out / "frame_000000.png")) << run.log;
+  EXPECT_GT(fs::file_size(out / "frame_000000.png"), 10000u);
+}
+
+TEST(WavefieldStudy, WithoutADisplayTheRunSaysWhyNoPngWasMade) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-wavefield-nodisplay";
+  fs::remove_all(out);
+  const Outcome run = runWavefield(std::string("--scene ") + SCENES_FOLDER +
+                                       "/block-ricker.toml --set integrator.end_time=0.1 --set geometry.spacing=0.1 " +
+                                       "--out " + out.string(),
+                                   "nodisplay", "env -u DISPLAY ");
+  ASSERT_TRUE(run.exited && run.exitCode == 0) << run.log;
+  EXPECT_NE(run.log.find("no PNG frames"), std::string::npos) << run.log;
+  EXPECT_TRUE(fs::exists(out / "frame_000000.vtp"));
+  EXPECT_FALSE(fs::exists(out / "frame_000000.png"));
+}
+
+TEST(WavefieldStudy, AnUnstableTimeStepIsRefusedBeforeAnyWork) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-wavefield-unstable";
+  fs::remove_all(out);
+  const Outcome run = runWavefield(std::string("--scene ") + SCENES_FOLDER +
+                                       "/block-ricker.toml --set integrator.time_step=0.02 --set integrator.cfl=0 " +
+                                       "--out " + out.string(),
+                                   "unstable");
+  EXPECT_TRUE(run.exited);
+  EXPECT_NE(run.exitCode, 0) << run.log;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+}
+
+class MalformedScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(MalformedScene, FailsWithExitCodeTwoAndNamesTheKey) {
+  const fs::path scene = GetParam();
+  const std::string key = firstLineValue(scene, "# expect-key: ");
+  ASSERT_FALSE(key.empty()) << scene;
+  const fs::path out = fs::temp_directory_path() / ("mfwave-malformed-" + scene.stem().string());
+  fs::remove_all(out);
+  const Outcome run = runWavefield("--scene " + scene.string() + " --out " + out.string(), scene.stem().string());
+  ASSERT_TRUE(run.exited) << "crashed: " << run.log;
+  EXPECT_EQ(run.exitCode, 2) << run.log;
+  EXPECT_NE(run.log.find(key), std::string::npos) << "expected key '" << key << "' in: " << run.log;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));  // no work, no output
+}
+
+std::vector<std::string> malformedScenes() {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(MALFORMED_FOLDER))
+    if (entry.path().extension() == ".toml") files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryFile, MalformedScene, ::testing::ValuesIn(malformedScenes()),
+                         [](const auto& parameter) {
+                           std::string name = fs::path(parameter.param).stem().string();
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return "scene_" + name;
+                         });
