@@ -8,5 +8,5 @@ bash scripts/install-deps.sh
 cmake --preset release
 cmake --build --preset release --target wave1d
 out="${1:-out/wave1d}"
-./build/release/drivers/wave1d --out "$out"
+./build/release/drivers/wave1d --scene data/scenes/wave1d.toml --out "$out"
 /usr/bin/python3 analysis/plot_wave1d.py "$out"

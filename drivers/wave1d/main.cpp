@@ -2,23 +2,28 @@
 // particles by the reference finite-difference operator and advanced by each integrator.
 //
 // What it shows: the whole pipeline (lattice -> neighbours -> operator -> integrator ->
-// observers) against an exact solution, the convergence order in dx at a fixed CFL number, and
+// observers) against an exact solution, the convergence order in dx at a fixed CFL fraction, and
 // the cost of each integrator for a given error. Results: docs/studies/wave1d.md.
+//
+//   wave1d --scene data/scenes/wave1d.toml [--set study.cells=[16,32]] [--out DIR]
 
+#include "analysis/StableTimeStep.hpp"
 #include "analytic/StandingWave.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "integrators/IntegratorFactory.hpp"
+#include "io/run/DriverCommandLine.hpp"
+#include "io/run/RunDriver.hpp"
+#include "io/run/RunSummary.hpp"
+#include "io/scene/LoadScene.hpp"
+#include "io/scene/Scene.hpp"
 #include "methods/finite_difference/FiniteDifferenceWaveOperator.hpp"
 #include "neighbours/NeighbourList.hpp"
 #include "observers/EnergyObserver.hpp"
 #include "observers/ProbeRecorder.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
-#include "particles/BoxFace.hpp"
 #include "particles/Lattice.hpp"
-
-#include <CLI/CLI.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -31,16 +36,29 @@ using namespace mfwave;
 
 namespace {
 
+const char* kProgram = "wave1d";
+
+SceneSchema wave1dSchema() {
+  SceneSchema schema = SceneSchema::common();
+  schema.add("study", ValueType::Table).describedAs("the convergence study of wave1d");
+  schema.add("study.mode", ValueType::Integer).withUnit("-").defaultsTo("1").atLeast(1).describedAs(
+      "standing-wave mode number n: u = sin(n pi x / L) cos(n pi c t / L)");
+  schema.add("study.cells", ValueType::NumberArray)
+      .withUnit("-")
+      .required()
+      .describedAs("resolutions, in cells along the bar (each at least 4 per half wave); geometry.spacing is ignored");
+  schema.add("study.integrators", ValueType::StringArray)
+      .withUnit("-")
+      .defaultsTo("[\"central_difference\", \"leapfrog\", \"newmark\", \"arkode\"]")
+      .describedAs("integrators to compare (names as integrator.name)");
+  return schema;
+}
+
 struct Study {
-  Real length = 1;
-  Real density = 1;
-  Real modulus = 1;
+  Scene scene;
   int mode = 1;
-  Real endTime = 2.3;  // not a multiple of the half period, so u(T) is not zero anywhere
-  Real cfl = 0.5;
-  std::vector<int> cells{32, 64, 128, 256, 512, 1024, 2048};
-  std::vector<std::string> integrators{"central_difference", "leapfrog", "newmark", "arkode"};
-  std::string out = "out/wave1d";
+  std::vector<int> cells;
+  std::vector<std::string> integrators;
 };
 
 struct CaseResult {
@@ -53,20 +71,23 @@ struct CaseResult {
   double wallSeconds;
 };
 
-CaseResult runCase(const Study& study, const std::string& integratorName, int cellCount, bool writeSeries) {
-  const Real dx = study.length / cellCount;
-  const Real waveSpeed = std::sqrt(study.modulus / study.density);
-  const StandingWave exact(study.mode, study.length, waveSpeed);
+CaseResult runCase(const Study& study, const std::string& integratorName, int cellCount, const std::string& folder,
+                   bool writeSeries) {
+  const Scene& scene = study.scene;
+  const Real x0 = scene.geometry.lower[0], length = scene.geometry.upper[0] - x0;
+  const Real dx = length / cellCount;
+  const Material& material = scene.material.material();
+  const StandingWave exact(study.mode, length, material.pWaveSpeed(), 1, x0);
 
   // particles + neighbours
-  const ParticleSet<1> line = makeLine(0, study.length, dx);
+  const ParticleSet<1> line = makeLine(x0, x0 + length, dx);
   const NeighbourList neighbours = buildNeighbourList(CellList<1>(line, 1.5 * dx));
   // discretisation
   FiniteDifferenceWaveOptions fd;
   fd.spacing = dx;
-  fd.density = study.density;
-  fd.modulus = study.modulus;
-  fd.fixedFaces = faceBit(BoxFace::MinusX) | faceBit(BoxFace::PlusX);
+  fd.density = material.density();
+  fd.modulus = material.pWaveModulus();
+  fd.fixedFaces = facesWith(scene.boundaries, BoundaryType::Fixed);
   LinearSecondOrderSystem system = assembleFiniteDifferenceWave(line, neighbours, fd);
 
   Vector u0(line.size()), v0(line.size());
@@ -74,23 +95,23 @@ CaseResult runCase(const Study& study, const std::string& integratorName, int ce
     u0[i] = exact.displacement(line.position(i)[0], 0);
     v0[i] = exact.velocity(line.position(i)[0], 0);
   }
-  // integrator: the largest step below cfl * dx / c that lands on the end time
-  const long steps = static_cast<long>(std::ceil(study.endTime * waveSpeed / (study.cfl * dx) - 1e-9));
-  const Real dt = study.endTime / static_cast<Real>(steps);
-  IntegratorOptions integratorOptions;
-  auto integrator = makeSecondOrderIntegrator(integratorName, integratorOptions);
+  // integrator: the step is integrator.cfl times the stable central-difference step (the
+  // Gershgorin bound, exact for this operator: dx / c), shortened to land on the end time.
+  const Real dt = scene.integrator.timeStepFor(centralDifferenceSafeStep(system));
+  IntegratorOptions options = scene.integrator.options;
+  auto integrator = makeSecondOrderIntegrator(integratorName, options);
   integrator->initialise(system, 0, u0, v0, dt);
 
   // observers
-  StabilityMonitor monitor;
+  StabilityMonitor monitor(scene.stability.options(1));
   EnergyObserver energy(EnergyObserver::ofLinearSystem(system));
   const Index quarter = line.size() / 4;
-  ProbeRecorder probes({{"quarter", quarter, 0, ProbeQuantity::Displacement}}, 1, "s", "m");
+  ProbeRecorder probes({{"quarter", quarter, 0, ProbeQuantity::Displacement}}, 1);
   TimeLoop loop;
   loop.add(monitor);
   loop.add(energy);
   if (writeSeries) loop.add(probes);
-  const RunStatistics stats = loop.run(*integrator, study.endTime);
+  const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
 
   // error at the end time, relative to the L2 norm of the mode shape (u(T) itself may be small)
   const Vector& u = integrator->state().displacement;
@@ -98,10 +119,10 @@ CaseResult runCase(const Study& study, const std::string& integratorName, int ce
   for (Index i = 0; i < line.size(); ++i) {
     const Real x = line.position(i)[0];
     errorSquared += std::pow(u[i] - exact.displacement(x, stats.endTime), 2);
-    normSquared += std::pow(std::sin(exact.wavenumber() * x), 2);
+    normSquared += std::pow(std::sin(exact.wavenumber() * (x - x0)), 2);
   }
   if (writeSeries) {
-    const std::string stem = study.out + "/" + integratorName + "-" + std::to_string(cellCount);
+    const std::string stem = folder + "/" + integratorName + "-" + std::to_string(cellCount);
     probes.series().writeCsv(stem + "-probe.csv");
     energy.series().writeCsv(stem + "-energy.csv");
   }
@@ -109,50 +130,71 @@ CaseResult runCase(const Study& study, const std::string& integratorName, int ce
           energy.maxRelativeDrift(), stats.wallSeconds};
 }
 
+Study readStudy(SceneReader& reader) {
+  Study study;
+  study.scene = readScene(reader);
+  if (study.scene.info.dimension != 1) reader.fail("scene.dimension", "wave1d is a 1-D study");
+  if (study.scene.method.name != "finite_difference") reader.fail("method.name", "wave1d uses finite_difference");
+  if (facesWith(study.scene.boundaries, BoundaryType::Fixed) != 0x3)
+    reader.fail("boundary", "wave1d needs both ends fixed: faces = [\"-x\", \"+x\"], type = \"fixed\"");
+  if (!study.scene.loads.empty()) reader.fail("load", "wave1d takes no loads: the standing wave is free");
+  study.mode = static_cast<int>(reader.integer("study.mode"));
+  for (Real c : reader.numbers("study.cells")) {
+    if (c != std::floor(c) || c < 4 * study.mode)
+      reader.fail("study.cells", "each resolution must be a whole number of at least 4 cells per half wave");
+    study.cells.push_back(static_cast<int>(c));
+  }
+  study.integrators = reader.strings("study.integrators");
+  for (const auto& name : study.integrators) makeSecondOrderIntegrator(name, study.scene.integrator.options);
+  return study;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  Study study;
-  CLI::App app{"wave1d: standing wave in a fixed-fixed bar; convergence and cost of each integrator"};
-  app.add_option("--out", study.out, "output folder")->capture_default_str();
-  app.add_option("--cells", study.cells, "resolutions (cells along the bar)")->capture_default_str();
-  app.add_option("--integrators", study.integrators,
-                 "integrators: central_difference leapfrog newmark arkode")->capture_default_str();
-  app.add_option("--cfl", study.cfl, "c dt / dx")->capture_default_str();
-  app.add_option("--end-time", study.endTime, "simulated time")->capture_default_str();
-  app.add_option("--mode", study.mode, "standing-wave mode number n")->capture_default_str();
-  bool quiet = false;
-  app.add_flag("--quiet", quiet, "print only the summary table");
-  app.set_version_flag("--version", "wave1d (mfwave 0.1.0)");
-  CLI11_PARSE(app, argc, argv);
+  const SceneSchema schema = wave1dSchema();
+  DriverCommandLine cli(kProgram, "wave1d: standing wave in a fixed-fixed bar; convergence and cost of each integrator",
+                        schema.describe());
+  if (const auto exit = cli.parse(argc, argv)) return *exit;
 
-  try {
-    if (!(study.cfl > 0)) throw InputError("cfl", "must be positive");
-    if (!(study.endTime > 0)) throw InputError("end_time", "must be positive");
-    if (study.cells.empty()) throw InputError("cells", "give at least one resolution");
-    for (int c : study.cells)
-      if (c < 4 * study.mode) throw InputError("cells", "each resolution needs at least 4 cells per half wave");
-    std::filesystem::create_directories(study.out);
+  return runDriver(kProgram, [&]() -> int {
+    SceneReader reader = loadScene(cli.options().scenePath, cli.options().overrides, schema);
+    const Study study = readStudy(reader);
+    reader.checkAllKeysRead();  // unknown keys: before any work
+    const std::string folder =
+        cli.options().outputFolder.empty() ? study.scene.output.folder : cli.options().outputFolder;
+    std::filesystem::create_directories(folder);
+    {
+      AtomicFile file(folder + "/scene.resolved.toml");
+      file.stream() << reader.resolvedToml();
+      file.commit();
+    }
 
     std::vector<CaseResult> results;
     for (const auto& name : study.integrators)
       for (std::size_t r = 0; r < study.cells.size(); ++r) {
-        results.push_back(runCase(study, name, study.cells[r], r + 1 == study.cells.size()));
-        if (!quiet) std::cerr << "  done " << name << " with " << study.cells[r] << " cells\n";
+        results.push_back(runCase(study, name, study.cells[r], folder, r + 1 == study.cells.size()));
+        if (!cli.options().quiet) std::cerr << "  done " << name << " with " << study.cells[r] << " cells\n";
       }
 
-    AtomicFile table(study.out + "/convergence.csv");
+    AtomicFile table(folder + "/convergence.csv");
     table.stream() << "integrator,cells,dx [m],dt [s],steps,relative_l2_error,observed_order,"
                       "energy_drift,wall_time [s],particle_steps_per_s\n";
     std::cout << std::left << std::setw(20) << "integrator" << std::right << std::setw(7) << "cells" << std::setw(10)
-              << "dt" << std::setw(13) << "L2 error" << std::setw(8) << "order" << std::setw(12) << "energy" << std::setw(11)
-              << "wall [s]" << std::setw(14) << "part-steps/s" << '\n';
+              << "dt" << std::setw(13) << "L2 error" << std::setw(8) << "order" << std::setw(12) << "energy"
+              << std::setw(11) << "wall [s]" << std::setw(14) << "part-steps/s" << '\n';
+    RunSummary summary;
+    summary.program = kProgram;
+    summary.scene = study.scene.info.name;
+    summary.method = study.scene.method.name;
+    summary.integrator = "several (see convergence.csv)";
     for (std::size_t i = 0; i < results.size(); ++i) {
       const CaseResult& r = results[i];
       const bool hasCoarser = i > 0 && results[i - 1].integrator == r.integrator;
       const Real order = hasCoarser ? std::log(results[i - 1].error / r.error) / std::log(results[i - 1].dx / r.dx)
                                     : std::nan("");
-      const double rate = static_cast<double>(r.cells + 1) * static_cast<double>(r.steps) / std::max(r.wallSeconds, 1e-9);
+      const double rate =
+          static_cast<double>(r.cells + 1) * static_cast<double>(r.steps) / std::max(r.wallSeconds, 1e-9);
       table.stream() << r.integrator << ',' << r.cells << ',' << r.dx << ',' << r.dt << ',' << r.steps << ','
                      << r.error << ',' << order << ',' << r.energyDrift << ',' << r.wallSeconds << ',' << rate << '\n';
       std::cout << std::left << std::setw(20) << r.integrator << std::right << std::setw(7) << r.cells
@@ -161,15 +203,21 @@ int main(int argc, char** argv) {
                 << order << std::setw(12) << std::scientific << std::setprecision(2) << r.energyDrift
                 << std::defaultfloat << std::setw(11) << std::setprecision(3) << r.wallSeconds << std::setw(14)
                 << std::scientific << std::setprecision(2) << rate << std::defaultfloat << '\n';
+      summary.particles = std::max<Index>(summary.particles, r.cells + 1);
+      summary.steps += r.steps;
+      summary.wallSeconds += r.wallSeconds;
+      if (i + 1 == results.size() || results[i + 1].integrator != r.integrator) {
+        summary.errors.push_back({r.integrator + "_relative_l2_finest", r.error});
+        if (hasCoarser) summary.figures.push_back({r.integrator + "_observed_order", order});
+      }
     }
     table.commit();
-    std::cout << "wrote " << study.out << "/convergence.csv\n";
+    summary.simulatedTime = study.scene.integrator.endTime;
+    summary.notes.push_back("particles: the finest line; steps and wall time: summed over all cases");
+    summary.files = {"scene.resolved.toml", "convergence.csv", "summary.json"};
+    summary.finish();
+    summary.writeJson(folder + "/summary.json");
+    summary.print(std::cout);
     return 0;
-  } catch (const InstabilityError& e) {
-    std::cerr << "wave1d: run stopped: " << e.what() << '\n';
-    return 3;
-  } catch (const Error& e) {
-    std::cerr << "wave1d: error: " << e.what() << '\n';
-    return 2;
-  }
+  });
 }

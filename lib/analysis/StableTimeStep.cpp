@@ -17,21 +17,39 @@ Real StableTimeStep::safe() const {
   return gershgorinOmegaSquared > 0 ? 2 / std::sqrt(gershgorinOmegaSquared) : std::numeric_limits<Real>::infinity();
 }
 
+namespace {
+
+Vector inverseLumpedMass(const LinearSecondOrderSystem& system) {
+  const Vector mass = system.mass().diagonal();
+  if (system.mass().nonZeros() != system.size() || !(mass.array() > 0).all())
+    throw InputError("mass", "the stable-step estimate needs a diagonal mass matrix with positive entries");
+  return mass.cwiseInverse();
+}
+
+// Gershgorin: every eigenvalue of M^{-1} K lies in a disc around a row's diagonal.
+Real gershgorinOmegaSquared(const LinearSecondOrderSystem& system, const Vector& inverseMass) {
+  const SparseMatrix& k = system.stiffness();
+  Vector rowSums = Vector::Zero(system.size());
+  for (int c = 0; c < k.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(k, c); it; ++it) rowSums[it.row()] += std::abs(it.value());
+  return rowSums.cwiseProduct(inverseMass).maxCoeff();
+}
+
+}  // namespace
+
+Real centralDifferenceSafeStep(const LinearSecondOrderSystem& system) {
+  StableTimeStep bound;
+  bound.gershgorinOmegaSquared = gershgorinOmegaSquared(system, inverseLumpedMass(system));
+  return bound.safe();
+}
+
 StableTimeStep centralDifferenceStableStep(const LinearSecondOrderSystem& system, Real relativeTolerance,
                                            int maximumIterations) {
   const Index n = system.size();
-  const Vector mass = system.mass().diagonal();
-  if (system.mass().nonZeros() != n || !(mass.array() > 0).all())
-    throw InputError("mass", "the stable-step estimate needs a diagonal mass matrix with positive entries");
-  const Vector inverseMass = mass.cwiseInverse();
+  const Vector inverseMass = inverseLumpedMass(system);
   const SparseMatrix& k = system.stiffness();
-
   StableTimeStep result;
-  // Gershgorin: every eigenvalue of M^{-1} K lies in a disc around a row's diagonal.
-  Vector rowSums = Vector::Zero(n);
-  for (int c = 0; c < k.outerSize(); ++c)
-    for (SparseMatrix::InnerIterator it(k, c); it; ++it) rowSums[it.row()] += std::abs(it.value());
-  result.gershgorinOmegaSquared = rowSums.cwiseProduct(inverseMass).maxCoeff();
+  result.gershgorinOmegaSquared = gershgorinOmegaSquared(system, inverseMass);
 
   // Power iteration; the start has components along every mode (random signs), and the quotient
   // x.(M^-1 K x) / x.x tends to the dominant eigenvalue.

@@ -21,6 +21,10 @@ struct StableTimeStep {
   Real safe() const;      // 2 / sqrt(gershgorinOmegaSquared)
 };
 
+// The Gershgorin step alone: cheap (one pass over K), never above the true limit; exact for the
+// finite-difference Laplacian.
+Real centralDifferenceSafeStep(const LinearSecondOrderSystem& system);
+
 // Power iteration on M^{-1} K from a fixed pseudo-random start (reproducible), until the Rayleigh
 // quotient changes by less than `relativeTolerance` between iterations. Throws InputError if M is
 // not diagonal with positive entries.

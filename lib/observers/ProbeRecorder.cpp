@@ -16,8 +16,10 @@ std::vector<std::string> columnNames(const std::vector<Probe>& probes, int compo
       throw InputError(key + ".component", "must lie in [0, " + std::to_string(components - 1) + "]");
     if (probe.particle < 0) throw InputError(key + ".particle", "must not be negative");
     const bool velocity = probe.quantity == ProbeQuantity::Velocity;
-    names.push_back(probe.name + (velocity ? " v_" : " u_") + axis[probe.component] + " [" + lengthUnit +
-                    (velocity ? "/" + timeUnit : std::string()) + "]");
+    // A scalar state (one component) has no axis to name.
+    const std::string symbol = std::string(velocity ? " v" : " u") +
+                               (components > 1 ? std::string("_") + axis[probe.component] : std::string());
+    names.push_back(probe.name + symbol + " [" + lengthUnit + (velocity ? "/" + timeUnit : std::string()) + "]");
   }
   return names;
 }

@@ -36,6 +36,7 @@ TEST(StableTimeStep, MatchesTheSpringChainsClosedForm) {
   EXPECT_DOUBLE_EQ(step.gershgorinOmegaSquared, 4 * k / m);          // the bound, above
   EXPECT_GE(step.estimate(), step.safe());
   EXPECT_NEAR(step.estimate(), 2 / std::sqrt(exact), 1e-4 * 2 / std::sqrt(exact));
+  EXPECT_DOUBLE_EQ(centralDifferenceSafeStep(chain(n, m, k)), step.safe());
 }
 
 TEST(StableTimeStep, RejectsAConsistentMass) {

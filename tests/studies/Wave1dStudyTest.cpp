@@ -1,5 +1,6 @@
 // Runs the wave1d driver as a user would and checks its convergence table against theory.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -11,6 +12,8 @@
 #include <vector>
 
 namespace {
+
+const std::string SCENE = std::string(SCENES_FOLDER) + "/wave1d.toml";
 
 struct Row {
   std::string integrator;
@@ -43,8 +46,8 @@ std::string scratchFolder(const std::string& name) {
 
 TEST(Wave1dStudy, EveryIntegratorConvergesAtSecondOrderInDx) {
   const std::string out = scratchFolder("wave1d");
-  const std::string command = std::string(WAVE1D_EXECUTABLE) + " --quiet --out " + out +
-                              " --cells 16 32 64 128 > " + out + ".log 2>&1";
+  const std::string command = std::string(WAVE1D_EXECUTABLE) + " --quiet --scene " + SCENE + " --out " + out +
+                              " --set 'study.cells=[16, 32, 64, 128]' > " + out + ".log 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   const std::vector<Row> rows = readTable(out + "/convergence.csv");
   ASSERT_EQ(rows.size(), 16u);
@@ -64,25 +67,27 @@ TEST(Wave1dStudy, EveryIntegratorConvergesAtSecondOrderInDx) {
 
 TEST(Wave1dStudy, BadInputFailsWithTheKeyAndNoOutput) {
   const std::string out = scratchFolder("wave1d-bad");
-  const std::string command = std::string(WAVE1D_EXECUTABLE) + " --quiet --cfl -1 --out " + out + " > " + out +
-                              ".log 2>&1";
+  const std::string command = std::string(WAVE1D_EXECUTABLE) + " --quiet --scene " + SCENE +
+                              " --set integrator.cfl=-1 --out " + out + " > " + out + ".log 2>&1";
   const int status = std::system(command.c_str());
   EXPECT_NE(status, 0);
   std::ifstream log(out + ".log");
   std::stringstream text;
   text << log.rdbuf();
-  EXPECT_NE(text.str().find("cfl"), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("integrator.cfl: must be positive"), std::string::npos) << text.str();
+  EXPECT_EQ(WEXITSTATUS(status), 2);
   EXPECT_FALSE(std::filesystem::exists(out + "/convergence.csv"));
 }
 
 TEST(Wave1dStudy, AnUnstableStepIsStoppedWithWhereAndWhen) {
   // c dt / dx = 1.05 is above the central-difference limit of 1 for this operator.
   const std::string out = scratchFolder("wave1d-unstable");
-  const std::string command = std::string(WAVE1D_EXECUTABLE) + " --quiet --cfl 1.05 --cells 64 --mode 1 " +
-                              "--integrators central_difference --end-time 20 --out " + out + " > " + out +
-                              ".log 2>&1";
+  const std::string command = std::string(WAVE1D_EXECUTABLE) + " --quiet --scene " + SCENE +
+                              " --set integrator.cfl=1.05 --set 'study.cells=[64]' --set " +
+                              "'study.integrators=[\"central_difference\"]' --set integrator.end_time=20 --out " + out +
+                              " > " + out + ".log 2>&1";
   const int status = std::system(command.c_str());
-  EXPECT_NE(status, 0);
+  EXPECT_EQ(WEXITSTATUS(status), 3);
   std::ifstream log(out + ".log");
   std::stringstream text;
   text << log.rdbuf();
