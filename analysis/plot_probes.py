@@ -8,9 +8,8 @@ import csv
 import os
 import sys
 
-import matplotlib
+from plotting import finish_axes, save_atomically  # selects the Agg backend first
 
-matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
@@ -39,15 +38,10 @@ def main(out_dir):
             axes[0][1].plot(columns[0], values, label=name)
         axes[0][1].set_xlabel(header[0])
         axes[0][1].set_title("energy")
-    for ax in axes[0]:
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8)
+    finish_axes(axes[0])
     fig.tight_layout()
     png = os.path.join(out_dir, "probes.png")
-    tmp = png + ".tmp.png"
-    fig.savefig(tmp, dpi=110)
-    os.replace(tmp, png)
-    print(f"wrote {png}")
+    save_atomically(fig, png)
 
 
 if __name__ == "__main__":

@@ -8,9 +8,8 @@ import csv
 import os
 import sys
 
-import matplotlib
+from plotting import finish_axes, save_atomically  # selects the Agg backend first
 
-matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
@@ -51,15 +50,10 @@ def main(out_dir):
     ax_cost.set_xlabel("wall time [s]")
     ax_cost.set_title("error against cost")
     ax_probe.set_title("displacement at the quarter point (finest run)")
-    for ax in (ax_dx, ax_cost, ax_probe):
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8)
+    finish_axes((ax_dx, ax_cost, ax_probe))
     fig.tight_layout()
     png = os.path.join(out_dir, "wave1d.png")
-    tmp = png + ".tmp.png"
-    fig.savefig(tmp, dpi=110)
-    os.replace(tmp, png)
-    print(f"wrote {png}")
+    save_atomically(fig, png)
 
 
 if __name__ == "__main__":

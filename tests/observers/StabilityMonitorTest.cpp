@@ -1,4 +1,4 @@
-#include "ScriptedIntegrator.hpp"
+#include "support/ScriptedIntegrator.hpp"
 #include "core/Error.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"

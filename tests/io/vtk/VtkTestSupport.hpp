@@ -2,7 +2,7 @@
 // Shared by the lib/io/vtk tests: scratch folders, reading files back, a scripted integrator and
 // a scoped change of an environment variable.
 
-#include "integrators/Integrator.hpp"
+#include "support/ScriptedIntegrator.hpp"
 
 #include <gtest/gtest.h>
 
@@ -59,24 +59,7 @@ inline std::vector<std::string> filesIn(const fs::path& dir) {
   return names;
 }
 
-// Each step runs `script(step, u, v)`; time = step * dt. States are exactly known.
-class ScriptIntegrator : public Integrator {
- public:
-  ScriptIntegrator(Vector u, Vector v, Real dt, std::function<void(long, Vector&, Vector&)> script)
-      : u_(std::move(u)), v_(std::move(v)), dt_(dt), script_(std::move(script)) {}
-  std::string name() const override { return "script"; }
-  void step() override { script_(++steps_, u_, v_); }
-  Real time() const override { return static_cast<Real>(steps_) * dt_; }
-  long stepCount() const override { return steps_; }
-  Real stepSize() const override { return dt_; }
-  StateView state() const override { return {steps_, time(), u_, v_}; }
-
- private:
-  Vector u_, v_;
-  Real dt_;
-  long steps_ = 0;
-  std::function<void(long, Vector&, Vector&)> script_;
-};
+using ScriptIntegrator = mfwave::testing::ScriptedIntegrator;
 
 // Sets (or, with nullopt, unsets) an environment variable for the life of the object.
 class ScopedEnvironment {

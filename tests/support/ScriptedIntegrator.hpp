@@ -1,6 +1,6 @@
 #pragma once
-// A stand-in integrator for observer tests: each step multiplies the state by a fixed factor,
-// so growth, NaNs and step counts are exactly known.
+// A stand-in integrator for observer and output tests: each step runs script(step, u, v), so
+// states, growth, NaNs and step counts are exactly known; time = step * dt.
 
 #include "integrators/Integrator.hpp"
 
