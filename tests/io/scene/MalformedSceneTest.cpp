@@ -11,14 +11,26 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 
 namespace mfwave {
 namespace {
 
 namespace fs = std::filesystem;
+
+// True if `message` contains "<file>:<line>:" with a positive line number. (Plain string search:
+// std::regex trips GCC 12's -Wmaybe-uninitialized under the sanitizers.)
+bool namesFileAndLine(const std::string& message, const std::string& file) {
+  for (auto at = message.find(file + ":"); at != std::string::npos; at = message.find(file + ":", at + 1)) {
+    std::size_t digit = at + file.size() + 1;
+    const std::size_t first = digit;
+    while (digit < message.size() && std::isdigit(static_cast<unsigned char>(message[digit]))) ++digit;
+    if (digit > first && message[first] != '0' && digit < message.size() && message[digit] == ':') return true;
+  }
+  return false;
+}
 
 std::vector<std::string> malformedScenes() {
   std::vector<std::string> names;
@@ -57,8 +69,7 @@ TEST_P(MalformedScene, FailsAtTheExpectedKey) {
   const std::string message = e.what();
   EXPECT_EQ(e.key(), expected.key) << message;
   // The file name and a line number: ".../NN-name.toml:12: key: problem" (":12:5:" for syntax).
-  const std::regex located(std::regex_replace(GetParam(), std::regex(R"([.\-\[\]])"), R"(\$&)") + R"(:[1-9][0-9]*:)");
-  EXPECT_TRUE(std::regex_search(message, located)) << message;
+  EXPECT_TRUE(namesFileAndLine(message, GetParam())) << message;
   if (!expected.text.empty()) {
     EXPECT_NE(message.find(expected.text), std::string::npos) << message;
   }
