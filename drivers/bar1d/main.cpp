@@ -1,0 +1,316 @@
+// bar1d: the Luo-Liu-Huang example. A bar on [0, 10] (rho = 1, E = 10, c = sqrt 10), fixed at
+// x = 0, free at x = 10, at rest and undeformed but moving with v0 = -1 at t = 0, discretised by
+// reproducing-kernel (or radial-basis) strong-form collocation with Ns = Nc uniform nodes, advanced
+// by central difference on the constrained system (Newmark beta = 0) or implicit Newmark.
+//
+// What it shows: the error against the exact solution by characteristics (FixedFreeBarImpact) and
+// its convergence in h. The exact velocity is discontinuous, so low orders are expected.
+// Results: docs/studies/rkcm.md.
+//
+//   bar1d --scene data/scenes/bar1d.toml [--set 'study.nodes=[21,41,81]'] [--out DIR]
+
+#include "analytic/FixedFreeBarImpact.hpp"
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "io/run/DriverCommandLine.hpp"
+#include "io/run/RunDriver.hpp"
+#include "io/run/RunSummary.hpp"
+#include "io/scene/LoadScene.hpp"
+#include "io/scene/Scene.hpp"
+#include "integrators/CentralDifference.hpp"
+#include "methods/collocation/CollocationNewmark.hpp"
+#include "methods/collocation/CollocationSystem.hpp"
+#include "methods/collocation/ConstrainedCollocationSystem.hpp"
+#include "methods/collocation/RadialBasisShapeFunctions.hpp"
+#include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
+#include "observers/StabilityMonitor.hpp"
+#include "observers/TimeLoop.hpp"
+#include "observers/TimeSeries.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace mfwave;
+
+namespace {
+
+const char* kProgram = "bar1d";
+
+SceneSchema bar1dSchema() {
+  SceneSchema schema = SceneSchema::common();
+  schema.addChoice("method.name", "reproducing_kernel");
+  schema.addChoice("method.name", "radial_basis");
+  schema.add("method.order", ValueType::Integer).withUnit("-").defaultsTo("2").between(0, 3)
+      .when("name = reproducing_kernel").describedAs("RK basis order m");
+  schema.add("method.support_ratio", ValueType::Number).withUnit("-").defaultsTo("3.3").positive()
+      .when("name = reproducing_kernel").describedAs("cubic B-spline support radius a / h");
+  schema.add("method.basis", ValueType::String).defaultsTo("\"inverse_multiquadric\"")
+      .oneOf(radialBasisNames()).when("name = radial_basis").describedAs("radial basis function");
+  schema.add("method.shape_ratio", ValueType::Number).withUnit("-").defaultsTo("1.0").positive()
+      .when("name = radial_basis").describedAs("RBF shape parameter a_r / h");
+  schema.add("study", ValueType::Table).describedAs("the convergence study of bar1d");
+  schema.add("study.initial_velocity", ValueType::Number).withUnit("m/s").defaultsTo("-1.0")
+      .describedAs("uniform initial velocity v0");
+  schema.add("study.nodes", ValueType::NumberArray).withUnit("-").required()
+      .describedAs("resolutions: numbers of nodes Ns = Nc (uniform, h = L / (Ns - 1)); geometry.spacing is ignored");
+  schema.add("study.error_points", ValueType::Integer).withUnit("-").defaultsTo("2001").atLeast(11)
+      .describedAs("uniform points where the L2 errors are evaluated");
+  schema.add("study.error_samples", ValueType::Integer).withUnit("-").defaultsTo("50").atLeast(1)
+      .describedAs("times (evenly spread) at which the error over time is sampled");
+  return schema;
+}
+
+struct Study {
+  Scene scene;
+  int order = 2;
+  Real supportRatio = 3.3;
+  std::string basis;
+  Real shapeRatio = 1;
+  Real v0 = -1;
+  std::vector<int> nodes;
+  int errorPoints = 2001;
+  int errorSamples = 50;
+};
+
+struct CaseResult {
+  int nodes;
+  Real h, dt, criticalDt;
+  long steps;
+  Real errorU, errorV, maxErrorU;
+  double wallSeconds;
+};
+
+std::unique_ptr<ShapeFunctions<1>> makeShapes(const Study& study, const Coordinates<1>& nodes, Real h) {
+  if (study.scene.method.name == "radial_basis")
+    return std::make_unique<RadialBasisShapeFunctions<1>>(
+        nodes, makeRadialBasisFunction(study.basis, study.shapeRatio * h));
+  return std::make_unique<ReproducingKernelShapeFunctions<1>>(nodes, study.order, study.supportRatio * h);
+}
+
+// Relative L2 errors of u and v at time t (trapezoidal sums on uniform points).
+struct Errors {
+  Real u, v, uNorm, vNorm;
+};
+
+class ErrorSampler : public Observer {
+ public:
+  ErrorSampler(const ConstrainedCollocationSystem& system, const ShapeFunctions<1>& shapes,
+               const FixedFreeBarImpact& exact, std::vector<Vec1> points, long every)
+      : system_(system), shapes_(shapes), exact_(exact), points_(std::move(points)), every_(every),
+        series_("t [s]", {"relative_l2_u", "relative_l2_v", "l2_u_error [m]", "l2_u [m]"}) {}
+
+  Errors errors(const StateView& s) const {
+    const Vector u = evaluateCollocationField<1>(shapes_, system_.coefficients(s.displacement, s.time), points_);
+    const Vector v = evaluateCollocationField<1>(shapes_, system_.coefficientRates(s.velocity, s.time), points_);
+    Errors e{0, 0, 0, 0};
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      const Real x = points_[i][0], w = (i == 0 || i + 1 == points_.size()) ? 0.5 : 1.0;
+      const Real ue = exact_.displacement(x, s.time), ve = exact_.velocity(x, s.time);
+      e.u += w * std::pow(u[static_cast<Index>(i)] - ue, 2);
+      e.v += w * std::pow(v[static_cast<Index>(i)] - ve, 2);
+      e.uNorm += w * ue * ue;
+      e.vNorm += w * ve * ve;
+    }
+    return e;
+  }
+  void observe(const StateView& s) override {
+    (void)every_;
+    const Errors e = errors(s);
+    maxU_ = std::max(maxU_, e.uNorm);
+    maxErrU_ = std::max(maxErrU_, e.u);
+    series_.append(s.time, {std::sqrt(e.u / std::max(e.uNorm, 1e-300)), std::sqrt(e.v / std::max(e.vNorm, 1e-300)),
+                            std::sqrt(e.u), std::sqrt(e.uNorm)});
+  }
+  void end(const StateView& s) override { observe(s); }
+  // max over sampled times of ||e_u|| / max over sampled times of ||u||.
+  Real maxRelativeU() const { return std::sqrt(maxErrU_ / std::max(maxU_, 1e-300)); }
+  const TimeSeries& series() const { return series_; }
+
+ private:
+  const ConstrainedCollocationSystem& system_;
+  const ShapeFunctions<1>& shapes_;
+  const FixedFreeBarImpact& exact_;
+  std::vector<Vec1> points_;
+  long every_;
+  Real maxU_ = 0, maxErrU_ = 0;
+  TimeSeries series_;
+};
+
+CaseResult runCase(const Study& study, int nodeCount, const std::string& folder, bool writeSeries) {
+  const Scene& scene = study.scene;
+  const Real x0 = scene.geometry.lower[0], length = scene.geometry.upper[0] - x0;
+  const Real h = length / (nodeCount - 1);
+  const Material material = Material::fromYoung(scene.material.material().youngsModulus(), 0,
+                                                scene.material.density);
+  const FixedFreeBarImpact exact(length, material.barSpeed(), study.v0);
+
+  Coordinates<1> nodes;
+  CollocationPoints<1> points;
+  for (int i = 0; i < nodeCount; ++i) {
+    const Real x = x0 + length * i / (nodeCount - 1);
+    nodes[0].push_back(x);
+    points.add(Vec1(x), i == 0 ? CollocationRowKind::Displacement
+                               : i + 1 == nodeCount ? CollocationRowKind::Traction : CollocationRowKind::Interior,
+               Vec1(1.0));
+  }
+  const auto shapes = makeShapes(study, nodes, h);
+  ConstrainedCollocationSystem system(assembleCollocation<1>(*shapes, points, material));
+
+  // Exact critical step of central difference: 2 / sqrt(max |eig K|); complex or negative
+  // eigenvalues mean no step is stable (reported, the run then shows it).
+  const Eigen::VectorXcd eig = Eigen::EigenSolver<Eigen::MatrixXd>(system.denseStiffness(), false).eigenvalues();
+  const Real lambdaMax = eig.cwiseAbs().maxCoeff();
+  const Real criticalDt = 2 / std::sqrt(lambdaMax);
+  const Real dt = scene.integrator.timeStepFor(criticalDt);
+
+  // Initial state at interior points: u = 0, v = v0 (the boundary rows enforce u(0) = 0).
+  const Vector U0 = Vector::Zero(system.size());
+  const Vector V0 = Vector::Constant(system.size(), study.v0);
+  std::unique_ptr<SecondOrderIntegrator> integrator;
+  const bool implicit = scene.integrator.name == "newmark" && scene.integrator.options.newmarkBeta > 0;
+  if (implicit)
+    integrator = std::make_unique<CollocationNewmark>(scene.integrator.options.newmarkBeta,
+                                                      scene.integrator.options.newmarkGamma);
+  else
+    integrator = std::make_unique<CentralDifference>();
+  integrator->initialise(system, 0, U0, V0, dt);
+
+  std::vector<Vec1> errorPoints;
+  for (int i = 0; i < study.errorPoints; ++i) errorPoints.emplace_back(x0 + length * i / (study.errorPoints - 1));
+  const long steps = scene.integrator.stepsFor(criticalDt);
+  const long every = std::max<long>(1, steps / study.errorSamples);
+  ErrorSampler sampler(system, *shapes, exact, errorPoints, every);
+  StabilityMonitor monitor(scene.stability.options(1));
+  TimeLoop loop;
+  loop.add(monitor);
+  loop.add(sampler, every);
+  const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
+
+  const Errors e = sampler.errors(integrator->state());
+  if (writeSeries) {
+    const std::string stem = folder + "/nodes-" + std::to_string(nodeCount);
+    sampler.series().writeCsv(stem + "-errors.csv");
+    const StateView s = integrator->state();
+    const Vector u = evaluateCollocationField<1>(*shapes, system.coefficients(s.displacement, s.time), errorPoints);
+    const Vector v = evaluateCollocationField<1>(*shapes, system.coefficientRates(s.velocity, s.time), errorPoints);
+    AtomicFile profile(stem + "-profile.csv");
+    profile.stream() << "x [m],u [m],u_exact [m],v [m/s],v_exact [m/s]\n" << std::setprecision(10);
+    for (std::size_t i = 0; i < errorPoints.size(); ++i) {
+      const Real x = errorPoints[i][0];
+      profile.stream() << x << ',' << u[static_cast<Index>(i)] << ',' << exact.displacement(x, s.time) << ','
+                       << v[static_cast<Index>(i)] << ',' << exact.velocity(x, s.time) << '\n';
+    }
+    profile.commit();
+  }
+  return {nodeCount, h, dt, criticalDt, stats.steps, std::sqrt(e.u / e.uNorm), std::sqrt(e.v / e.vNorm),
+          sampler.maxRelativeU(), stats.wallSeconds};
+}
+
+Study readStudy(SceneReader& reader) {
+  Study study;
+  study.scene = readScene(reader);
+  if (study.scene.info.dimension != 1) reader.fail("scene.dimension", "bar1d is a 1-D study");
+  if (study.scene.method.name == "reproducing_kernel") {
+    study.order = static_cast<int>(reader.integer("method.order"));
+    study.supportRatio = reader.number("method.support_ratio");
+  } else if (study.scene.method.name == "radial_basis") {
+    study.basis = reader.string("method.basis");
+    study.shapeRatio = reader.number("method.shape_ratio");
+  } else {
+    reader.fail("method.name", "bar1d uses reproducing_kernel or radial_basis");
+  }
+  if (facesWith(study.scene.boundaries, BoundaryType::Fixed) != 0x1 ||
+      facesWith(study.scene.boundaries, BoundaryType::Traction) != 0)
+    reader.fail("boundary", "bar1d is the fixed-free bar: faces = [\"-x\"], type = \"fixed\"; +x free");
+  if (!study.scene.loads.empty()) reader.fail("load", "bar1d takes no loads");
+  const std::string& integrator = study.scene.integrator.name;
+  if (integrator != "central_difference" && integrator != "newmark")
+    reader.fail("integrator.name", "bar1d runs central_difference or newmark");
+  study.v0 = reader.number("study.initial_velocity");
+  for (Real n : reader.numbers("study.nodes")) {
+    if (n != std::floor(n) || n < 6) reader.fail("study.nodes", "each resolution must be a whole number >= 6");
+    study.nodes.push_back(static_cast<int>(n));
+  }
+  study.errorPoints = static_cast<int>(reader.integer("study.error_points"));
+  study.errorSamples = static_cast<int>(reader.integer("study.error_samples"));
+  return study;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const SceneSchema schema = bar1dSchema();
+  DriverCommandLine cli(kProgram, "bar1d: the Luo-Liu-Huang fixed-free bar by RK / RBF collocation; convergence in h",
+                        schema.describe());
+  if (const auto exit = cli.parse(argc, argv)) return *exit;
+
+  return runDriver(kProgram, [&]() -> int {
+    SceneReader reader = loadScene(cli.options().scenePath, cli.options().overrides, schema);
+    const Study study = readStudy(reader);
+    reader.checkAllKeysRead();
+    const std::string folder =
+        cli.options().outputFolder.empty() ? study.scene.output.folder : cli.options().outputFolder;
+    std::filesystem::create_directories(folder);
+    {
+      AtomicFile file(folder + "/scene.resolved.toml");
+      file.stream() << reader.resolvedToml();
+      file.commit();
+    }
+    std::vector<CaseResult> results;
+    for (std::size_t r = 0; r < study.nodes.size(); ++r) {
+      results.push_back(runCase(study, study.nodes[r], folder, true));
+      if (!cli.options().quiet) std::cerr << "  done " << study.nodes[r] << " nodes\n";
+    }
+    AtomicFile table(folder + "/convergence.csv");
+    table.stream() << "nodes,h [m],dt [s],critical_dt [s],steps,relative_l2_u,order_u,relative_l2_v,order_v,"
+                      "max_relative_l2_u_over_time,wall_time [s]\n";
+    std::cout << std::right << std::setw(6) << "nodes" << std::setw(10) << "h" << std::setw(10) << "dt"
+              << std::setw(12) << "dt_crit" << std::setw(12) << "L2(u)" << std::setw(8) << "order" << std::setw(12)
+              << "L2(v)" << std::setw(8) << "order" << std::setw(12) << "max_t L2(u)" << '\n';
+    RunSummary summary;
+    summary.program = kProgram;
+    summary.scene = study.scene.info.name;
+    summary.method = study.scene.method.name;
+    summary.integrator = study.scene.integrator.name;
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      const CaseResult& r = results[i];
+      const auto order = [&](Real CaseResult::*field) {
+        return i > 0 ? std::log(results[i - 1].*field / r.*field) / std::log(results[i - 1].h / r.h) : std::nan("");
+      };
+      const Real ou = order(&CaseResult::errorU), ov = order(&CaseResult::errorV);
+      table.stream() << r.nodes << ',' << r.h << ',' << r.dt << ',' << r.criticalDt << ',' << r.steps << ','
+                     << r.errorU << ',' << ou << ',' << r.errorV << ',' << ov << ',' << r.maxErrorU << ','
+                     << r.wallSeconds << '\n';
+      std::cout << std::setw(6) << r.nodes << std::setw(10) << std::setprecision(4) << r.h << std::setw(10) << r.dt
+                << std::setw(12) << r.criticalDt << std::setw(12) << std::setprecision(3) << r.errorU << std::setw(8)
+                << ou << std::setw(12) << r.errorV << std::setw(8) << ov << std::setw(12) << r.maxErrorU << '\n';
+      summary.particles = std::max<Index>(summary.particles, r.nodes);
+      summary.steps += r.steps;
+      summary.wallSeconds += r.wallSeconds;
+    }
+    table.commit();
+    const CaseResult& finest = results.back();
+    summary.timeStep = finest.dt;
+    summary.errors.push_back({"relative_l2_u_finest", finest.errorU});
+    summary.errors.push_back({"relative_l2_v_finest", finest.errorV});
+    summary.errors.push_back({"max_relative_l2_u_over_time_finest", finest.maxErrorU});
+    summary.figures.push_back({"critical_dt_first", results.front().criticalDt});
+    if (results.size() > 1)
+      summary.figures.push_back({"observed_order_u", std::log(results[results.size() - 2].errorU / finest.errorU) /
+                                                         std::log(results[results.size() - 2].h / finest.h)});
+    summary.simulatedTime = study.scene.integrator.endTime;
+    summary.notes.push_back("particles: nodes of the finest case; steps and wall time summed over all cases");
+    summary.files = {"scene.resolved.toml", "convergence.csv", "nodes-N-errors.csv", "nodes-N-profile.csv",
+                     "summary.json"};
+    summary.finish();
+    summary.writeJson(folder + "/summary.json");
+    summary.print(std::cout);
+    return 0;
+  });
+}

@@ -1,0 +1,237 @@
+// plane2d: 2-D plane-strain elastodynamics on the unit square by RK collocation, against a
+// manufactured solution u_1 = u_2 = sin(pi x) sin(pi y) cos(w t) (zero displacement on every side)
+// with the body force f = rho u_tt - L u it needs. Refinement in h at a fixed a / h; central
+// difference on the constrained system at a fixed fraction of the critical step (power iteration
+// on K), or implicit Newmark. Results: docs/studies/rkcm.md.
+//
+//   plane2d --scene data/scenes/plane2d.toml [--set 'study.cells=[8,16]'] [--out DIR]
+
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "integrators/CentralDifference.hpp"
+#include "io/run/DriverCommandLine.hpp"
+#include "io/run/RunDriver.hpp"
+#include "io/run/RunSummary.hpp"
+#include "io/scene/LoadScene.hpp"
+#include "io/scene/Scene.hpp"
+#include "methods/collocation/CollocationNewmark.hpp"
+#include "methods/collocation/CollocationSystem.hpp"
+#include "methods/collocation/ConstrainedCollocationSystem.hpp"
+#include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
+#include "observers/StabilityMonitor.hpp"
+#include "observers/TimeLoop.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace mfwave;
+
+namespace {
+
+const char* kProgram = "plane2d";
+
+SceneSchema plane2dSchema() {
+  SceneSchema schema = SceneSchema::common();
+  schema.addChoice("method.name", "reproducing_kernel");
+  schema.add("method.order", ValueType::Integer).withUnit("-").defaultsTo("2").between(2, 3)
+      .describedAs("RK basis order m (collocation needs second derivatives: m >= 2)");
+  schema.add("method.support_ratio", ValueType::Number).withUnit("-").defaultsTo("3.3").positive()
+      .describedAs("cubic B-spline support radius a / h");
+  schema.add("study", ValueType::Table).describedAs("the convergence study of plane2d");
+  schema.add("study.cells", ValueType::NumberArray).withUnit("-").required()
+      .describedAs("resolutions: cells per side (h = side / cells); geometry.spacing is ignored");
+  schema.add("study.angular_frequency", ValueType::Number).withUnit("1/s").defaultsTo("6.283185307179586")
+      .positive().describedAs("w of the manufactured solution");
+  return schema;
+}
+
+struct Manufactured {
+  Material m;
+  Real w;
+  Real phi(const Vec2& x) const { return std::sin(M_PI * x[0]) * std::sin(M_PI * x[1]); }
+  Vec2 u(const Vec2& x, Real t) const { return Vec2::Constant(phi(x) * std::cos(w * t)); }
+  Vec2 v(const Vec2& x, Real t) const { return Vec2::Constant(-w * phi(x) * std::sin(w * t)); }
+  // f = rho u_tt - L u, L u_i = mu Lap u_i + (lambda + mu) d_i div u.
+  Vec2 f(const Vec2& x, Real t) const {
+    const Real p = phi(x), c = std::cos(M_PI * x[0]) * std::cos(M_PI * x[1]), pi2 = M_PI * M_PI;
+    const Real lu = m.mu() * (-2 * pi2 * p) + (m.lambda() + m.mu()) * (-pi2 * p + pi2 * c);
+    return Vec2::Constant((-m.density() * w * w * p - lu) * std::cos(w * t));
+  }
+};
+
+struct CaseResult {
+  int cells;
+  Real h, dt, criticalDt;
+  long steps;
+  Real errorU, errorV;
+  double wallSeconds;
+};
+
+// Largest |eigenvalue| of K by power iteration on a(U) = -K U (zero loads), a fixed start.
+Real spectralRadius(ConstrainedCollocationSystem& system) {
+  Vector x = Vector::LinSpaced(system.size(), 0.3, 1.7).array().sin(), y(system.size());
+  Real lambda = 0;
+  // a(U) = f/rho - K U with the body force f: K x = -(a(x) - a(0)) removes the load.
+  Vector a0(system.size()), zero = Vector::Zero(system.size());
+  system.acceleration(0, zero, zero, a0);
+  for (int it = 0; it < 400; ++it) {
+    system.acceleration(0, x, x, y);
+    y = -(y - a0);
+    const Real next = y.norm() / x.norm();
+    x = y / y.norm();
+    if (it > 20 && std::abs(next - lambda) < 1e-6 * next) {
+      lambda = next;
+      break;
+    }
+    lambda = next;
+  }
+  return lambda;
+}
+
+CaseResult runCase(const Scene& scene, int order, Real ratio, Real w, int cells) {
+  const Vec2 lo(scene.geometry.lower[0], scene.geometry.lower[1]);
+  const Real side = scene.geometry.upper[0] - lo[0];
+  if (std::abs(scene.geometry.upper[1] - lo[1] - side) > 1e-12 * side)
+    throw InputError("geometry.upper", "plane2d needs a square");
+  const Real h = side / cells;
+  const Material material = scene.material.material();
+  Manufactured exact{material, w};
+  Coordinates<2> nodes;
+  CollocationPoints<2> points;
+  for (int j = 0; j <= cells; ++j)
+    for (int i = 0; i <= cells; ++i) {
+      const Vec2 x(lo[0] + side * i / cells, lo[1] + side * j / cells);
+      nodes[0].push_back(x[0]);
+      nodes[1].push_back(x[1]);
+      const bool edge = i == 0 || j == 0 || i == cells || j == cells;
+      points.add(x, edge ? CollocationRowKind::Displacement : CollocationRowKind::Interior);
+    }
+  // The manufactured field lives on [0, 1]^2: points are mapped into it by (x - lower) / side.
+  const ReproducingKernelShapeFunctions<2> shapes(nodes, order, ratio * h);
+  CollocationLoads<2> loads;
+  loads.bodyForce = [&exact, lo, side](const Vec2& x, Real t) { return exact.f((x - lo) / side, t); };
+  ConstrainedCollocationSystem system(assembleCollocation<2>(shapes, points, material, loads));
+
+  const Real criticalDt = 2 / std::sqrt(spectralRadius(system));
+  const Real dt = scene.integrator.timeStepFor(criticalDt);
+  Vector U0(system.size()), V0(system.size());
+  for (Index r = 0; r < system.size(); r += 2) {
+    const Vec2 x = (points.points[static_cast<std::size_t>(system.interiorRows()[static_cast<std::size_t>(r)] / 2)] - lo) / side;
+    U0.segment<2>(r) = exact.u(x, 0);
+    V0.segment<2>(r) = exact.v(x, 0);
+  }
+  std::unique_ptr<SecondOrderIntegrator> integrator;
+  if (scene.integrator.name == "newmark" && scene.integrator.options.newmarkBeta > 0)
+    integrator = std::make_unique<CollocationNewmark>(scene.integrator.options.newmarkBeta,
+                                                      scene.integrator.options.newmarkGamma);
+  else
+    integrator = std::make_unique<CentralDifference>();
+  integrator->initialise(system, 0, U0, V0, dt);
+  StabilityMonitor monitor(scene.stability.options(2));
+  TimeLoop loop;
+  loop.add(monitor);
+  const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
+
+  // Relative L2 errors on a 4x finer uniform grid (trapezoidal weights).
+  const int n = 4 * cells;
+  std::vector<Vec2> grid;
+  std::vector<Real> weight;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      grid.emplace_back(lo[0] + side * i / n, lo[1] + side * j / n);
+      weight.push_back((i == 0 || i == n ? 0.5 : 1.0) * (j == 0 || j == n ? 0.5 : 1.0));
+    }
+  const StateView s = integrator->state();
+  const Vector u = evaluateCollocationField<2>(shapes, system.coefficients(s.displacement, s.time), grid);
+  const Vector v = evaluateCollocationField<2>(shapes, system.coefficientRates(s.velocity, s.time), grid);
+  Real eu = 0, nu = 0, ev = 0, nv = 0;
+  for (std::size_t p = 0; p < grid.size(); ++p) {
+    const Vec2 x = (grid[p] - lo) / side;
+    eu += weight[p] * (u.segment<2>(static_cast<Index>(p) * 2) - exact.u(x, s.time)).squaredNorm();
+    nu += weight[p] * exact.u(x, s.time).squaredNorm();
+    ev += weight[p] * (v.segment<2>(static_cast<Index>(p) * 2) - exact.v(x, s.time)).squaredNorm();
+    nv += weight[p] * exact.v(x, s.time).squaredNorm();
+  }
+  return {cells, h, dt, criticalDt, stats.steps, std::sqrt(eu / nu), std::sqrt(ev / nv), stats.wallSeconds};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const SceneSchema schema = plane2dSchema();
+  DriverCommandLine cli(kProgram, "plane2d: plane-strain RK collocation against a manufactured solution; order in h",
+                        schema.describe());
+  if (const auto exit = cli.parse(argc, argv)) return *exit;
+  return runDriver(kProgram, [&]() -> int {
+    SceneReader reader = loadScene(cli.options().scenePath, cli.options().overrides, schema);
+    const Scene scene = readScene(reader);
+    if (scene.info.dimension != 2) reader.fail("scene.dimension", "plane2d is a 2-D study");
+    if (scene.method.name != "reproducing_kernel") reader.fail("method.name", "plane2d uses reproducing_kernel");
+    if (scene.integrator.name != "central_difference" && scene.integrator.name != "newmark")
+      reader.fail("integrator.name", "plane2d runs central_difference or newmark");
+    if (!scene.loads.empty()) reader.fail("load", "plane2d sets its own body force");
+    const int order = static_cast<int>(reader.integer("method.order"));
+    const Real ratio = reader.number("method.support_ratio");
+    const Real w = reader.number("study.angular_frequency");
+    std::vector<int> cells;
+    for (Real c : reader.numbers("study.cells")) {
+      if (c != std::floor(c) || c < 4) reader.fail("study.cells", "each resolution must be a whole number >= 4");
+      cells.push_back(static_cast<int>(c));
+    }
+    reader.checkAllKeysRead();
+    const std::string folder = cli.options().outputFolder.empty() ? scene.output.folder : cli.options().outputFolder;
+    std::filesystem::create_directories(folder);
+    {
+      AtomicFile file(folder + "/scene.resolved.toml");
+      file.stream() << reader.resolvedToml();
+      file.commit();
+    }
+    std::vector<CaseResult> results;
+    for (int c : cells) {
+      results.push_back(runCase(scene, order, ratio, w, c));
+      if (!cli.options().quiet) std::cerr << "  done " << c << " cells\n";
+    }
+    AtomicFile table(folder + "/convergence.csv");
+    table.stream() << "cells,h [m],dt [s],critical_dt [s],steps,relative_l2_u,order_u,relative_l2_v,order_v,"
+                      "wall_time [s]\n";
+    std::cout << std::setw(6) << "cells" << std::setw(10) << "h" << std::setw(11) << "dt" << std::setw(12) << "L2(u)"
+              << std::setw(8) << "order" << std::setw(12) << "L2(v)" << std::setw(8) << "order" << '\n';
+    RunSummary summary;
+    summary.program = kProgram;
+    summary.scene = scene.info.name;
+    summary.method = scene.method.name;
+    summary.integrator = scene.integrator.name;
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      const CaseResult& r = results[i];
+      const Real lh = i > 0 ? std::log(results[i - 1].h / r.h) : 1;
+      const Real ou = i > 0 ? std::log(results[i - 1].errorU / r.errorU) / lh : std::nan("");
+      const Real ov = i > 0 ? std::log(results[i - 1].errorV / r.errorV) / lh : std::nan("");
+      table.stream() << r.cells << ',' << r.h << ',' << r.dt << ',' << r.criticalDt << ',' << r.steps << ','
+                     << r.errorU << ',' << ou << ',' << r.errorV << ',' << ov << ',' << r.wallSeconds << '\n';
+      std::cout << std::setw(6) << r.cells << std::setw(10) << std::setprecision(4) << r.h << std::setw(11) << r.dt
+                << std::setw(12) << std::setprecision(3) << r.errorU << std::setw(8) << ou << std::setw(12)
+                << r.errorV << std::setw(8) << ov << '\n';
+      summary.particles = std::max<Index>(summary.particles, (r.cells + 1) * (r.cells + 1));
+      summary.steps += r.steps;
+      summary.wallSeconds += r.wallSeconds;
+      if (i + 1 == results.size()) {
+        summary.timeStep = r.dt;
+        summary.errors.push_back({"relative_l2_u_finest", r.errorU});
+        summary.errors.push_back({"relative_l2_v_finest", r.errorV});
+        if (i > 0) summary.figures.push_back({"observed_order_u", ou});
+      }
+    }
+    table.commit();
+    summary.simulatedTime = scene.integrator.endTime;
+    summary.files = {"scene.resolved.toml", "convergence.csv", "summary.json"};
+    summary.finish();
+    summary.writeJson(folder + "/summary.json");
+    summary.print(std::cout);
+    return 0;
+  });
+}
