@@ -9,6 +9,7 @@
 //
 //   bar1d --scene data/scenes/bar1d.toml [--set 'study.nodes=[21,41,81]'] [--out DIR]
 
+#include "analysis/CollocationStability.hpp"
 #include "analytic/FixedFreeBarImpact.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
@@ -27,7 +28,6 @@
 #include "observers/TimeLoop.hpp"
 #include "observers/TimeSeries.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -151,21 +151,13 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
   const FixedFreeBarImpact exact(length, material.barSpeed(), study.v0);
 
   Coordinates<1> nodes;
-  CollocationPoints<1> points;
-  for (int i = 0; i < nodeCount; ++i) {
-    const Real x = x0 + length * i / (nodeCount - 1);
-    nodes[0].push_back(x);
-    points.add(Vec1(x), i == 0 ? CollocationRowKind::Displacement
-                               : i + 1 == nodeCount ? CollocationRowKind::Traction : CollocationRowKind::Interior,
-               Vec1(1.0));
-  }
+  for (int i = 0; i < nodeCount; ++i) nodes[0].push_back(x0 + length * i / (nodeCount - 1));
   const auto shapes = makeShapes(study, nodes, h);
-  ConstrainedCollocationSystem system(assembleCollocation<1>(*shapes, points, material));
+  ConstrainedCollocationSystem system(assembleCollocation<1>(*shapes, fixedFreeBarPoints(nodes), material));
 
   // Exact critical step of central difference: 2 / sqrt(max |eig K|); complex or negative
   // eigenvalues mean no step is stable (reported, the run then shows it).
-  const Eigen::VectorXcd eig = Eigen::EigenSolver<Eigen::MatrixXd>(system.denseStiffness(), false).eigenvalues();
-  const Real lambdaMax = eig.cwiseAbs().maxCoeff();
+  const Real lambdaMax = eigenvalueStability(system.denseStiffness()).largestModulus;
   const Real criticalDt = 2 / std::sqrt(lambdaMax);
   const Real dt = scene.integrator.timeStepFor(criticalDt);
 

@@ -1,5 +1,9 @@
 #include "analysis/CollocationStability.hpp"
 
+#include "core/Material.hpp"
+#include "methods/collocation/CollocationSystem.hpp"
+#include "methods/collocation/ConstrainedCollocationSystem.hpp"
+
 #include "core/Error.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "methods/collocation/ShapeFunctionMatrix.hpp"
@@ -156,23 +160,12 @@ Eigen::MatrixXd constrainedBarStiffness(const ShapeFunctions<1>& shapes, const B
   if (bar.nodes < 4) throw InputError("study.nodes", "the bar needs at least 4 nodes");
   if (shapes.nodeCount() != bar.nodes)
     throw InputError("study.nodes", "the shape functions must be built on the bar's nodes");
-  const Index n = bar.nodes, interior = n - 2;
-  const auto points = pointsOf<1>(uniformLine(n, bar.spacing()));
-  const Eigen::MatrixXd psi = denseShapeFunctionMatrix(shapes, points, ShapeDerivative::value());
-  const Eigen::MatrixXd dpsi = denseShapeFunctionMatrix(shapes, points, ShapeDerivative::gradient(0));
-  const Eigen::MatrixXd ddpsi = denseShapeFunctionMatrix(shapes, points, ShapeDerivative::hessian(0, 0));
-  Eigen::MatrixXd c(n, n);
-  c.topRows(interior) = psi.middleRows(1, interior);
-  c.row(interior) = psi.row(0);                          // u(0) = 0
-  c.row(interior + 1) = bar.modulus * dpsi.row(n - 1);   // E u_x(L) = 0
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(c);
-  if (!lu.isInvertible()) throw InputError("method", "the collocation matrix of the bar is singular");
-  // d = C^{-1} [U; 0; 0]: the first `interior` columns of C^{-1}.
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, interior);
-  rhs.topRows(interior).setIdentity();
-  const Eigen::MatrixXd dOfU = lu.solve(rhs);
-  const Real c2 = bar.modulus / bar.density;
-  return -c2 * (ddpsi.middleRows(1, interior) * dOfU);
+  // The bar's constrained system as the bar1d study assembles it: interior rows, u(0) = 0 and
+  // E u_x(L) = 0 as constraints (ConstrainedCollocationSystem::denseStiffness).
+  const Material material = Material::fromYoung(bar.modulus, 0, bar.density);
+  const Coordinates<1> nodes = uniformLine(bar.nodes, bar.spacing());
+  return ConstrainedCollocationSystem(assembleCollocation<1>(shapes, fixedFreeBarPoints(nodes), material))
+      .denseStiffness();
 }
 
 std::string EigenvalueStability::verdict() const {
@@ -195,6 +188,7 @@ EigenvalueStability eigenvalueStability(const Eigen::MatrixXd& stiffness, Real i
   const Eigen::VectorXcd lambda = solver.eigenvalues();
   EigenvalueStability r;
   const Real largest = lambda.cwiseAbs().maxCoeff();
+  r.largestModulus = largest;
   r.lambdaMax = -std::numeric_limits<Real>::infinity();
   r.lambdaMinReal = std::numeric_limits<Real>::infinity();
   for (Index i = 0; i < lambda.size(); ++i) {

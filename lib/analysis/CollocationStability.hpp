@@ -97,6 +97,7 @@ Eigen::MatrixXd constrainedBarStiffness(const ShapeFunctions<1>& shapes, const B
 struct EigenvalueStability {
   bool unconditionallyUnstable = false;
   Real lambdaMax = 0;        // largest real part
+  Real largestModulus = 0;   // max |lambda|
   Real lambdaMinReal = 0;    // smallest real part
   Real maxImaginaryRatio = 0;  // max |Im lambda| / max |lambda|
   Real growthRate = 0;       // max Im sqrt(lambda) [1/time]: e-folding rate of the unstable mode

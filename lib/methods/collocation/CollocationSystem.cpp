@@ -160,4 +160,15 @@ template Vector evaluateCollocationField<2>(const ShapeFunctions<2>&, const Vect
 template Vector evaluateCollocationField<3>(const ShapeFunctions<3>&, const Vector&, const std::vector<Vec<3>>&,
                                             int, int);
 
+CollocationPoints<1> fixedFreeBarPoints(const Coordinates<1>& nodes) {
+  const std::size_t n = nodes[0].size();
+  CollocationPoints<1> points;
+  for (std::size_t i = 0; i < n; ++i)
+    points.add(Vec1(nodes[0][i]),
+               i == 0 ? CollocationRowKind::Displacement
+                      : i + 1 == n ? CollocationRowKind::Traction : CollocationRowKind::Interior,
+               Vec1(1.0));
+  return points;
+}
+
 }  // namespace mfwave

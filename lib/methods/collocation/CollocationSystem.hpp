@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/Material.hpp"
+#include "particles/ParticleSet.hpp"
 #include "core/Types.hpp"
 #include "methods/collocation/ShapeFunctions.hpp"
 
@@ -44,6 +45,11 @@ struct CollocationPoints {
     normal.push_back(n);
   }
 };
+
+// The collocation points of a bar on the nodes x_0 < ... < x_{N-1} (Nc = Ns): a displacement row
+// at x_0 (u(x_0) = g), a traction row at x_{N-1} with outward normal +1 (E u_x = h), interior rows
+// between: the fixed-free bar of Luo-Liu-Huang's example.
+CollocationPoints<1> fixedFreeBarPoints(const Coordinates<1>& nodes);
 
 // Body force f(x, t), prescribed traction h(x, n, t), prescribed displacement g(x, t).
 // An empty function means zero.
