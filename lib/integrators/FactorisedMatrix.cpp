@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 
+#include <Eigen/SPQRSupport>
 #include <Eigen/UmfPackSupport>
 
 #include <cmath>
@@ -14,6 +15,12 @@ struct FactorisedMatrix::Sparse {
   // reference to it: the factorisation owns its copy, declared before the LU so it outlives it.
   SparseMatrix matrix;
   Eigen::UmfPackLU<SparseMatrix> lu;
+};
+
+struct FactorisedMatrix::LeastSquares {
+  // SPQR works with SuiteSparse_long indices; it keeps its own factors, not a reference.
+  using LongMatrix = Eigen::SparseMatrix<Real, Eigen::ColMajor, SuiteSparse_long>;
+  Eigen::SPQR<LongMatrix> qr;
 };
 
 FactorisedMatrix::FactorisedMatrix() = default;
@@ -33,13 +40,31 @@ bool isDiagonalMatrix(const SparseMatrix& m) {
 }  // namespace
 
 void FactorisedMatrix::factorise(const SparseMatrix& a, const std::string& what) {
-  if (a.rows() != a.cols())
-    throw Error(what + " is " + std::to_string(a.rows()) + " x " + std::to_string(a.cols()) + ", not square");
+  if (a.rows() < a.cols())
+    throw Error(what + " is " + std::to_string(a.rows()) + " x " + std::to_string(a.cols()) +
+                ": fewer rows than unknowns");
   what_ = what;
   size_ = -1;
+  rows_ = -1;
   sparse_.reset();
+  leastSquares_.reset();
   inverseDiagonal_.resize(0);
-  const Index n = a.rows();
+  const Index n = a.cols();
+
+  if (a.rows() > a.cols()) {
+    auto ls = std::make_unique<LeastSquares>();
+    LeastSquares::LongMatrix copy = a.cast<Real>();
+    copy.makeCompressed();
+    ls->qr.compute(copy);
+    if (ls->qr.info() != Eigen::Success) throw Error(what + " could not be factorised by SuiteSparseQR");
+    if (static_cast<Index>(ls->qr.rank()) < n)
+      throw Error(what + " is rank-deficient: rank " + std::to_string(ls->qr.rank()) + " for " + std::to_string(n) +
+                  " unknowns");
+    leastSquares_ = std::move(ls);
+    size_ = n;
+    rows_ = a.rows();
+    return;
+  }
 
   if (isDiagonalMatrix(a)) {
     // A diagonal matrix needs no factorisation: one reciprocal per row, exact and O(n).
@@ -49,34 +74,66 @@ void FactorisedMatrix::factorise(const SparseMatrix& a, const std::string& what)
         throw Error(what + " is singular: diagonal entry " + std::to_string(i) + " is " +
                     std::to_string(diagonal[i]));
     inverseDiagonal_ = diagonal.cwiseInverse();
-    size_ = n;
+    size_ = rows_ = n;
     return;
   }
 
   auto sparse = std::make_unique<Sparse>();
   sparse->matrix = a;
   sparse->matrix.makeCompressed();
+  // UMFPACK's automatic strategy picks its symmetric mode for matrices with a nearly symmetric
+  // pattern and then accepts diagonal pivots down to 1e-3 of the column maximum: collocation
+  // constraint matrices [Psi_I; B] have such patterns and such pivots, and the factors come out
+  // useless (residuals of 1e12 at 161 nodes). The unsymmetric strategy with full partial pivoting
+  // is robust for every matrix here and costs little for the banded ones.
+  sparse->lu.umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_UNSYMMETRIC;
+  sparse->lu.umfpackControl()(UMFPACK_PIVOT_TOLERANCE) = 1.0;
   sparse->lu.compute(sparse->matrix);
   if (sparse->lu.info() == Eigen::NumericalIssue)
     throw Error(what + " is singular: UMFPACK found a zero pivot (status " +
                 std::to_string(sparse->lu.umfpackFactorizeReturncode()) + ")");
   if (sparse->lu.info() != Eigen::Success)
     throw Error(what + " could not be factorised: UMFPACK rejected its structure");
+  // A factorisation that cannot reproduce a known solution is useless, whatever UMFPACK's status
+  // says: one test solve (cost: one solve) catches it here rather than as a blow-up later.
+  const Vector ones = Vector::Ones(n);
+  const Real testError = (Vector(sparse->lu.solve(Vector(sparse->matrix * ones))) - ones).norm() / ones.norm();
+  if (!(testError < 1e-6))
+    throw Error(what + " is too ill-conditioned to factorise reliably: a test solve is off by " +
+                std::to_string(testError) + " (relative)");
   sparse_ = std::move(sparse);
-  size_ = n;
+  size_ = rows_ = n;
+}
+
+void FactorisedMatrix::checkRightHandSide(Index rows) const {
+  if (!isFactorised()) throw Error("FactorisedMatrix::solve called before factorise");
+  if (rows != rows_)
+    throw Error(what_ + ": right-hand side has " + std::to_string(rows) + " rows, expected " + std::to_string(rows_));
 }
 
 void FactorisedMatrix::solve(const Vector& b, Vector& x) const {
-  if (!isFactorised()) throw Error("FactorisedMatrix::solve called before factorise");
-  if (b.size() != size_)
-    throw Error(what_ + ": right-hand side has size " + std::to_string(b.size()) + ", expected " +
-                std::to_string(size_));
-  if (!sparse_) {
+  checkRightHandSide(b.size());
+  if (leastSquares_) {
+    x = leastSquares_->qr.solve(b);
+  } else if (sparse_) {
+    x.resize(size_);
+    x = sparse_->lu.solve(b);
+  } else {
     x = inverseDiagonal_.cwiseProduct(b);
-    return;
   }
-  x.resize(size_);
-  x = sparse_->lu.solve(b);
+}
+
+Vector FactorisedMatrix::solve(const Vector& b) const {
+  Vector x;
+  solve(b, x);
+  return x;
+}
+
+Eigen::MatrixXd FactorisedMatrix::solve(const Eigen::MatrixXd& b) const {
+  checkRightHandSide(b.rows());
+  if (leastSquares_) return leastSquares_->qr.solve(b);
+  if (sparse_) return sparse_->lu.solve(b);
+  return inverseDiagonal_.asDiagonal() * b;
 }
 
 }  // namespace mfwave

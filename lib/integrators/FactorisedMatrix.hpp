@@ -1,8 +1,10 @@
 #pragma once
-// A square sparse matrix factorised once and solved many times: the effective matrix of an
-// implicit integrator (Newmark) and the mass matrix for the initial acceleration. A diagonal
-// matrix (lumped mass, beta = 0) is inverted entry by entry; anything else goes to UMFPACK's
-// sparse LU through Eigen::UmfPackLU. UMFPACK stays out of this header (pimpl).
+// A sparse matrix factorised once and solved many times: the effective matrix of an implicit
+// integrator (Newmark), the mass matrix for the initial acceleration, the constraint matrix of
+// strong-form collocation. A diagonal matrix (lumped mass, beta = 0) is inverted entry by entry;
+// another square matrix goes to UMFPACK's sparse LU (Eigen::UmfPackLU); a tall matrix (more
+// collocation rows than unknowns) is solved in the least-squares sense by SuiteSparseQR
+// (Eigen::SPQR). SuiteSparse stays out of this header (pimpl).
 
 #include "core/Types.hpp"
 
@@ -20,24 +22,35 @@ class FactorisedMatrix {
   FactorisedMatrix(const FactorisedMatrix&) = delete;
   FactorisedMatrix& operator=(const FactorisedMatrix&) = delete;
 
-  // Factorises `a` (square). `what` describes the matrix in error messages
-  // ("Newmark effective matrix M + gamma dt C + beta dt^2 K"). Throws mfwave::Error if `a` is
-  // singular (a zero or non-finite diagonal entry of a diagonal matrix; UMFPACK's singular warning).
+  // Factorises `a` (square, or tall: rows > columns). `what` describes the matrix in error
+  // messages ("Newmark effective matrix M + gamma dt C + beta dt^2 K"). Throws mfwave::Error if `a`
+  // is singular (a zero or non-finite diagonal entry of a diagonal matrix; UMFPACK's singular
+  // warning) or, when tall, rank-deficient.
   void factorise(const SparseMatrix& a, const std::string& what);
 
-  // x = A^{-1} b. b and x must be distinct vectors.
+  // x = A^{-1} b (square) or the least-squares solution of A x = b (tall). b and x must be
+  // distinct vectors.
   void solve(const Vector& b, Vector& x) const;
+  Vector solve(const Vector& b) const;
+  // The same for several right-hand sides (columns of b).
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
 
   bool isFactorised() const { return size_ >= 0; }
   bool isDiagonal() const { return inverseDiagonal_.size() > 0 || size_ == 0; }
-  Index size() const { return size_; }
+  bool isLeastSquares() const { return static_cast<bool>(leastSquares_); }
+  Index size() const { return size_; }   // columns: the size of x
+  Index rows() const { return rows_; }   // the size of b
 
  private:
   struct Sparse;
-  std::unique_ptr<Sparse> sparse_;  // UMFPACK factorisation (non-diagonal matrices only)
-  Vector inverseDiagonal_;           // diagonal matrices only
+  struct LeastSquares;
+  std::unique_ptr<Sparse> sparse_;              // UMFPACK factorisation (non-diagonal square)
+  std::unique_ptr<LeastSquares> leastSquares_;  // SPQR factorisation (tall)
+  Vector inverseDiagonal_;                      // diagonal matrices only
   Index size_ = -1;
+  Index rows_ = -1;
   std::string what_;
+  void checkRightHandSide(Index rows) const;
 };
 
 }  // namespace mfwave

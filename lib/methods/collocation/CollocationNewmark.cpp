@@ -1,18 +1,9 @@
 #include "methods/collocation/CollocationNewmark.hpp"
 
-#include <Eigen/OrderingMethods>
-#include <Eigen/SparseLU>
-#include <Eigen/SparseQR>
 
 #include "core/Error.hpp"
 
 namespace mfwave {
-
-struct CollocationNewmark::Solver {
-  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
-  Eigen::SparseQR<SparseMatrix, Eigen::COLAMDOrdering<int>> qr;
-  bool leastSquares = false;
-};
 
 CollocationNewmark::CollocationNewmark(Real beta, Real gamma) : beta_(beta), gamma_(gamma) {
   if (!(beta > 0 && beta <= 0.5))
@@ -33,18 +24,7 @@ void CollocationNewmark::initialise(SecondOrderSystem& system, Real t0, const Ve
   da_ = constrained_->coefficientAccelerations(u0, t0);
   const CollocationSystem& s = constrained_->system();
   const SparseMatrix effective = s.S + (beta_ * dt * dt) * s.A;
-  solver_ = std::make_unique<Solver>();
-  solver_->leastSquares = effective.rows() > effective.cols();
-  if (solver_->leastSquares) {
-    solver_->qr.compute(effective);
-    if (solver_->qr.info() != Eigen::Success || solver_->qr.rank() < effective.cols())
-      throw Error("collocation Newmark: S + beta dt^2 A is rank-deficient");
-  } else {
-    solver_->lu.analyzePattern(effective);
-    solver_->lu.factorize(effective);
-    if (solver_->lu.info() != Eigen::Success)
-      throw Error("collocation Newmark: S + beta dt^2 A is singular: " + solver_->lu.lastErrorMessage());
-  }
+  solver_.factorise(effective, "collocation Newmark: S + beta dt^2 A");
   u_ = constrained_->interiorValues(d_);
   v_ = constrained_->interiorValues(dv_);
   a_ = constrained_->interiorValues(da_);
@@ -58,7 +38,7 @@ void CollocationNewmark::step() {
   advanceClock();
   rhs_ = s.rhs(time_);
   rhs_.noalias() -= s.A * dPredict_;
-  da_ = solver_->leastSquares ? Vector(solver_->qr.solve(rhs_)) : Vector(solver_->lu.solve(rhs_));
+  solver_.solve(rhs_, da_);
   d_ = dPredict_ + (beta_ * dt_ * dt_) * da_;
   dv_ = vPredict_ + (gamma_ * dt_) * da_;
   u_ = constrained_->interiorValues(d_);

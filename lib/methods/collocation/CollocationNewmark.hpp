@@ -18,6 +18,7 @@
 
 #include <memory>
 
+#include "integrators/FactorisedMatrix.hpp"
 #include "integrators/FixedStepSecondOrderIntegrator.hpp"
 #include "methods/collocation/ConstrainedCollocationSystem.hpp"
 
@@ -43,10 +44,9 @@ class CollocationNewmark : public FixedStepSecondOrderIntegrator {
   const Vector& coefficientAccelerations() const { return da_; }
 
  private:
-  struct Solver;
   Real beta_, gamma_;
   ConstrainedCollocationSystem* constrained_ = nullptr;
-  std::unique_ptr<Solver> solver_;
+  FactorisedMatrix solver_;  // S + beta dt^2 A, factorised once (least squares when Nc > Ns)
   Vector d_, dv_, da_, dPredict_, vPredict_, rhs_;
 };
 

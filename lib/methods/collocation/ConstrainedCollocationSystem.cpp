@@ -1,8 +1,5 @@
 #include "methods/collocation/ConstrainedCollocationSystem.hpp"
 
-#include <Eigen/OrderingMethods>
-#include <Eigen/SparseLU>
-#include <Eigen/SparseQR>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -10,18 +7,6 @@
 #include "core/Error.hpp"
 
 namespace mfwave {
-
-struct ConstrainedCollocationSystem::Solver {
-  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
-  Eigen::SparseQR<SparseMatrix, Eigen::COLAMDOrdering<int>> qr;
-  bool leastSquares = false;
-
-  template <typename Rhs>
-  auto solve(const Rhs& rhs) const {
-    using Result = typename Rhs::PlainObject;
-    return leastSquares ? Result(qr.solve(rhs)) : Result(lu.solve(rhs));
-  }
-};
 
 namespace {
 
@@ -46,7 +31,7 @@ SparseMatrix selectRows(const SparseMatrix& m, const std::vector<Index>& rows) {
 ConstrainedCollocationSystem::~ConstrainedCollocationSystem() = default;
 
 ConstrainedCollocationSystem::ConstrainedCollocationSystem(CollocationSystem system)
-    : system_(std::move(system)), solver_(std::make_unique<Solver>()) {
+    : system_(std::move(system)) {
   for (Index r = 0; r < system_.rows(); ++r)
     (system_.rowKind[static_cast<std::size_t>(r)] == CollocationRowKind::Interior ? interiorRows_ : boundaryRows_)
         .push_back(r);
@@ -67,17 +52,8 @@ ConstrainedCollocationSystem::ConstrainedCollocationSystem(CollocationSystem sys
   constraint_.setFromTriplets(t.begin(), t.end());
   constraint_.makeCompressed();
 
-  solver_->leastSquares = isLeastSquares();
-  if (solver_->leastSquares) {
-    solver_->qr.compute(constraint_);
-    if (solver_->qr.info() != Eigen::Success || solver_->qr.rank() < constraint_.cols())
-      throw Error("collocation constraint matrix [Psi_I; B] is rank-deficient (least squares)");
-  } else {
-    solver_->lu.analyzePattern(constraint_);
-    solver_->lu.factorize(constraint_);
-    if (solver_->lu.info() != Eigen::Success)
-      throw Error("collocation constraint matrix [Psi_I; B] is singular: " + solver_->lu.lastErrorMessage());
-  }
+  solver_.factorise(constraint_, std::string("collocation constraint matrix [Psi_I; B]") +
+                                     (isLeastSquares() ? " (least squares)" : ""));
 }
 
 Vector ConstrainedCollocationSystem::boundaryData(Real t) const {
@@ -101,7 +77,7 @@ Vector ConstrainedCollocationSystem::solveConstraint(const Vector& top, const Ve
                                                std::to_string(boundaryRows_.size()) + " boundary values");
   Vector rhs(constraint_.rows());
   rhs << top, bottom;
-  return solver_->solve(rhs);
+  return solver_.solve(rhs);
 }
 
 Vector ConstrainedCollocationSystem::coefficients(const Vector& U, Real t) const {
@@ -129,7 +105,7 @@ void ConstrainedCollocationSystem::acceleration(Real t, Eigen::Ref<const Vector>
   } else {
     rhs_.tail(static_cast<Index>(boundaryRows_.size())).setZero();
   }
-  d_ = solver_->solve(rhs_);
+  d_ = solver_.solve(rhs_);
   a.noalias() = aInterior_ * d_;
   if (system_.load)
     for (Index r = 0; r < nI; ++r) a[r] = b_[interiorRows_[static_cast<std::size_t>(r)]] - a[r];
@@ -142,7 +118,7 @@ Eigen::MatrixXd ConstrainedCollocationSystem::denseStiffness() const {
   const Index nI = size();
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(constraint_.rows(), nI);
   rhs.topRows(nI).setIdentity();
-  const Eigen::MatrixXd x = solver_->solve(rhs);
+  const Eigen::MatrixXd x = solver_.solve(rhs);
   return (aInterior_ * x) / system_.density;
 }
 

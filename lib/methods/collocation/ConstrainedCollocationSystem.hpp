@@ -17,8 +17,8 @@
 // For zero loads and zero boundary data a = -K U with K = (1/rho) A_I C^{-1} [I; 0]: the matrix
 // G-bar of the von Neumann analysis (Luo-Liu-Huang eq. (37), up to the sign and c^2).
 //
-// Nc = Ns (C square): sparse LU (Eigen::SparseLU, COLAMD ordering). Nc > Ns (C tall): d is the
-// least-squares solution of C d = [U; b_B] (Eigen::SparseQR, i.e. C^+ [U; b_B], the pseudo-inverse
+// Nc = Ns (C square): sparse LU (UMFPACK). Nc > Ns (C tall): d is the
+// least-squares solution of C d = [U; b_B] (SuiteSparseQR, i.e. C^+ [U; b_B], the pseudo-inverse
 // Luo-Liu-Huang name for M^{-1} when Nc > Ns); then U = Psi_I d holds only in the least-squares
 // sense, and coefficients(U) followed by interiorValues(d) does not return U exactly.
 
@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "methods/collocation/CollocationSystem.hpp"
+#include "integrators/FactorisedMatrix.hpp"
 #include "systems/SecondOrderSystem.hpp"
 
 namespace mfwave {
@@ -74,13 +75,12 @@ class ConstrainedCollocationSystem : public SecondOrderSystem {
   bool isLeastSquares() const { return constraint_.rows() > constraint_.cols(); }
 
  private:
-  struct Solver;
   Vector loadRate(Real t, int order) const;  // b_B^(order)(t) by central differences
 
   CollocationSystem system_;
   std::vector<Index> interiorRows_, boundaryRows_;
   SparseMatrix psiInterior_, aInterior_, constraint_;
-  std::unique_ptr<Solver> solver_;
+  FactorisedMatrix solver_;  // C = [Psi_I; B]: sparse LU, or least squares when Nc > Ns
   Vector b_, d_, rhs_;
 };
 

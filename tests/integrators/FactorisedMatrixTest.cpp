@@ -1,0 +1,72 @@
+#include "core/Error.hpp"
+#include "integrators/FactorisedMatrix.hpp"
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+using namespace mfwave;
+
+namespace {
+
+SparseMatrix sparseOf(const Eigen::MatrixXd& dense) { return dense.sparseView(); }
+
+}  // namespace
+
+TEST(FactorisedMatrix, DiagonalSquareAndTallMatricesSolve) {
+  FactorisedMatrix diagonal;
+  diagonal.factorise(sparseOf(Eigen::Vector3d(2, 4, 8).asDiagonal()), "diagonal");
+  EXPECT_TRUE(diagonal.isDiagonal());
+  EXPECT_TRUE(diagonal.solve(Vector(Eigen::Vector3d(2, 4, 8))).isApprox(Vector::Ones(3), 1e-15));
+
+  Eigen::MatrixXd square(3, 3);
+  square << 4, 1, 0, 1, 3, 1, 0, 1, 2;
+  FactorisedMatrix lu;
+  lu.factorise(sparseOf(square), "square");
+  const Vector x(Eigen::Vector3d(1, -2, 3));
+  EXPECT_LT((lu.solve(Vector(square * x)) - x).norm(), 1e-13);
+  EXPECT_LT((lu.solve(Eigen::MatrixXd(square * Eigen::MatrixXd::Identity(3, 3))) - Eigen::MatrixXd::Identity(3, 3)).norm(),
+            1e-13);
+
+  // Tall: 4 equations, 2 unknowns; the least-squares solution of the normal equations.
+  Eigen::MatrixXd tall(4, 2);
+  tall << 1, 0, 0, 1, 1, 1, 1, -1;
+  const Vector b(Eigen::Vector4d(1, 2, 4, 0));
+  FactorisedMatrix qr;
+  qr.factorise(sparseOf(tall), "tall");
+  EXPECT_TRUE(qr.isLeastSquares());
+  EXPECT_EQ(qr.rows(), 4);
+  EXPECT_EQ(qr.size(), 2);
+  const Vector expected = (tall.transpose() * tall).ldlt().solve(tall.transpose() * b);
+  EXPECT_LT((qr.solve(b) - expected).norm(), 1e-13);
+}
+
+TEST(FactorisedMatrix, SingularAndRankDeficientMatricesAreNamed) {
+  Eigen::MatrixXd singular(2, 2);
+  singular << 1, 2, 2, 4;
+  FactorisedMatrix lu;
+  try {
+    lu.factorise(sparseOf(singular), "the test matrix");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("the test matrix"), std::string::npos) << e.what();
+  }
+  Eigen::MatrixXd tall(3, 2);
+  tall << 1, 2, 2, 4, 3, 6;  // rank 1
+  FactorisedMatrix qr;
+  EXPECT_THROW(qr.factorise(sparseOf(tall), "tall"), Error);
+  Eigen::MatrixXd wide(2, 3);
+  wide << 1, 0, 0, 0, 1, 0;
+  EXPECT_THROW(qr.factorise(sparseOf(wide), "wide"), Error);
+  // Nearly singular (condition ~ 1e16): the factorisation cannot be trusted and says so.
+  Eigen::MatrixXd nearly(2, 2);
+  nearly << 1, 1, 1, 1 + 1e-15;
+  FactorisedMatrix bad;
+  try {
+    bad.factorise(sparseOf(nearly), "the nearly singular matrix");
+    FAIL() << "accepted a matrix it cannot solve";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("the nearly singular matrix"), std::string::npos) << e.what();
+  }
+  FactorisedMatrix fresh;
+  EXPECT_THROW(fresh.solve(Vector(Vector::Ones(2))), Error);
+}
