@@ -13,6 +13,7 @@
 #include "core/AtomicFile.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
+#include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "methods/collocation/RadialBasisShapeFunctions.hpp"
@@ -67,8 +68,7 @@ int main(int argc, char** argv) {
 
   return runDriver(kProgram, [&]() -> int {
     const auto& opt = cli.options();
-    SceneReader reader = opt.scenePath.empty() ? parseScene("", "(defaults)", opt.overrides, schema)
-                                               : loadScene(opt.scenePath, opt.overrides, schema);
+    SceneReader reader = loadDriverScene(opt, schema);
     const Real h = reader.number("study.spacing");
     std::vector<int> orders;
     for (Real m : reader.numbers("study.orders")) {
@@ -80,14 +80,8 @@ int main(int argc, char** argv) {
     const Index rkLine = reader.integer("study.rk_line_nodes"), rbLine = reader.integer("study.rb_line_nodes");
     const int points = static_cast<int>(reader.integer("study.points"));
     const std::string sceneFolder = reader.string("output.folder");  // read always: --out overrides it
-    const std::string folder = opt.outputFolder.empty() ? sceneFolder : opt.outputFolder;
     reader.checkAllKeysRead();
-    std::filesystem::create_directories(folder);
-    {
-      AtomicFile file(folder + "/scene.resolved.toml");
-      file.stream() << reader.resolvedToml();
-      file.commit();
-    }
+    const std::string folder = prepareOutputFolder(opt, sceneFolder, reader);
     const auto wallStart = std::chrono::steady_clock::now();
 
     AtomicFile table(folder + "/dispersion.csv");

@@ -15,6 +15,7 @@
 #include "core/Error.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
+#include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "methods/collocation/RadialBasisShapeFunctions.hpp"
@@ -123,8 +124,7 @@ int main(int argc, char** argv) {
 
   return runDriver(kProgram, [&]() -> int {
     const auto& opt = cli.options();
-    SceneReader reader = opt.scenePath.empty() ? parseScene("", "(defaults)", opt.overrides, schema)
-                                               : loadScene(opt.scenePath, opt.overrides, schema);
+    SceneReader reader = loadDriverScene(opt, schema);
     BarProblem bar;
     bar.length = reader.number("study.length");
     bar.nodes = reader.integer("study.nodes");
@@ -141,14 +141,8 @@ int main(int argc, char** argv) {
     const auto rkPublished = readReference(reader.string("study.rk_reference"), "study.rk_reference");
     const auto rbPublished = readReference(reader.string("study.rb_reference"), "study.rb_reference");
     const std::string sceneFolder = reader.string("output.folder");  // read always: --out overrides it
-    const std::string folder = opt.outputFolder.empty() ? sceneFolder : opt.outputFolder;
     reader.checkAllKeysRead();
-    std::filesystem::create_directories(folder);
-    {
-      AtomicFile file(folder + "/scene.resolved.toml");
-      file.stream() << reader.resolvedToml();
-      file.commit();
-    }
+    const std::string folder = prepareOutputFolder(opt, sceneFolder, reader);
     const auto wallStart = std::chrono::steady_clock::now();
     const Real h = bar.spacing(), c = bar.waveSpeed();
     const Coordinates<1> barNodes = uniformLine(bar.nodes, h);

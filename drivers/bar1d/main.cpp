@@ -15,6 +15,7 @@
 #include "core/Error.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
+#include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
@@ -243,17 +244,10 @@ int main(int argc, char** argv) {
   if (const auto exit = cli.parse(argc, argv)) return *exit;
 
   return runDriver(kProgram, [&]() -> int {
-    SceneReader reader = loadScene(cli.options().scenePath, cli.options().overrides, schema);
+    SceneReader reader = loadDriverScene(cli.options(), schema);
     const Study study = readStudy(reader);
     reader.checkAllKeysRead();
-    const std::string folder =
-        cli.options().outputFolder.empty() ? study.scene.output.folder : cli.options().outputFolder;
-    std::filesystem::create_directories(folder);
-    {
-      AtomicFile file(folder + "/scene.resolved.toml");
-      file.stream() << reader.resolvedToml();
-      file.commit();
-    }
+    const std::string folder = prepareOutputFolder(cli.options(), study.scene.output.folder, reader);
     std::vector<CaseResult> results;
     for (std::size_t r = 0; r < study.nodes.size(); ++r) {
       results.push_back(runCase(study, study.nodes[r], folder, true));

@@ -11,6 +11,7 @@
 #include "integrators/CentralDifference.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
+#include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
@@ -168,7 +169,7 @@ int main(int argc, char** argv) {
                         schema.describe());
   if (const auto exit = cli.parse(argc, argv)) return *exit;
   return runDriver(kProgram, [&]() -> int {
-    SceneReader reader = loadScene(cli.options().scenePath, cli.options().overrides, schema);
+    SceneReader reader = loadDriverScene(cli.options(), schema);
     const Scene scene = readScene(reader);
     if (scene.info.dimension != 2) reader.fail("scene.dimension", "plane2d is a 2-D study");
     if (scene.method.name != "reproducing_kernel") reader.fail("method.name", "plane2d uses reproducing_kernel");
@@ -184,13 +185,7 @@ int main(int argc, char** argv) {
       cells.push_back(static_cast<int>(c));
     }
     reader.checkAllKeysRead();
-    const std::string folder = cli.options().outputFolder.empty() ? scene.output.folder : cli.options().outputFolder;
-    std::filesystem::create_directories(folder);
-    {
-      AtomicFile file(folder + "/scene.resolved.toml");
-      file.stream() << reader.resolvedToml();
-      file.commit();
-    }
+    const std::string folder = prepareOutputFolder(cli.options(), scene.output.folder, reader);
     std::vector<CaseResult> results;
     for (int c : cells) {
       results.push_back(runCase(scene, order, ratio, w, c));

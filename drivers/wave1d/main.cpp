@@ -14,6 +14,7 @@
 #include "integrators/IntegratorFactory.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
+#include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
@@ -158,17 +159,10 @@ int main(int argc, char** argv) {
   if (const auto exit = cli.parse(argc, argv)) return *exit;
 
   return runDriver(kProgram, [&]() -> int {
-    SceneReader reader = loadScene(cli.options().scenePath, cli.options().overrides, schema);
+    SceneReader reader = loadDriverScene(cli.options(), schema);
     const Study study = readStudy(reader);
     reader.checkAllKeysRead();  // unknown keys: before any work
-    const std::string folder =
-        cli.options().outputFolder.empty() ? study.scene.output.folder : cli.options().outputFolder;
-    std::filesystem::create_directories(folder);
-    {
-      AtomicFile file(folder + "/scene.resolved.toml");
-      file.stream() << reader.resolvedToml();
-      file.commit();
-    }
+    const std::string folder = prepareOutputFolder(cli.options(), study.scene.output.folder, reader);
 
     std::vector<CaseResult> results;
     for (const auto& name : study.integrators)

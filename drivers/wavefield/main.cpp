@@ -12,6 +12,7 @@
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/ProgressReporter.hpp"
 #include "io/run/RunDriver.hpp"
+#include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/scene/BuildParticles.hpp"
 #include "io/scene/LoadScene.hpp"
@@ -67,7 +68,7 @@ Index nearestParticle(const ParticleSet<D>& particles, const std::vector<Real>& 
 }
 
 template <int D>
-int run(const Scene& scene, const std::string& folder, const DriverOptions& cli, const std::string& resolvedScene) {
+int run(const Scene& scene, const std::string& folder, const DriverOptions& cli) {
   RunSummary summary;
   summary.program = kProgram;
   summary.scene = scene.info.name;
@@ -141,11 +142,6 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli,
     loop.add(*images, scene.output.every);
   }
 
-  {
-    AtomicFile file(folder + "/scene.resolved.toml");
-    file.stream() << resolvedScene;
-    file.commit();
-  }
   const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
 
   // outputs and summary
@@ -191,20 +187,19 @@ int main(int argc, char** argv) {
   if (const auto exit = cli.parse(argc, argv)) return *exit;
 
   return runDriver(kProgram, [&]() -> int {
-    SceneReader reader = loadScene(cli.options().scenePath, cli.options().overrides, schema);
+    SceneReader reader = loadDriverScene(cli.options(), schema);
     const Scene scene = readScene(reader);
     reader.checkAllKeysRead();  // unknown keys: before any work
     if (scene.method.name != "finite_difference")
       throw InputError("method.name", "wavefield runs the finite_difference method only");
-    const std::string folder = cli.options().outputFolder.empty() ? scene.output.folder : cli.options().outputFolder;
-    std::filesystem::create_directories(folder);
+    const std::string folder = prepareOutputFolder(cli.options(), scene.output.folder, reader);
     switch (scene.geometry.dimension) {
       case 1:
-        return run<1>(scene, folder, cli.options(), reader.resolvedToml());
+        return run<1>(scene, folder, cli.options());
       case 2:
-        return run<2>(scene, folder, cli.options(), reader.resolvedToml());
+        return run<2>(scene, folder, cli.options());
       default:
-        return run<3>(scene, folder, cli.options(), reader.resolvedToml());
+        return run<3>(scene, folder, cli.options());
     }
   });
 }

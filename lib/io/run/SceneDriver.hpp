@@ -1,0 +1,25 @@
+#pragma once
+// The start every scene-driven program shares, in the order a driver calls it:
+//   SceneReader reader = loadDriverScene(cli.options(), schema);   // scene + --set overrides
+//   ... read the scene and the driver's own keys; reader.checkAllKeysRead() ...
+//   const std::string folder = prepareOutputFolder(cli.options(), sceneFolder, reader);
+// so every driver and tool resolves its scene and output folder alike.
+
+#include "io/run/DriverCommandLine.hpp"
+#include "io/scene/SceneReader.hpp"
+
+#include <string>
+
+namespace mfwave {
+
+// The scene named by --scene with the --set overrides applied; for a tool whose scene is optional
+// (no --scene given), the schema's defaults with the overrides.
+SceneReader loadDriverScene(const DriverOptions& options, const SceneSchema& schema);
+
+// --out when given, else `sceneFolder` (the scene's output.folder); created if missing, and the
+// resolved scene (every key with the value used) written into it as scene.resolved.toml, so the
+// run can be repeated exactly. Returns the folder.
+std::string prepareOutputFolder(const DriverOptions& options, const std::string& sceneFolder,
+                                const SceneReader& reader);
+
+}  // namespace mfwave
