@@ -16,14 +16,6 @@ using namespace mfwave::vtktest;
 
 namespace {
 
-vtkSmartPointer<vtkPolyData> readVtp(const fs::path& path) {
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(path.string().c_str());
-  reader->Update();
-  vtkSmartPointer<vtkPolyData> data = reader->GetOutput();
-  return data;
-}
-
 // u_dof = step * (dof + 1), v_dof = -dof * step / 2: every frame's values are known exactly.
 void script(long step, Vector& u, Vector& v) {
   for (Index k = 0; k < u.size(); ++k) {

@@ -4,6 +4,11 @@
 
 #include "support/ScriptedIntegrator.hpp"
 
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLPolyDataReader.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -57,6 +62,15 @@ inline std::vector<std::string> filesIn(const fs::path& dir) {
   for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
+}
+
+// A .vtp file read back with VTK's own reader.
+inline vtkSmartPointer<vtkPolyData> readVtp(const fs::path& path) {
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(path.string().c_str());
+  reader->Update();
+  vtkSmartPointer<vtkPolyData> data = reader->GetOutput();
+  return data;
 }
 
 using ScriptIntegrator = mfwave::testing::ScriptedIntegrator;

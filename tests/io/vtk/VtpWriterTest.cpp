@@ -17,14 +17,6 @@ using namespace mfwave::vtktest;
 
 namespace {
 
-vtkSmartPointer<vtkPolyData> readVtp(const fs::path& path) {
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(path.string().c_str());
-  reader->Update();
-  vtkSmartPointer<vtkPolyData> data = reader->GetOutput();
-  return data;
-}
-
 // Every point is a vertex cell of its own, in order, so ParaView shows each particle.
 void expectOneVertexPerPoint(vtkPolyData& data) {
   const vtkIdType n = data.GetNumberOfPoints();
