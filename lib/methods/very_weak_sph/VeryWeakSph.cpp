@@ -1,0 +1,52 @@
+#include "methods/very_weak_sph/VeryWeakSph.hpp"
+
+#include "methods/very_weak_sph/KernelCorrection.hpp"
+#include "methods/very_weak_sph/StatisticalVolume.hpp"
+#include "methods/very_weak_sph/TractionLoad.hpp"
+#include "methods/very_weak_sph/VeryWeakOperator.hpp"
+
+#include <utility>
+
+namespace mfwave {
+
+template <int D>
+VeryWeakSph<D> assembleVeryWeakSph(const ParticleSet<D>& particles, const NeighbourList& neighbours,
+                                   const Kernel& kernel, const VeryWeakSphOptions& options) {
+  checkVeryWeakInputs(particles, neighbours, kernel);
+  const Index n = particles.physicalCount();
+  VeryWeakSphData<D> data;
+  data.surfaceScale = surfaceScale(kernel);
+  data.volumeFraction = volumeFractions(particles, options.boundaryVolumeCorrection);
+  data.shepardSum = shepardSums(particles, neighbours, kernel);
+  data.volume.resize(data.shepardSum.size());
+  for (std::size_t a = 0; a < data.volume.size(); ++a)
+    data.volume[a] = data.volumeFraction[a] / data.shepardSum[a];  // eq. (25)
+  data.alpha = kernelCorrectionFactors(particles, neighbours, kernel, data.volume, options.boundaryKernelCorrection);
+  data.facets = boundaryFacets(particles, neighbours, kernel, options.boundaryAreaCorrection);
+  const Material& material = options.material;
+  data.operatorMatrix = assembleVeryWeakOperator(particles, neighbours, kernel, material.lambda(), material.mu(),
+                                                 data.volume, data.facets, options.boundaryIntegral);
+  data.tractionMatrix = assembleTractionMatrix(particles, neighbours, kernel, data.facets);
+
+  // Eq. (23) with eqs. (28)-(29): (rho / alpha_a) u''_a = (K u + f)_a.
+  const int dofs = static_cast<int>(D * n);
+  SparseMatrix mass(dofs, dofs);
+  mass.reserve(Eigen::VectorXi::Constant(dofs, 1));
+  for (Index a = 0; a < n; ++a)
+    for (int i = 0; i < D; ++i)
+      mass.insert(static_cast<int>(D * a + i), static_cast<int>(D * a + i)) =
+          material.density() / data.alpha[static_cast<std::size_t>(a)];
+  mass.makeCompressed();
+  SparseMatrix stiffness = -data.operatorMatrix;
+  LinearSecondOrderSystem system(std::move(mass), SparseMatrix(), std::move(stiffness));
+  return VeryWeakSph<D>{std::move(data), std::move(system)};
+}
+
+template VeryWeakSph<1> assembleVeryWeakSph<1>(const ParticleSet<1>&, const NeighbourList&, const Kernel&,
+                                               const VeryWeakSphOptions&);
+template VeryWeakSph<2> assembleVeryWeakSph<2>(const ParticleSet<2>&, const NeighbourList&, const Kernel&,
+                                               const VeryWeakSphOptions&);
+template VeryWeakSph<3> assembleVeryWeakSph<3>(const ParticleSet<3>&, const NeighbourList&, const Kernel&,
+                                               const VeryWeakSphOptions&);
+
+}  // namespace mfwave

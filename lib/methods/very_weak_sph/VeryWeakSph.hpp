@@ -1,0 +1,47 @@
+#pragma once
+// The very weak form SPH of Ding-Long-Wu as published, as a method of the pipeline: particles
+// (physical, optionally followed by ghost layers) and neighbours in, a LinearSecondOrderSystem
+//   M u'' + K_sys u = f,  M = diag(rho / alpha_a),  K_sys = -K  (K of eqs. (21)-(22))
+// out, with the method data for diagnostics. Eq. (23) reads rho u'' = K u + f; multiplying row a
+// by alpha_a (eqs. (28)-(29)) is the lumped mass rho / alpha_a.
+//
+// Not here yet: transmitting boundaries (eqs. (31)-(32)), displacement boundary conditions
+// (eq. (30)), conservative smoothing (eq. (33)), deconvolution (eq. (35)).
+
+#include "core/Types.hpp"
+#include "kernels/Kernel.hpp"
+#include "methods/very_weak_sph/BoundaryFacets.hpp"
+#include "methods/very_weak_sph/VeryWeakSphOptions.hpp"
+#include "neighbours/NeighbourList.hpp"
+#include "particles/ParticleSet.hpp"
+#include "systems/LinearSecondOrderSystem.hpp"
+
+#include <vector>
+
+namespace mfwave {
+
+template <int D>
+struct VeryWeakSphData {
+  Real surfaceScale = 0;              // S of eq. (20)
+  std::vector<Real> volumeFraction;   // FV_a, eq. (24)
+  std::vector<Real> shepardSum;       // sum_{b in M_a} W_ab (ghosts included)
+  std::vector<Real> volume;           // V_a, eq. (25)
+  std::vector<Real> alpha;            // alpha_a, eq. (29) (1 with the correction off)
+  BoundaryFacets<D> facets;           // normals and areas A, eq. (27)
+  SparseMatrix operatorMatrix;        // K: rho u'' = K u + f (eq. (23), before alpha)
+  SparseMatrix tractionMatrix;        // T: f = T t for facet tractions t (eq. (19))
+};
+
+template <int D>
+struct VeryWeakSph {
+  VeryWeakSphData<D> data;
+  LinearSecondOrderSystem system;     // f = 0; attach loads with system.setForce
+};
+
+// Throws InputError("dimension") when the kernel is not D-dimensional, InputError("neighbours")
+// when the list lacks rows for physical particles.
+template <int D>
+VeryWeakSph<D> assembleVeryWeakSph(const ParticleSet<D>& particles, const NeighbourList& neighbours,
+                                   const Kernel& kernel, const VeryWeakSphOptions& options);
+
+}  // namespace mfwave

@@ -1,0 +1,25 @@
+#pragma once
+// Options of the very weak form SPH (Ding-Long-Wu). Every boundary correction of the paper can be
+// switched off on its own, so that its effect on volumes, areas, operator and runs can be measured.
+
+#include "core/Material.hpp"
+
+namespace mfwave {
+
+struct VeryWeakSphOptions {
+  // Lame constants and density of eq. (5), (15), (23).
+  Material material = Material::fromLame(1, 1, 1);
+  // FV_a of eqs. (24)-(25): V_a = FV_a / sum_b W_ab with FV = 1, 1/2, 1/4, 1/8 for interior, face,
+  // edge, corner particles (from the face mask). Off: FV = 1, the plain Shepard volume of eq. (4).
+  bool boundaryVolumeCorrection = true;
+  // FA_a of eqs. (26)-(27): A = FA / (S sum_{M^Y} W) with FA = 1 on a face, 1/2 per facet at an
+  // edge, 1/4 per facet at a corner (in d dimensions 2^{1-m} for m faces). Off: FA = 1, eq. (20).
+  bool boundaryAreaCorrection = true;
+  // alpha_a of eqs. (28)-(29), alpha_a = 1 / sum_b W_ab V_b, applied to the whole row a, i.e. as a
+  // lumped mass rho / alpha_a. Off: alpha = 1.
+  bool boundaryKernelCorrection = true;
+  // The boundary integral of eq. (22) (Gamma terms). Off: only the interior sum of eq. (21).
+  bool boundaryIntegral = true;
+};
+
+}  // namespace mfwave
