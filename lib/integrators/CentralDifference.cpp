@@ -17,15 +17,7 @@ void CentralDifference::step() {
   vHalf_.noalias() += dt_ * a_;  // v_{n+1/2} = v_{n-1/2} + dt a_n
   u_.noalias() += dt_ * vHalf_;  // u_{n+1} = u_n + dt v_{n+1/2}
   advanceClock();
-  if (system_->dependsOnVelocity()) {
-    // Predictor v_{n+1}* = v_{n+1/2} + dt/2 a_n: an O(dt^2) estimate of v_{n+1}, enough for a
-    // second-order scheme without a second evaluation.
-    vPredict_ = vHalf_ + 0.5 * dt_ * a_;
-    system_->acceleration(time_, u_, vPredict_, a_);
-  } else {
-    system_->acceleration(time_, u_, vHalf_, a_);  // v is ignored by the system
-  }
-  v_ = vHalf_ + 0.5 * dt_ * a_;  // synchronous v_{n+1}
+  closeHalfStep(vHalf_, vPredict_);  // a_{n+1}, and the synchronous v_{n+1} that is reported
 }
 
 }  // namespace mfwave

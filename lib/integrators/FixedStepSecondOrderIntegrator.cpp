@@ -17,6 +17,16 @@ void FixedStepSecondOrderIntegrator::bind(SecondOrderSystem& system, Real t0, co
   a_.resize(u0.size());
 }
 
+void FixedStepSecondOrderIntegrator::closeHalfStep(const Vector& vHalf, Vector& vPredict) {
+  if (system_->dependsOnVelocity()) {
+    vPredict = vHalf + 0.5 * dt_ * a_;
+    system_->acceleration(time_, u_, vPredict, a_);
+  } else {
+    system_->acceleration(time_, u_, vHalf, a_);  // v is ignored by the system
+  }
+  v_ = vHalf + 0.5 * dt_ * a_;
+}
+
 void FixedStepSecondOrderIntegrator::requireInitialised() const {
   if (!system_) throw Error(name() + ": step() called before initialise()");
 }

@@ -25,6 +25,11 @@ class FixedStepSecondOrderIntegrator : public SecondOrderIntegrator {
     ++steps_;
     time_ = t0_ + static_cast<Real>(steps_) * dt_;
   }
+  // The closing half step shared by central difference and leapfrog, after u_{n+1} and the clock
+  // have advanced: a_{n+1} = a(t_{n+1}, u_{n+1}, v*) and v_{n+1} = vHalf + dt/2 a_{n+1}. A
+  // velocity-dependent system gets the predictor v* = vHalf + dt/2 a_n (an O(dt^2) estimate of
+  // v_{n+1}: second order with one evaluation); otherwise v is not used and vPredict is untouched.
+  void closeHalfStep(const Vector& vHalf, Vector& vPredict);
   // Throws Error naming the integrator when step() comes before initialise().
   void requireInitialised() const;
 

@@ -14,14 +14,7 @@ void Leapfrog::step() {
   vHalf_ = v_ + 0.5 * dt_ * a_;   // kick
   u_.noalias() += dt_ * vHalf_;   // drift
   advanceClock();
-  if (system_->dependsOnVelocity()) {
-    // v_{n+1} is not known before a_{n+1}: predict it to O(dt^2) with the old acceleration.
-    vPredict_ = vHalf_ + 0.5 * dt_ * a_;
-    system_->acceleration(time_, u_, vPredict_, a_);
-  } else {
-    system_->acceleration(time_, u_, vHalf_, a_);  // v is ignored by the system
-  }
-  v_ = vHalf_ + 0.5 * dt_ * a_;   // kick
+  closeHalfStep(vHalf_, vPredict_);  // a_{n+1} and the closing kick
 }
 
 }  // namespace mfwave
