@@ -134,6 +134,25 @@ Real TimeFunction::operator()(Real t) const {
   return 0;
 }
 
+bool TimeFunction::piecewiseLinear(std::vector<Real>& times, std::vector<Real>& values) const {
+  switch (kind_) {
+    case Kind::Ramp:
+      times = {p_[0], p_[0] + p_[1]};
+      values = {0, p_[2]};
+      return true;
+    case Kind::Triangle:
+      times = {p_[0], p_[0] + p_[1], p_[0] + p_[1] + p_[2]};
+      values = {0, p_[3], 0};
+      return true;
+    case Kind::Tabulated:
+      times = times_;
+      values = values_;
+      return true;
+    default:
+      return false;
+  }
+}
+
 std::string TimeFunction::describe() const {
   switch (kind_) {
     case Kind::Constant:

@@ -33,6 +33,12 @@ class TimeFunction {
 
   Real operator()(Real t) const;
   Kind kind() const { return kind_; }
+  // The breakpoints of a piecewise-linear function (ramp, triangle, tabulated; constant held
+  // from its first breakpoint on): f is values[0] before times[0], linear between breakpoints and
+  // values.back() after the last. False for a constant and a Ricker wavelet (not piecewise linear
+  // with a start), when the arguments are left unchanged. Exact references that convolve a step
+  // response with the load history (LambSquareLoad) take these.
+  bool piecewiseLinear(std::vector<Real>& times, std::vector<Real>& values) const;
   // One line for logs and run summaries, e.g. "ricker(peak_frequency=5, delay=0.3, amplitude=1)".
   std::string describe() const;
 

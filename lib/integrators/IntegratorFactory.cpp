@@ -14,7 +14,7 @@ std::vector<std::string> secondOrderIntegratorNames() {
 
 std::unique_ptr<SecondOrderIntegrator> makeSecondOrderIntegrator(const std::string& name,
                                                                  const IntegratorOptions& options) {
-  if (name == "central_difference") return std::make_unique<CentralDifference>();
+  if (name == "central_difference") return std::make_unique<CentralDifference>(options.centralDifferenceDamping);
   if (name == "leapfrog") return std::make_unique<Leapfrog>();
   if (name == "newmark") return std::make_unique<Newmark>(options.newmarkBeta, options.newmarkGamma);
   if (name == "arkode") return std::make_unique<ArkodeSecondOrder>(options.arkode);

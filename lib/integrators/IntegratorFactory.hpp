@@ -2,6 +2,7 @@
 // Builds a second-order integrator by name, for drivers and scene files.
 
 #include "integrators/ArkodeExplicit.hpp"
+#include "integrators/CentralDifference.hpp"
 #include "integrators/Integrator.hpp"
 
 #include <memory>
@@ -11,6 +12,9 @@
 namespace mfwave {
 
 struct IntegratorOptions {
+  // "central_difference": dashpots implicit (Ding-Long-Wu eq. 32, the default) or through the
+  // explicit predictor; see CentralDifference::Damping and dampingNames().
+  CentralDifference::Damping centralDifferenceDamping = CentralDifference::Damping::implicit;
   // "newmark": Newmark parameters (default: average acceleration, unconditionally stable).
   Real newmarkBeta = 0.25;
   Real newmarkGamma = 0.5;

@@ -24,17 +24,23 @@ LinearSecondOrderSystem::LinearSecondOrderSystem(SparseMatrix mass, SparseMatrix
   if (stiffness_.cols() != n) throw InputError("stiffness", "must be square");
   if (mass_.rows() != n || mass_.cols() != n)
     throw InputError("mass", "must be " + std::to_string(n) + " x " + std::to_string(n) + " like the stiffness");
-  if (damping_.size() != 0 && (damping_.rows() != n || damping_.cols() != n))
-    throw InputError("damping", "must be empty or " + std::to_string(n) + " x " + std::to_string(n));
-  if (damping_.size() == 0) damping_.resize(n, n);
+  setDamping(std::move(damping_));
   mass_.makeCompressed();
-  damping_.makeCompressed();
   stiffness_.makeCompressed();
   if (isDiagonal(mass_)) {
     Vector diagonal = mass_.diagonal();
     if ((diagonal.array() > 0).all()) inverseMassDiagonal_ = diagonal.cwiseInverse();
   }
   work_.resize(n);
+}
+
+void LinearSecondOrderSystem::setDamping(SparseMatrix damping) {
+  const Index n = stiffness_.rows();
+  if (damping.size() != 0 && (damping.rows() != n || damping.cols() != n))
+    throw InputError("damping", "must be empty or " + std::to_string(n) + " x " + std::to_string(n));
+  damping_ = std::move(damping);
+  if (damping_.size() == 0) damping_.resize(n, n);
+  damping_.makeCompressed();
 }
 
 void LinearSecondOrderSystem::force(Real t, Vector& f) const {

@@ -32,6 +32,10 @@ class LinearSecondOrderSystem : public SecondOrderSystem {
   void force(Real t, Vector& f) const;
   // Replaces f(t): loads are attached after a method has assembled M, C and K.
   void setForce(ForceFunction force) { force_ = std::move(force); }
+  // Replaces C (empty for none): boundary dashpots are assembled after the method's M and K.
+  // Set it before an integrator is initialised with the system (implicit schemes factorise it).
+  // Throws InputError("damping") for a wrong size.
+  void setDamping(SparseMatrix damping);
 
   // Total mechanical energy 1/2 v^T M v + 1/2 u^T K u (meaningful for symmetric K).
   Real kineticEnergy(const Vector& v) const;

@@ -80,3 +80,17 @@ TEST(TimeFunction, BadInputNamesTheParameter) {
     EXPECT_NE(std::string(e.what()).find("line 3"), std::string::npos) << e.what();
   }
 }
+
+TEST(TimeFunction, PiecewiseLinearBreakpointsReproduceTheFunction) {
+  std::vector<Real> times, values;
+  for (const TimeFunction& f : {TimeFunction::triangle(0.5, 1, 2, 3), TimeFunction::ramp(1, 2, -1),
+                                TimeFunction::tabulated({0, 1, 3}, {0, 2, -1})}) {
+    ASSERT_TRUE(f.piecewiseLinear(times, values)) << f.describe();
+    const TimeFunction rebuilt = TimeFunction::tabulated(times, values);
+    for (Real t = -1; t < 6; t += 0.0625) EXPECT_NEAR(rebuilt(t), f(t), 1e-14) << f.describe() << " t = " << t;
+  }
+  times = {7};
+  EXPECT_FALSE(TimeFunction::ricker(2, 1).piecewiseLinear(times, values));
+  EXPECT_FALSE(TimeFunction::constant(1).piecewiseLinear(times, values));
+  EXPECT_EQ(times, std::vector<Real>{7});  // left unchanged
+}

@@ -70,3 +70,40 @@ TEST(FactorisedMatrix, SingularAndRankDeficientMatricesAreNamed) {
   FactorisedMatrix fresh;
   EXPECT_THROW(fresh.solve(Vector(Vector::Ones(2))), Error);
 }
+
+TEST(FactorisedMatrix, BlockDiagonalMatricesAreSolvedBlockByBlock) {
+  // Per-particle dashpot blocks M/dt + C/2: two particles of three components, then three of two.
+  Eigen::MatrixXd threes = Eigen::MatrixXd::Zero(6, 6);
+  threes.topLeftCorner(3, 3) << 4, 1, 0.5, 1, 3, -0.7, 0.5, -0.7, 5;
+  threes.bottomRightCorner(3, 3) << 2, 0, 1, 0, 6, 0, 1, 0, 3;  // a zero inside a block is fine
+  Eigen::MatrixXd twos = Eigen::MatrixXd::Zero(6, 6);
+  for (int b = 0; b < 3; ++b) twos.block(2 * b, 2 * b, 2, 2) << 3 + b, 1, -1, 2;
+  const Eigen::MatrixXd rhs = Eigen::MatrixXd::Random(6, 2);
+  for (const auto& [matrix, size] : {std::pair{threes, 3}, std::pair{twos, 2}}) {
+    FactorisedMatrix blocks;
+    blocks.factorise(sparseOf(matrix), "blocks");
+    EXPECT_EQ(blocks.blockSize(), size);
+    EXPECT_FALSE(blocks.isDiagonal());
+    const Eigen::MatrixXd expected = matrix.partialPivLu().solve(rhs);
+    EXPECT_LT((blocks.solve(Vector(rhs.col(0))) - expected.col(0)).norm(), 1e-14);
+    EXPECT_LT((blocks.solve(rhs) - expected).norm(), 1e-14);
+  }
+  // One entry across a block boundary: not block diagonal, UMFPACK.
+  Eigen::MatrixXd coupled = threes;
+  coupled(2, 3) = 0.1;
+  FactorisedMatrix lu;
+  lu.factorise(sparseOf(coupled), "coupled");
+  EXPECT_EQ(lu.blockSize(), 0);
+  // A singular block is named.
+  Eigen::MatrixXd singular = threes;
+  singular.bottomRightCorner(3, 3) << 1, 2, 3, 2, 4, 6, 0, 0, 1;
+  FactorisedMatrix bad;
+  try {
+    bad.factorise(sparseOf(singular), "the block matrix");
+    FAIL();
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("the block matrix"), std::string::npos) << what;
+    EXPECT_NE(what.find("block 1"), std::string::npos) << what;
+  }
+}

@@ -75,3 +75,21 @@ TEST(LinearSecondOrderSystem, MismatchedSizesNameTheMatrix) {
     EXPECT_EQ(e.key(), "mass");
   }
 }
+
+TEST(LinearSecondOrderSystem, DampingAttachedLaterActsOnTheVelocity) {
+  LinearSecondOrderSystem system(diagonal({2, 4}), SparseMatrix(), diagonal({1, 1}));
+  EXPECT_FALSE(system.dependsOnVelocity());
+  system.setDamping(diagonal({6, 0}));
+  EXPECT_TRUE(system.dependsOnVelocity());
+  Vector u = Vector::Zero(2), v(2), a(2);
+  v << 1, 5;
+  system.acceleration(0, u, v, a);
+  EXPECT_DOUBLE_EQ(a[0], -3);
+  EXPECT_DOUBLE_EQ(a[1], 0);
+  try {
+    system.setDamping(diagonal({1, 1, 1}));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "damping");
+  }
+}

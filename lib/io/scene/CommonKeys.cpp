@@ -94,8 +94,9 @@ SceneSchema SceneSchema::common() {
                     "time function scaling traction or value");
   s.at("boundary[].time_function").when("type = traction or displacement");
 
-  s.add("load", T::TableArray).describedAs("loads: point forces and body forces");
-  s.add("load[].type", T::String).required().oneOf({"point_force", "body_force"}).describedAs("kind of load");
+  s.add("load", T::TableArray).describedAs("loads: point forces, body forces and surface patch tractions");
+  s.add("load[].type", T::String).required().oneOf({"point_force", "body_force", "surface_patch"})
+      .describedAs("kind of load");
   s.add("load[].position", T::NumberArray).withUnit("m").required().when("type = point_force")
       .describedAs("point of application, inside the geometry box");
   s.add("load[].direction", T::NumberArray).withUnit("-").required().when("type = point_force")
@@ -104,7 +105,15 @@ SceneSchema SceneSchema::common() {
       .describedAs("magnitude of the force, scaled by time_function");
   s.add("load[].value", T::NumberArray).withUnit("N/m^3").required().when("type = body_force")
       .describedAs("body force per unit volume, one entry per axis, scaled by time_function");
-  s.addTimeFunction("load[].time_function", "required for point_force; constant 1 for body_force",
+  s.add("load[].face", T::String).required().when("type = surface_patch")
+      .describedAs("box face carrying the patch: -x, +x, -y, +y, -z, +z (those of the dimension)");
+  s.add("load[].centre", T::NumberArray).withUnit("m").required().when("type = surface_patch")
+      .describedAs("centre of the rectangular patch, one entry per axis, on the face");
+  s.add("load[].half_width", T::NumberArray).withUnit("m").required().when("type = surface_patch")
+      .describedAs("half-widths of the patch along each axis, > 0 in the face, 0 along its normal");
+  s.add("load[].traction", T::NumberArray).withUnit("Pa").required().when("type = surface_patch")
+      .describedAs("traction vector on the patch, one entry per axis, scaled by time_function");
+  s.addTimeFunction("load[].time_function", "required for point_force and surface_patch; constant 1 for body_force",
                     "time function scaling the load");
 
   s.add("integrator", T::Table).required().describedAs("time integration");

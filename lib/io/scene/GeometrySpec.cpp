@@ -60,6 +60,25 @@ std::string GeometrySpec::describeBox() const {
   return box;
 }
 
+GeometrySpec GeometrySpec::withLattice(const std::vector<Real>& newLower, const std::vector<Real>& newUpper,
+                                       Real newSpacing) const {
+  GeometrySpec g = *this;
+  g.lower = newLower;
+  g.upper = newUpper;
+  g.spacing = newSpacing;
+  if (g.lower.size() != static_cast<std::size_t>(dimension) || g.upper.size() != g.lower.size())
+    throw InputError("geometry.lower", "needs one entry per axis");
+  try {
+    g.intervals = dimension == 1   ? intervalsOf<1>(g.lower, g.upper, g.spacing)
+                  : dimension == 2 ? intervalsOf<2>(g.lower, g.upper, g.spacing)
+                                   : intervalsOf<3>(g.lower, g.upper, g.spacing);
+  } catch (const InputError& e) {
+    throw InputError(e.key() == "spacing" ? "geometry.spacing" : "geometry.upper",
+                     shortenNumbers(scene::problemOf(e), g));
+  }
+  return g;
+}
+
 GeometrySpec readGeometry(SceneReader& reader, int dimension) {
   reader.table("geometry", true);
   GeometrySpec g;

@@ -27,6 +27,10 @@ struct GeometrySpec {
   bool contains(const std::vector<Real>& x) const;
   // "[0, 1] x [0, 2]" for messages.
   std::string describeBox() const;
+  // The same geometry on another box or spacing (resolution and domain studies): intervals are
+  // recomputed. Throws InputError("geometry.spacing") when the spacing does not divide a side.
+  GeometrySpec withLattice(const std::vector<Real>& newLower, const std::vector<Real>& newUpper,
+                           Real newSpacing) const;
 };
 
 GeometrySpec readGeometry(SceneReader& reader, int dimension);

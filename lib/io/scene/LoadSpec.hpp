@@ -1,5 +1,6 @@
 #pragma once
-// [[load]]: point forces (at a point inside the box, along a direction) and body forces.
+// [[load]]: point forces (at a point inside the box, along a direction), body forces, and surface
+// patches (a uniform traction on an axis-aligned rectangle of a box face, Ding-Long-Wu eq. (36)-(37)).
 
 #include "core/TimeFunction.hpp"
 #include "io/scene/GeometrySpec.hpp"
@@ -10,9 +11,9 @@
 
 namespace mfwave {
 
-enum class LoadType { PointForce, BodyForce };
+enum class LoadType { PointForce, BodyForce, SurfacePatch };
 
-std::string loadTypeName(LoadType type);  // "point_force", "body_force"
+std::string loadTypeName(LoadType type);  // "point_force", "body_force", "surface_patch"
 
 struct LoadSpec {
   LoadType type = LoadType::PointForce;
@@ -20,6 +21,10 @@ struct LoadSpec {
   std::vector<Real> direction;  // PointForce: unit vector
   Real amplitude = 1;           // PointForce: N
   std::vector<Real> value;      // BodyForce: N/m^3, one entry per axis
+  int face = -1;                // SurfacePatch: BoxFace number
+  std::vector<Real> centre;     // SurfacePatch: m, on the face
+  std::vector<Real> halfWidth;  // SurfacePatch: m, 0 along the face normal
+  std::vector<Real> traction;   // SurfacePatch: Pa, one entry per axis
   TimeFunction timeFunction = TimeFunction::constant(1);
 };
 

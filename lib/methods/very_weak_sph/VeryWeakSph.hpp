@@ -5,8 +5,11 @@
 // out, with the method data for diagnostics. Eq. (23) reads rho u'' = K u + f; multiplying row a
 // by alpha_a (eqs. (28)-(29)) is the lumped mass rho / alpha_a.
 //
-// Not here yet: transmitting boundaries (eqs. (31)-(32)), displacement boundary conditions
-// (eq. (30)), conservative smoothing (eq. (33)), deconvolution (eq. (35)).
+// The rest of the method plugs in around this system: transmitting dashpots (eqs. (31)-(32),
+// TransmittingBoundary: system.setDamping), traction and patch loads (eq. (19), TractionLoad and
+// PatchLoad: system.setForce), displacement conditions (eq. (30): the integrator's prescribed
+// dofs), conservative smoothing (eq. (33), ConservativeSmoothing: the integrator's velocity
+// filter) and deconvolution of what is reported (eq. (35), Deconvolution).
 
 #include "core/Types.hpp"
 #include "kernels/Kernel.hpp"

@@ -1,0 +1,390 @@
+#include "LambCase.hpp"
+
+#include "analysis/StableTimeStep.hpp"
+#include "analytic/LambSquareLoad.hpp"
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "integrators/CentralDifference.hpp"
+#include "integrators/IntegratorFactory.hpp"
+#include "io/run/ProgressReporter.hpp"
+#include "io/run/RunSummary.hpp"
+#include "io/scene/BuildParticles.hpp"
+#include "io/scene/Faces.hpp"
+#include "io/vtk/PngFrameRenderer.hpp"
+#include "io/vtk/VtkFrameWriter.hpp"
+#include "kernels/KernelFactory.hpp"
+#include "methods/very_weak_sph/ConservativeSmoothing.hpp"
+#include "particles/BoxFace.hpp"
+#include "methods/very_weak_sph/Deconvolution.hpp"
+#include "methods/very_weak_sph/PatchLoad.hpp"
+#include "methods/very_weak_sph/TractionLoad.hpp"
+#include "methods/very_weak_sph/TransmittingBoundary.hpp"
+#include "methods/very_weak_sph/VeryWeakSph.hpp"
+#include "neighbours/NeighbourList.hpp"
+#include "observers/StabilityMonitor.hpp"
+#include "observers/TimeLoop.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <memory>
+#include <optional>
+
+namespace mfwave::lamb3d {
+namespace {
+
+constexpr int D = 3;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+Real csrMiB(const SparseMatrix& m) {
+  return (static_cast<Real>(m.nonZeros()) * (sizeof(Real) + sizeof(int)) +
+          static_cast<Real>(m.outerSize() + 1) * sizeof(int)) / (1024.0 * 1024.0);
+}
+
+// Every `every` steps: each probe's value in the state (the kernel estimate u^h advanced by
+// eq. (23)) and its deconvolved value (eq. (35)) from the probe particle's row of the
+// deconvolution matrix.
+class LambProbes : public Observer {
+ public:
+  LambProbes(std::vector<Probe> probes, const ParticleMatrix& deconvolution)
+      : probes_(std::move(probes)), deconvolution_(deconvolution), raw_(probes_.size()), sharp_(probes_.size()) {}
+
+  void observe(const StateView& s) override {
+    if (!times_.empty() && s.time <= times_.back()) return;  // end() right after a sample of the same step
+    times_.push_back(s.time);
+    for (std::size_t i = 0; i < probes_.size(); ++i) {
+      const Vector& field = probes_[i].quantity == ProbeQuantity::Velocity ? s.velocity : s.displacement;
+      raw_[i].push_back(field[D * probes_[i].particle + probes_[i].component]);
+      sharp_[i].push_back(deconvolveAt(deconvolution_, probes_[i].particle, field, D, probes_[i].component));
+    }
+  }
+  void end(const StateView& s) override { observe(s); }
+
+  const std::vector<Real>& times() const { return times_; }
+  const std::vector<Real>& raw(std::size_t i) const { return raw_[i]; }
+  const std::vector<Real>& deconvolved(std::size_t i) const { return sharp_[i]; }
+
+ private:
+  std::vector<Probe> probes_;
+  const ParticleMatrix& deconvolution_;
+  std::vector<Real> times_;
+  std::vector<std::vector<Real>> raw_, sharp_;
+};
+
+// The exact reference exists for one square surface patch with a normal traction on a Poisson
+// (lambda = mu) body, a piecewise-linear load history and probes of the normal velocity or
+// displacement on the loaded face. Returns the reason when it does not apply.
+std::string exactReferenceProblem(const Scene& scene) {
+  if (scene.loads.size() != 1 || scene.loads[0].type != LoadType::SurfacePatch)
+    return "the exact reference needs exactly one surface_patch load";
+  const LoadSpec& load = scene.loads[0];
+  const auto axis = static_cast<std::size_t>(load.face / 2);
+  std::vector<Real> widths;
+  for (std::size_t a = 0; a < 3; ++a)
+    if (a != axis) widths.push_back(load.halfWidth[a]);
+  if (std::abs(widths[0] - widths[1]) > 1e-12 * widths[0]) return "the exact reference needs a square patch";
+  for (std::size_t a = 0; a < 3; ++a)
+    if (a != axis && load.traction[a] != 0) return "the exact reference needs a normal traction";
+  const Material material = scene.material.material();
+  if (std::abs(material.lambda() - material.mu()) > 1e-12 * material.mu())
+    return "the exact reference (Pekeris) needs a Poisson solid, lambda = mu";
+  std::vector<Real> times, values;
+  if (!load.timeFunction.piecewiseLinear(times, values) || values.front() != 0)
+    return "the exact reference needs a piecewise-linear load history starting from 0";
+  return "";
+}
+
+LambSquareLoad exactReference(const Scene& scene) {
+  const LoadSpec& load = scene.loads[0];
+  const Material material = scene.material.material();
+  std::vector<Real> times, values;
+  load.timeFunction.piecewiseLinear(times, values);
+  const auto axis = static_cast<std::size_t>(load.face / 2);
+  const Real halfWidth = load.halfWidth[(axis + 1) % 3];
+  // LambSquareLoad gives the response along the applied traction, i.e. the normal component for
+  // traction p n_axis (p of either sign, by linearity).
+  return LambSquareLoad(material.mu(), material.sWaveSpeed(), halfWidth, std::move(times), std::move(values),
+                        load.traction[axis]);
+}
+
+// Prescribed displacement dofs (eq. (30)) of the fixed and displacement faces, with their values
+// at time t.
+struct Prescribed {
+  std::vector<Index> dofs;
+  std::vector<Real> value;            // per dof
+  std::vector<const TimeFunction*> timeFunction;  // per dof (null: constant 0)
+};
+
+Prescribed prescribedDisplacements(const Scene& scene, const ParticleSet<D>& particles) {
+  Prescribed p;
+  for (const BoundarySpec& b : scene.boundaries) {
+    if (b.type != BoundaryType::Fixed && b.type != BoundaryType::Displacement) continue;
+    for (Index a = 0; a < particles.physicalCount(); ++a) {
+      if ((particles.faceMask[static_cast<std::size_t>(a)] & b.faceMask) == 0) continue;
+      for (int c = 0; c < D; ++c) {
+        p.dofs.push_back(D * a + c);
+        p.value.push_back(b.type == BoundaryType::Displacement && !b.value.empty() ? b.value[static_cast<std::size_t>(c)] : 0);
+        p.timeFunction.push_back(b.type == BoundaryType::Displacement ? &b.timeFunction : nullptr);
+      }
+    }
+  }
+  return p;
+}
+
+// The traction load (eq. (19)) as a sum of fixed vectors times time functions: whole faces of
+// traction boundaries and the surface patches.
+struct TractionTerm {
+  Vector force;  // T t for the unit history
+  const TimeFunction* timeFunction;
+};
+
+std::vector<TractionTerm> tractionTerms(const Scene& scene, const ParticleSet<D>& particles,
+                                        const VeryWeakSph<D>& method, const GeometrySpec& geometry) {
+  std::vector<TractionTerm> terms;
+  const BoundaryFacets<D>& facets = method.data.facets;
+  const Vec<D> lower(geometry.lower.data()), upper(geometry.upper.data());
+  for (const BoundarySpec& b : scene.boundaries) {
+    if (b.type != BoundaryType::Traction) continue;
+    Vector t = Vector::Zero(D * facets.count());
+    const Vec<D> traction(b.traction.data());
+    for (Index f = 0; f < facets.count(); ++f)
+      if (b.faceMask & faceBit(facets.face[static_cast<std::size_t>(f)])) t.segment<D>(D * f) = traction;
+    terms.push_back({method.data.tractionMatrix * t, &b.timeFunction});
+  }
+  for (const LoadSpec& load : scene.loads) {
+    const Vec<D> centre(load.centre.data()), halfWidths(load.halfWidth.data()), traction(load.traction.data());
+    const std::vector<Real> weights =
+        patchLoadWeights<D>(particles, load.face, centre, halfWidths, geometry.spacing, lower, upper);
+    const Vector t = patchFacetTractions<D>(facets, load.face, weights, traction);
+    terms.push_back({method.data.tractionMatrix * t, &load.timeFunction});
+  }
+  return terms;
+}
+
+void checkSupported(const Scene& scene) {
+  for (std::size_t i = 0; i < scene.loads.size(); ++i)
+    if (scene.loads[i].type != LoadType::SurfacePatch)
+      throw InputError("load[" + std::to_string(i) + "].type",
+                       "lamb3d takes surface_patch loads (point and body forces have no very weak form here)");
+}
+
+void writeProbes(const std::string& path, const std::vector<Probe>& probes, const LambProbes& recorded,
+                 const std::vector<std::vector<Real>>& exact) {
+  AtomicFile file(path);
+  std::ostream& out = file.stream();
+  out << "t [s]";
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    out << ',' << probes[i].name << "_raw," << probes[i].name << "_deconvolved";
+    if (!exact[i].empty()) out << ',' << probes[i].name << "_exact";
+  }
+  out << '\n' << std::setprecision(10);
+  for (std::size_t k = 0; k < recorded.times().size(); ++k) {
+    out << recorded.times()[k];
+    for (std::size_t i = 0; i < probes.size(); ++i) {
+      out << ',' << recorded.raw(i)[k] << ',' << recorded.deconvolved(i)[k];
+      if (!exact[i].empty()) out << ',' << exact[i][k];
+    }
+    out << '\n';
+  }
+  file.commit();
+}
+
+}  // namespace
+
+CaseResult runCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
+                   bool progress) {
+  const Scene& scene = study.scene;
+  checkSupported(scene);
+  CaseResult result;
+  result.settings = settings;
+  const auto assemblyStart = Clock::now();
+
+  // particles + neighbours
+  const ParticleSet<D> particles = buildParticles<D>(settings.geometry);
+  result.particles = particles.physicalCount();
+  result.ghosts = particles.size() - particles.physicalCount();
+  result.smoothingLength = study.method.smoothingLengthRatio * settings.geometry.spacing;
+  const std::unique_ptr<Kernel> kernel = makeKernel(study.method.kernel, D, result.smoothingLength);
+  const NeighbourList neighbours =
+      buildNeighbourList(CellList<D>(particles, kernel->supportRadius()), particles.physicalCount());
+  result.meanNeighbours = neighbours.meanCount();
+
+  // discretisation: the operator (eqs. 21-22), lumped mass (eqs. 28-29), dashpots (eqs. 31-32)
+  VeryWeakSph<D> method = assembleVeryWeakSph<D>(particles, neighbours, *kernel, study.method.options);
+  method.data.operatorMatrix = SparseMatrix();  // the system holds -K; one copy is enough
+  LinearSecondOrderSystem& system = method.system;
+  const std::uint8_t transmitting = settings.freeFaces ? 0 : facesWith(scene.boundaries, BoundaryType::Transmitting);
+  if (transmitting != 0)
+    system.setDamping(assembleTransmittingDamping<D>(
+        particles, neighbours, *kernel, method.data.facets, study.method.options.material, transmitting,
+        study.method.dashpotLumping == "consistent" ? DashpotLumping::Consistent : DashpotLumping::Particle));
+
+  // loads (eq. 19): fixed vectors T t scaled by their time functions
+  const Scene caseScene = [&] {
+    Scene s = scene;
+    if (settings.freeFaces) s.boundaries.clear();
+    return s;
+  }();
+  std::vector<TractionTerm> terms = tractionTerms(caseScene, particles, method, settings.geometry);
+  system.setForce([terms = std::move(terms)](Real t, Vector& f) {
+    for (const TractionTerm& term : terms) {
+      const Real scale = (*term.timeFunction)(t);
+      if (scale != 0) f.noalias() += scale * term.force;
+    }
+  });
+  result.operatorNonZeros = system.stiffness().nonZeros();
+  result.operatorMiB = csrMiB(system.stiffness()) + csrMiB(method.data.tractionMatrix) + csrMiB(system.damping()) +
+                       csrMiB(system.mass());
+
+  // time step: a fraction of the operator's stable central-difference step
+  const StableTimeStep stable = centralDifferenceStableStep(system, 1e-6, 5000);
+  result.stableStepEstimate = stable.estimate();
+  result.stableStepGershgorin = stable.safe();
+  const Real stableStep = stable.converged ? stable.estimate() : stable.safe();
+  if (!stable.converged)
+    result.notes.push_back(settings.name + ": power iteration did not converge; the Gershgorin step is used");
+  const Real dt = scene.integrator.timeStepFor(stableStep);
+  result.timeStep = dt;
+
+  // integrator, with the smoothing (eq. 33) as its velocity filter and eq. (30) for prescribed faces
+  const Prescribed prescribed = prescribedDisplacements(caseScene, particles);
+  std::optional<ConservativeSmoothing> smoothing;
+  std::unique_ptr<SecondOrderIntegrator> integrator;
+  if (scene.integrator.name == "central_difference") {
+    auto central = std::make_unique<CentralDifference>();
+    if (settings.smoothingRate > 0) {
+      smoothing.emplace(smoothingMatrix<D>(particles, neighbours, *kernel, method.data.volume), D,
+                        settings.smoothingRate);
+      central->setVelocityFilter([&smoothing](Real step, Vector& v) { smoothing->apply(step, v); });
+    }
+    if (!prescribed.dofs.empty())
+      central->setPrescribedDisplacement(prescribed.dofs, [&prescribed](Real t, Vector& values) {
+        for (std::size_t i = 0; i < prescribed.dofs.size(); ++i)
+          values[static_cast<Index>(i)] =
+              prescribed.timeFunction[i] ? prescribed.value[i] * (*prescribed.timeFunction[i])(t) : 0;
+      });
+    integrator = std::move(central);
+  } else {
+    if (settings.smoothingRate > 0)
+      throw InputError("method.smoothing_rate", "conservative smoothing is applied by the central_difference "
+                                                "integrator only; set it to 0 to run " + scene.integrator.name);
+    if (!prescribed.dofs.empty())
+      throw InputError("boundary", "fixed and displacement faces (eq. 30) need the central_difference integrator");
+    integrator = makeSecondOrderIntegrator(scene.integrator.name, scene.integrator.options);
+  }
+  // At rest, with the prescribed faces at their values at t = 0 (eq. (30) holds from the start).
+  Vector u0 = Vector::Zero(system.size());
+  for (std::size_t i = 0; i < prescribed.dofs.size(); ++i)
+    u0[prescribed.dofs[i]] = prescribed.timeFunction[i] ? prescribed.value[i] * (*prescribed.timeFunction[i])(0) : 0;
+  integrator->initialise(system, 0, u0, Vector::Zero(system.size()), dt);
+
+  // observers: stability, probes (raw and deconvolved), frames
+  const ParticleMatrix deconvolution = deconvolutionMatrix<D>(particles, neighbours, *kernel, method.data.volume);
+  const std::vector<Probe> probes = resolveProbes(scene.probes, particles);
+  LambProbes recorder(probes, deconvolution);
+  result.assemblySeconds = secondsSince(assemblyStart);
+
+  StabilityMonitor monitor(scene.stability.options(D));
+  ProgressReporter reporter(scene.integrator.endTime, particles.physicalCount(), progress);
+  std::optional<VtkFrameWriter<D>> frames;
+  std::optional<PngFrameRenderer<D>> images;
+  TimeLoop loop;
+  loop.add(monitor);
+  loop.add(reporter);
+  loop.add(recorder, scene.output.probeEvery);
+  if (settings.writeFrames && scene.output.vtk) {
+    frames.emplace(particles, folder, settings.name, D);
+    loop.add(*frames, scene.output.every);
+  }
+  if (settings.writeFrames && scene.output.png) {
+    PngOptions png;
+    png.field = scene.output.pngField;
+    png.component = scene.output.pngComponent == "magnitude" ? PngOptions::magnitude
+                                                              : (scene.output.pngComponent == "x"   ? 0
+                                                                 : scene.output.pngComponent == "y" ? 1
+                                                                                                    : 2);
+    png.pointSize = scene.output.pngPointSize;
+    png.width = scene.output.pngWidth;
+    png.height = scene.output.pngHeight;
+    images.emplace(particles, folder, settings.name, D, png);
+    loop.add(*images, scene.output.every);
+  }
+  const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
+  result.steps = stats.steps;
+  result.runSeconds = stats.wallSeconds;
+
+  // errors against the exact half-space response, for probes on the loaded face along its normal
+  const std::string problem = exactReferenceProblem(scene);
+  std::optional<LambSquareLoad> exact;
+  if (problem.empty()) exact.emplace(exactReference(scene));
+  else result.notes.push_back(problem);
+  std::vector<std::vector<Real>> exactSeries(probes.size());
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    ProbeResult r;
+    r.name = probes[i].name;
+    if (exact) {
+      const LoadSpec& load = scene.loads[0];
+      const int axis = load.face / 2;
+      const Vec<D> x = particles.position(probes[i].particle);
+      const bool onFace = (particles.faceMask[static_cast<std::size_t>(probes[i].particle)] & faceBit(load.face)) != 0;
+      if (onFace && probes[i].component == axis) {
+        const Real px = x[(axis + 1) % 3] - load.centre[static_cast<std::size_t>((axis + 1) % 3)];
+        const Real py = x[(axis + 2) % 3] - load.centre[static_cast<std::size_t>((axis + 2) % 3)];
+        for (const Real t : recorder.times())
+          exactSeries[i].push_back(probes[i].quantity == ProbeQuantity::Velocity ? exact->velocity(px, py, t)
+                                                                                 : exact->displacement(px, py, t));
+        r.hasExact = true;
+        r.raw = compareSignals(recorder.times(), recorder.raw(i), exactSeries[i], study.errorWindow,
+                               study.arrivalFraction);
+        r.deconvolved = compareSignals(recorder.times(), recorder.deconvolved(i), exactSeries[i], study.errorWindow,
+                                       study.arrivalFraction);
+      } else {
+        result.notes.push_back("probe " + r.name + ": no exact reference (not the normal component on the loaded face)");
+      }
+    }
+    result.probes.push_back(r);
+  }
+  writeProbes(folder + "/" + settings.name + "-probes.csv", probes, recorder, exactSeries);
+  if (exact && settings.writeFrames) {
+    // The exact response on a fine time grid, for the figures (the errors use the run's samples).
+    AtomicFile file(folder + "/exact.csv");
+    file.stream() << "t [s]";
+    for (std::size_t i = 0; i < probes.size(); ++i)
+      if (result.probes[i].hasExact) file.stream() << ',' << probes[i].name << "_exact";
+    file.stream() << '\n' << std::setprecision(10);
+    const LoadSpec& load = scene.loads[0];
+    const int axis = load.face / 2;
+    constexpr int samples = 600;
+    for (int k = 0; k <= samples; ++k) {
+      const Real t = scene.integrator.endTime * k / samples;
+      file.stream() << t;
+      for (std::size_t i = 0; i < probes.size(); ++i) {
+        if (!result.probes[i].hasExact) continue;
+        const Vec<D> x = particles.position(probes[i].particle);
+        const Real px = x[(axis + 1) % 3] - load.centre[static_cast<std::size_t>((axis + 1) % 3)];
+        const Real py = x[(axis + 2) % 3] - load.centre[static_cast<std::size_t>((axis + 2) % 3)];
+        file.stream() << ',' << (probes[i].quantity == ProbeQuantity::Velocity ? exact->velocity(px, py, t)
+                                                                              : exact->displacement(px, py, t));
+      }
+      file.stream() << '\n';
+    }
+    file.commit();
+    result.files.push_back("exact.csv");
+  }
+  result.files.push_back(settings.name + "-probes.csv");
+  if (frames) result.files.push_back(settings.name + ".pvd (" + std::to_string(frames->framesWritten()) + " frames)");
+  if (images) {
+    if (images->skippedReason().empty())
+      result.files.push_back(settings.name + "_*.png (" + std::to_string(images->framesRendered()) + " images)");
+    else
+      result.notes.push_back("no PNG frames: " + images->skippedReason());
+  }
+  result.peakMemoryMiB = peakMemoryMiB();
+  return result;
+}
+
+}  // namespace mfwave::lamb3d

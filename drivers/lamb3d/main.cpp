@@ -1,0 +1,230 @@
+// lamb3d: the 3-D Lamb problem of Ding-Long-Wu section 8 by the very weak form SPH. A block
+// stands for the half-space: free top face, transmitting (Lysmer-Kuhlemeyer) on the other five,
+// a triangular pulse of normal traction on a square at the centre of the free surface. The
+// vertical velocity at the load centre and at a surface receiver is compared with the exact
+// response of the half-space (Pekeris, integrated over the square and convolved with the pulse).
+//
+// Cases, each one run of the same scene:
+//   paper          the scene as given (the paper's Fig. 1-3: raw and deconvolved probes), frames
+//   strong_filter  study.strong_smoothing_rate instead of method.smoothing_rate (Fig. 4)
+//   free_block     a larger block with all faces free (what the transmitting boundary saves)
+//   spacing_<dx>   every other entry of study.spacings (accuracy against cost)
+// Writes cases.csv (errors and cost per case), <case>-probes.csv, frames, summary.json.
+// Results: docs/studies/lamb3d.md. Plot: /usr/bin/python3 analysis/plot_lamb3d.py OUT.
+//
+//   lamb3d --scene data/scenes/lamb3d.toml [--set 'study.spacings=[0.5]'] [--out DIR]
+
+#include "LambCase.hpp"
+
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "io/run/DriverCommandLine.hpp"
+#include "io/run/RunDriver.hpp"
+#include "io/run/RunSummary.hpp"
+#include "io/run/SceneDriver.hpp"
+#include "io/scene/Format.hpp"
+#include "io/scene/LoadScene.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+using namespace mfwave;
+using namespace mfwave::lamb3d;
+
+namespace {
+
+const char* kProgram = "lamb3d";
+
+SceneSchema lambSchema() {
+  using T = ValueType;
+  SceneSchema schema = SceneSchema::common();
+  addVeryWeakSphKeys(schema);
+  schema.add("study", T::Table).describedAs("the cases of the lamb3d study");
+  schema.add("study.spacings", T::NumberArray).withUnit("m").defaultsToNote("[geometry.spacing]")
+      .describedAs("lattice spacings of the accuracy-cost cases (h scales with them; the box and load are fixed)");
+  schema.add("study.error_window", T::Number).withUnit("s").defaultsTo("6.0").positive()
+      .describedAs("errors are measured over 0 <= t <= error_window");
+  schema.add("study.arrival_fraction", T::Number).withUnit("-").defaultsTo("0.1").between(0, 1, false, false)
+      .describedAs("arrival time: first |v| >= arrival_fraction * |exact peak|");
+  schema.add("study.strong_smoothing_rate", T::Number).withUnit("1/s").defaultsTo("0.0").nonNegative()
+      .describedAs("smoothing rate of the strong_filter case (the paper's Fig. 4); 0 skips the case");
+  schema.add("study.free_block_lower", T::NumberArray).withUnit("m").defaultsToNote("no free_block case")
+      .describedAs("lower corner of the larger all-free block (with free_block_upper)");
+  schema.add("study.free_block_upper", T::NumberArray).withUnit("m").defaultsToNote("no free_block case")
+      .describedAs("upper corner of the larger all-free block");
+  return schema;
+}
+
+struct Plan {
+  StudySettings study;
+  std::vector<CaseSettings> cases;
+};
+
+std::string spacingName(Real dx) {
+  std::ostringstream s;
+  s << "spacing_" << dx;
+  return s.str();
+}
+
+Plan readPlan(SceneReader& reader) {
+  Plan plan;
+  StudySettings& study = plan.study;
+  study.scene = readScene(reader);
+  const Scene& scene = study.scene;
+  if (scene.info.dimension != 3) reader.fail("scene.dimension", "lamb3d is a 3-D study");
+  if (scene.method.name != "very_weak_sph") reader.fail("method.name", "lamb3d runs the very_weak_sph method");
+  study.method = readVeryWeakSph(reader, scene.material.material());
+  study.errorWindow = reader.number("study.error_window");
+  study.arrivalFraction = reader.number("study.arrival_fraction");
+  for (std::size_t i = 0; i < scene.loads.size(); ++i)
+    if (scene.loads[i].type != LoadType::SurfacePatch)
+      reader.fail("load[" + std::to_string(i) + "].type", "lamb3d takes surface_patch loads");
+
+  const GeometrySpec& g = scene.geometry;
+  CaseSettings paper{"paper", g, false, study.method.smoothingRate, true};
+  plan.cases.push_back(paper);
+  const Real strong = reader.number("study.strong_smoothing_rate");
+  if (strong > 0) plan.cases.push_back({"strong_filter", g, false, strong, false});
+  if (reader.has("study.free_block_lower") || reader.has("study.free_block_upper")) {
+    const std::vector<Real> lower = reader.numbers("study.free_block_lower", 3);
+    const std::vector<Real> upper = reader.numbers("study.free_block_upper", 3);
+    for (std::size_t a = 0; a < 3; ++a)
+      if (lower[a] > g.lower[a] || upper[a] < g.upper[a])
+        reader.fail("study.free_block_lower", "the free block must contain the scene's box " + g.describeBox());
+    try {
+      plan.cases.push_back({"free_block", g.withLattice(lower, upper, g.spacing), true, study.method.smoothingRate, false});
+    } catch (const InputError& e) {
+      reader.fail("study.free_block_upper", e.what());
+    }
+  }
+  std::vector<Real> spacings = reader.has("study.spacings") ? reader.numbers("study.spacings") : std::vector<Real>{};
+  for (std::size_t i = 0; i < spacings.size(); ++i) {
+    const Real dx = spacings[i];
+    const std::string at = "study.spacings[" + std::to_string(i) + "]";
+    if (!(dx > 0)) reader.fail(at, "must be positive, got " + scene::formatNumber(dx));
+    if (std::abs(dx - g.spacing) <= 1e-12 * g.spacing) continue;  // the paper case
+    try {
+      plan.cases.push_back({spacingName(dx), g.withLattice(g.lower, g.upper, dx), false, study.method.smoothingRate, false});
+    } catch (const InputError& e) {
+      reader.fail(at, e.what());
+    }
+  }
+  return plan;
+}
+
+void writeCases(const std::string& path, const std::vector<CaseResult>& results) {
+  AtomicFile file(path);
+  std::ostream& out = file.stream();
+  out << "case,spacing [m],h [m],particles,ghosts,mean_neighbours,operator_nonzeros,operator [MiB],"
+         "stable_step_estimate [s],stable_step_gershgorin [s],dt [s],steps,assembly [s],run [s],wall [s],"
+         "peak_memory [MiB],particle_steps_per_second";
+  for (const ProbeResult& p : results.front().probes)
+    for (const char* kind : {"raw", "deconvolved"})
+      out << ',' << p.name << '_' << kind << "_relative_l2," << p.name << '_' << kind << "_peak_error,"
+          << p.name << '_' << kind << "_arrival_error [s]";
+  out << '\n' << std::setprecision(8);
+  for (const CaseResult& r : results) {
+    out << r.settings.name << ',' << r.settings.geometry.spacing << ',' << r.smoothingLength << ',' << r.particles
+        << ',' << r.ghosts << ',' << r.meanNeighbours << ',' << r.operatorNonZeros << ',' << r.operatorMiB << ','
+        << r.stableStepEstimate << ',' << r.stableStepGershgorin << ',' << r.timeStep << ',' << r.steps << ','
+        << r.assemblySeconds << ',' << r.runSeconds << ',' << r.assemblySeconds + r.runSeconds << ','
+        << r.peakMemoryMiB << ',' << r.particleStepsPerSecond();
+    for (const ProbeResult& p : r.probes)
+      for (const SignalErrors* e : {&p.raw, &p.deconvolved}) {
+        if (p.hasExact)
+          out << ',' << e->relativeL2 << ',' << e->peakError << ',' << e->arrivalError;
+        else
+          out << ",,,";
+      }
+    out << '\n';
+  }
+  file.commit();
+}
+
+void printTable(std::ostream& out, const std::vector<CaseResult>& results) {
+  out << std::left << std::setw(16) << "case" << std::right << std::setw(8) << "dx" << std::setw(10) << "particles"
+      << std::setw(9) << "dt" << std::setw(7) << "steps" << std::setw(9) << "wall[s]" << std::setw(9) << "MiB";
+  for (const ProbeResult& p : results.front().probes) out << std::setw(14) << (p.name + " L2") << std::setw(9) << "peak";
+  out << "   (deconvolved / raw L2)\n";
+  for (const CaseResult& r : results) {
+    out << std::left << std::setw(16) << r.settings.name << std::right << std::setprecision(4) << std::setw(8)
+        << r.settings.geometry.spacing << std::setw(10) << r.particles << std::setw(9) << r.timeStep << std::setw(7)
+        << r.steps << std::setw(9) << std::setprecision(3) << r.assemblySeconds + r.runSeconds << std::setw(9)
+        << std::setprecision(4) << r.peakMemoryMiB;
+    for (const ProbeResult& p : r.probes) {
+      std::ostringstream l2;
+      l2 << std::setprecision(3) << p.deconvolved.relativeL2 << '/' << p.raw.relativeL2;
+      out << std::setw(14) << (p.hasExact ? l2.str() : "-") << std::setw(9) << std::setprecision(3)
+          << (p.hasExact ? p.deconvolved.peakError : std::nan(""));
+    }
+    out << '\n';
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const SceneSchema schema = lambSchema();
+  DriverCommandLine cli(kProgram, "lamb3d: the Ding-Long-Wu 3-D Lamb problem by very weak form SPH, against the exact response",
+                        schema.describe());
+  if (const auto exit = cli.parse(argc, argv)) return *exit;
+
+  return runDriver(kProgram, [&]() -> int {
+    SceneReader reader = loadDriverScene(cli.options(), schema);
+    const Plan plan = readPlan(reader);
+    reader.checkAllKeysRead();
+    const std::string folder = prepareOutputFolder(cli.options(), plan.study.scene.output.folder, reader);
+
+    std::vector<CaseResult> results;
+    for (const CaseSettings& settings : plan.cases) {
+      results.push_back(runCase(plan.study, settings, folder, !cli.options().quiet));
+      if (!cli.options().quiet)
+        std::cerr << "  done " << settings.name << " (" << results.back().particles << " particles)\n";
+    }
+    writeCases(folder + "/cases.csv", results);
+    printTable(std::cout, results);
+
+    const CaseResult& paper = results.front();
+    RunSummary summary;
+    summary.program = kProgram;
+    summary.scene = plan.study.scene.info.name;
+    summary.method = plan.study.scene.method.name;
+    summary.integrator = plan.study.scene.integrator.name;
+    summary.particles = paper.particles;
+    summary.meanNeighbours = paper.meanNeighbours;
+    summary.timeStep = paper.timeStep;
+    summary.simulatedTime = plan.study.scene.integrator.endTime;
+    for (const CaseResult& r : results) {
+      summary.steps += r.steps;
+      summary.wallSeconds += r.assemblySeconds + r.runSeconds;
+    }
+    for (const CaseResult& r : results)
+      for (const ProbeResult& p : r.probes) {
+        if (!p.hasExact) continue;
+        const std::string stem = r.settings.name + "_" + p.name;
+        summary.errors.push_back({stem + "_relative_l2_deconvolved", p.deconvolved.relativeL2});
+        summary.errors.push_back({stem + "_relative_l2_raw", p.raw.relativeL2});
+        if (&r == &paper) {
+          summary.errors.push_back({stem + "_peak_error_deconvolved", p.deconvolved.peakError});
+          summary.errors.push_back({stem + "_arrival_error_deconvolved [s]", p.deconvolved.arrivalError});
+        }
+      }
+    summary.figures.push_back({"paper_stable_step_estimate", paper.stableStepEstimate});
+    summary.figures.push_back({"paper_stable_step_gershgorin", paper.stableStepGershgorin});
+    summary.figures.push_back({"paper_particle_steps_per_second", paper.particleStepsPerSecond()});
+    summary.notes.push_back("particles, neighbours and dt of the paper case; steps and wall time summed over " +
+                            std::to_string(results.size()) + " cases");
+    for (const CaseResult& r : results)
+      for (const std::string& note : r.notes) summary.notes.push_back(note);
+    summary.files = {"scene.resolved.toml", "cases.csv"};
+    for (const CaseResult& r : results)
+      for (const std::string& f : r.files) summary.files.push_back(f);
+    summary.finish();
+    summary.files.push_back("summary.json");
+    summary.writeJson(folder + "/summary.json");
+    summary.print(std::cout);
+    return 0;
+  });
+}

@@ -1,0 +1,48 @@
+#include "io/scene/VeryWeakSphSpec.hpp"
+
+#include "kernels/KernelFactory.hpp"
+
+namespace mfwave {
+
+void addVeryWeakSphKeys(SceneSchema& schema) {
+  using T = ValueType;
+  const std::string when = "name = very_weak_sph";
+  schema.addChoice("method.name", "very_weak_sph");
+  schema.add("method.kernel", T::String).defaultsTo("\"cubic_spline\"").oneOf(kernelNames()).when(when)
+      .describedAs("SPH kernel W (Ding-Long-Wu use the cubic spline, eq. 38)");
+  schema.add("method.smoothing_length_ratio", T::Number).withUnit("-").defaultsTo("1.0").positive().when(when)
+      .describedAs("smoothing length h / geometry.spacing (the paper: h = dx)");
+  schema.add("method.boundary_volume_correction", T::Boolean).defaultsTo("true").when(when)
+      .describedAs("volume fractions FV of eqs. 24-25 (1/2, 1/4, 1/8 on faces, edges, corners)");
+  schema.add("method.boundary_area_correction", T::Boolean).defaultsTo("true").when(when)
+      .describedAs("area fractions FA of eqs. 26-27 (1/2 per facet at edges, 1/4 at corners)");
+  schema.add("method.kernel_correction", T::Boolean).defaultsTo("true").when(when)
+      .describedAs("boundary kernel correction alpha of eqs. 28-29 (a lumped mass rho / alpha)");
+  schema.add("method.boundary_integral", T::Boolean).defaultsTo("true").when(when)
+      .describedAs("the boundary integral of eq. 22 (Gamma terms)");
+  schema.add("method.dashpot_lumping", T::String).defaultsTo("\"particle\"").oneOf({"particle", "consistent"})
+      .when(when)
+      .describedAs("transmitting dashpots: on the particle's own velocity (eq. 32) or through the traction sum");
+  schema.add("method.smoothing_rate", T::Number).withUnit("1/s").defaultsTo("0.0").nonNegative().when(when)
+      .describedAs("conservative smoothing of the velocity (eq. 33), per unit time: alpha = 1 - exp(-rate dt) per step");
+  schema.add("method.deconvolution", T::Boolean).defaultsTo("true").when(when)
+      .describedAs("report probe values sharpened by the deconvolution of eq. 35 (the raw values are kept too)");
+}
+
+VeryWeakSphSpec readVeryWeakSph(SceneReader& reader, const Material& material) {
+  const SceneTable method = reader.section("method");
+  VeryWeakSphSpec spec;
+  spec.kernel = method.string("kernel");
+  spec.smoothingLengthRatio = method.number("smoothing_length_ratio");
+  spec.options.material = material;
+  spec.options.boundaryVolumeCorrection = method.boolean("boundary_volume_correction");
+  spec.options.boundaryAreaCorrection = method.boolean("boundary_area_correction");
+  spec.options.boundaryKernelCorrection = method.boolean("kernel_correction");
+  spec.options.boundaryIntegral = method.boolean("boundary_integral");
+  spec.dashpotLumping = method.string("dashpot_lumping");
+  spec.smoothingRate = method.number("smoothing_rate");
+  spec.deconvolution = method.boolean("deconvolution");
+  return spec;
+}
+
+}  // namespace mfwave

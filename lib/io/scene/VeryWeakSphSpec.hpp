@@ -1,0 +1,30 @@
+#pragma once
+// [method] options of the very weak form SPH (name = "very_weak_sph"), registered by the drivers
+// that run it (addVeryWeakSphKeys) and read after the common sections. Every boundary correction,
+// the dashpot lumping, the conservative smoothing and the deconvolution of Ding-Long-Wu is a key,
+// so that its effect can be measured from the scene alone.
+
+#include "io/scene/SceneReader.hpp"
+#include "io/scene/SceneSchema.hpp"
+#include "methods/very_weak_sph/VeryWeakSphOptions.hpp"
+
+#include <string>
+
+namespace mfwave {
+
+struct VeryWeakSphSpec {
+  std::string kernel = "cubic_spline";   // kernelNames()
+  Real smoothingLengthRatio = 1;         // h / dx
+  VeryWeakSphOptions options;            // material and the four correction switches
+  std::string dashpotLumping = "particle";  // "particle" (eq. 32) or "consistent"
+  Real smoothingRate = 0;                // 1/s; per step alpha = 1 - exp(-rate dt) (eq. 33)
+  bool deconvolution = true;             // report probes sharpened by eq. (35)
+};
+
+// Adds "very_weak_sph" to method.name and its option keys.
+void addVeryWeakSphKeys(SceneSchema& schema);
+
+// Reads the options when method.name is very_weak_sph; `material` from the scene's [material].
+VeryWeakSphSpec readVeryWeakSph(SceneReader& reader, const Material& material);
+
+}  // namespace mfwave
