@@ -1,13 +1,15 @@
 #!/usr/bin/python3
-"""Plot the lamb3d study: the paper's Fig. 1-4 (vertical velocity at the load centre and at the
-receiver against the exact half-space response, with and without deconvolution, and with the
-stronger filter) and the accuracy-cost trade (error against wall time).
+"""Plot the lamb3d study: the paper's Fig. 1-4 with the published scheme (vertical velocity at the
+load centre and at the receiver against the exact half-space response, with and without
+deconvolution, with the stronger filter), the scene's variant at every spacing, and the
+accuracy-cost trade of both variants (error against wall time, error against spacing).
 
 Usage: /usr/bin/python3 analysis/plot_lamb3d.py OUT_DIR
-Reads OUT_DIR/cases.csv and OUT_DIR/<case>-probes.csv; writes OUT_DIR/lamb3d-figures.png and,
-when the study has more than one spacing, OUT_DIR/lamb3d-cost.png.
+Reads OUT_DIR/cases.csv, OUT_DIR/<case>-probes.csv and OUT_DIR/exact.csv; writes
+OUT_DIR/lamb3d-figures.png and, when there is more than one spacing, OUT_DIR/lamb3d-cost.png.
 """
 import csv
+import math
 import os
 import sys
 
@@ -15,15 +17,16 @@ from plotting import finish_axes, save_atomically  # selects the Agg backend fir
 
 import matplotlib.pyplot as plt  # noqa: E402
 
+PROBES = ("centre", "receiver")
+TITLES = {"centre": "load centre", "receiver": "receiver 2 units from the centre"}
+
 
 def read_table(path):
     with open(path) as f:
-        rows = list(csv.DictReader(f))
-    return rows
+        return list(csv.DictReader(f))
 
 
-def read_probes(out_dir, case):
-    path = os.path.join(out_dir, "exact.csv" if case == "exact" else f"{case}-probes.csv")
+def read_columns(path):
     if not os.path.exists(path):
         return None
     with open(path) as f:
@@ -33,69 +36,114 @@ def read_probes(out_dir, case):
     return {name: list(col) for name, col in zip(header, columns)}
 
 
-def panel(ax, data, probe, title, series, fine=None):
-    t = data["t [s]"]
-    if fine is not None and f"{probe}_exact" in fine:
-        ax.plot(fine["t [s]"], fine[f"{probe}_exact"], "k-", lw=2, label="exact (Pekeris, integrated)")
-    elif f"{probe}_exact" in data:
-        ax.plot(t, data[f"{probe}_exact"], "k-", lw=2, label="exact (Pekeris, integrated)")
-    for column, style, label in series:
-        key = f"{probe}_{column}"
-        if key in data:
-            ax.plot(t, data[key], style, label=label)
-    ax.set(xlabel="t", ylabel="vertical velocity v_z", title=title)
+def exact_curve(ax, fine, data, probe):
+    source = fine if fine is not None and f"{probe}_exact" in fine else data
+    if source is not None and f"{probe}_exact" in source:
+        ax.plot(source["t [s]"], source[f"{probe}_exact"], "k-", lw=2, label="exact (Pekeris, integrated)")
+
+
+def curve(ax, data, probe, column, style, label, **kw):
+    if data is not None and f"{probe}_{column}" in data:
+        ax.plot(data["t [s]"], data[f"{probe}_{column}"], style, label=label, **kw)
+
+
+def spacing_cases(cases, variant):
+    rows = [c for c in cases if c["variant"] == variant and c["case"] not in ("strong_filter", "free_block")]
+    return sorted(rows, key=lambda c: -float(c["spacing [m]"]))
 
 
 def figures(out_dir, cases):
-    names = [c["case"] for c in cases]
-    paper = read_probes(out_dir, "paper")
-    strong = read_probes(out_dir, "strong_filter") if "strong_filter" in names else None
-    fine = read_probes(out_dir, "exact")
-    fig, axes = plt.subplots(2, 2, figsize=(13, 9))
-    axes = axes.ravel()
-    panel(axes[0], paper, "centre", "Fig. 1: load centre", [("deconvolved", "C0-", "very weak SPH, deconvolved")], fine)
-    panel(axes[1], paper, "receiver", "Fig. 2: receiver 2 units from the centre",
-          [("deconvolved", "C0-", "very weak SPH, deconvolved"), ("raw", "C1--", "without deconvolution")], fine)
-    panel(axes[2], paper, "centre", "Fig. 3: load centre, with and without deconvolution",
-          [("deconvolved", "C0-", "deconvolved (eq. 35)"), ("raw", "C1--", "without deconvolution")], fine)
-    if strong is not None:
-        panel(axes[3], strong, "centre", "Fig. 4: load centre, stronger filter",
-              [("deconvolved", "C2-", "strong filter, deconvolved"), ("raw", "C3--", "strong filter, raw")], fine)
-        axes[3].plot(paper["t [s]"], paper["centre_deconvolved"], "C0:", label="paper filter, deconvolved")
-    else:
-        axes[3].set_visible(False)
-    finish_axes([a for a in axes if a.get_visible()])
+    fine = read_columns(os.path.join(out_dir, "exact.csv"))
+    main_variant = cases[0]["variant"]
+    dx0 = float(cases[0]["spacing [m]"])
+    published = [c for c in spacing_cases(cases, "published") if float(c["spacing [m]"]) == dx0]
+    paper = read_columns(os.path.join(out_dir, f"{published[0]['case']}-probes.csv")) if published else None
+    strong = read_columns(os.path.join(out_dir, "strong_filter-probes.csv"))
+    rows = (2 if paper is not None else 0) + (1 if main_variant != "published" else 0)
+    fig, axes = plt.subplots(rows, 2, figsize=(13, 4.3 * rows), squeeze=False)
+    used = []
+    r = 0
+    if paper is not None:
+        for col, probe in enumerate(PROBES):
+            ax = axes[r][col]
+            exact_curve(ax, fine, paper, probe)
+            curve(ax, paper, probe, "reported", "C0-", "published, deconvolved")
+            if probe == "receiver":
+                curve(ax, paper, probe, "raw", "C1--", "published, without deconvolution")
+            ax.set_title(f"Fig. {col + 1}: {TITLES[probe]} (published scheme, dx = {dx0:g})")
+            used.append(ax)
+        ax = axes[r + 1][0]
+        exact_curve(ax, fine, paper, "centre")
+        curve(ax, paper, "centre", "reported", "C0-", "deconvolved (eq. 35)")
+        curve(ax, paper, "centre", "raw", "C1--", "without deconvolution")
+        ax.set_title("Fig. 3: load centre, with and without deconvolution")
+        used.append(ax)
+        ax = axes[r + 1][1]
+        if strong is not None:
+            exact_curve(ax, fine, strong, "centre")
+            curve(ax, strong, "centre", "reported", "C2-", "strong filter, deconvolved")
+            curve(ax, strong, "centre", "raw", "C3--", "strong filter, raw")
+            curve(ax, paper, "centre", "reported", "C0:", "paper filter, deconvolved")
+            ax.set_title("Fig. 4: load centre, stronger filter (alpha = 0.5 per step)")
+            used.append(ax)
+        else:
+            ax.set_visible(False)
+        r += 2
+    if main_variant != "published":
+        for col, probe in enumerate(PROBES):
+            ax = axes[r][col]
+            exact_curve(ax, fine, None, probe)
+            for i, c in enumerate(spacing_cases(cases, main_variant)):
+                data = read_columns(os.path.join(out_dir, f"{c['case']}-probes.csv"))
+                curve(ax, data, probe, "reported", f"C{i}-", f"{main_variant}, dx = {float(c['spacing [m]']):g}")
+            ax.set_title(f"{main_variant} variant: {TITLES[probe]}")
+            used.append(ax)
+    for ax in used:
+        ax.set(xlabel="t", ylabel="vertical velocity v_z")
+    finish_axes(used)
     fig.tight_layout()
     save_atomically(fig, os.path.join(out_dir, "lamb3d-figures.png"))
 
 
 def cost(out_dir, cases):
-    spacing_cases = [c for c in cases if c["case"] == "paper" or c["case"].startswith("spacing_")]
-    if len(spacing_cases) < 2:
+    variants = []
+    for c in cases:
+        if c["variant"] not in variants:
+            variants.append(c["variant"])
+    if max(len(spacing_cases(cases, v)) for v in variants) < 2:
         return
-    spacing_cases.sort(key=lambda c: -float(c["spacing [m]"]))
     fig, axes = plt.subplots(1, 2, figsize=(13, 4.8))
-    colours = {("centre", "deconvolved"): "C0", ("centre", "raw"): "C1",
-               ("receiver", "deconvolved"): "C3", ("receiver", "raw"): "C2"}
-    for probe, marker in (("centre", "o"), ("receiver", "s")):
-        key = f"{probe}_deconvolved_relative_l2"
-        if key not in cases[0] or cases[0][key] == "":
-            continue
-        wall = [float(c["wall [s]"]) for c in spacing_cases]
-        dx = [float(c["spacing [m]"]) for c in spacing_cases]
-        for kind, style in (("deconvolved", "-"), ("raw", "--")):
-            err = [float(c[f"{probe}_{kind}_relative_l2"]) for c in spacing_cases]
-            colour = colours[(probe, kind)]
-            axes[0].loglog(wall, err, marker + style, color=colour, label=f"{probe}, {kind}")
-            axes[1].loglog(dx, err, marker + style, color=colour, label=f"{probe}, {kind}")
-        for c in cases:
-            if c["case"] == "free_block":
-                axes[0].loglog([float(c["wall [s]"])], [float(c[key])], marker, color="k", mfc="none", ms=12,
-                               label=f"{probe}, deconvolved, larger free block (no dashpots)")
-    for c in spacing_cases:
-        axes[0].annotate(f"dx = {float(c['spacing [m]']):g}",
-                         (float(c["wall [s]"]), float(c["centre_deconvolved_relative_l2"])),
-                         textcoords="offset points", xytext=(4, -12), fontsize=8)
+    markers = {"centre": "o", "receiver": "s"}
+    for vi, variant in enumerate(variants):
+        rows = spacing_cases(cases, variant)
+        style = "-" if vi == 0 else "--"
+        for pi, probe in enumerate(PROBES):
+            key = f"{probe}_reported_relative_l2"
+            if key not in rows[0] or rows[0][key] == "":
+                continue
+            colour = f"C{2 * vi + pi}"
+            wall = [float(c["wall [s]"]) for c in rows]
+            dx = [float(c["spacing [m]"]) for c in rows]
+            err = [float(c[key]) for c in rows]
+            label = f"{variant}, {probe}"
+            if len(rows) > 1 and err[-1] > 0 and err[-2] > 0:
+                label += f" (order {math.log(err[-2] / err[-1]) / math.log(dx[-2] / dx[-1]):.2f})"
+            axes[0].loglog(wall, err, markers[probe] + style, color=colour, label=label)
+            axes[1].loglog(dx, err, markers[probe] + style, color=colour, label=label)
+            if vi == 0:
+                for c in rows:
+                    axes[0].annotate(f"dx = {float(c['spacing [m]']):g}", (float(c["wall [s]"]), float(c[key])),
+                                     textcoords="offset points", xytext=(4, -12), fontsize=7)
+    for c in cases:
+        if c["case"] == "free_block":
+            for probe in PROBES:
+                axes[0].loglog([float(c["wall [s]"])], [float(c[f"{probe}_reported_relative_l2"])],
+                               markers[probe], color="k", mfc="none", ms=12,
+                               label=f"{c['variant']}, {probe}: larger free block, no dashpots")
+    dx_all = sorted({float(c["spacing [m]"]) for c in cases})
+    if len(dx_all) > 1:
+        ref = [0.05 * (d / dx_all[0]) ** 2 for d in dx_all]
+        axes[1].loglog(dx_all, ref, "k:", label="dx^2")
     axes[0].set(xlabel="wall time [s] (assembly + run)", ylabel="relative L2 error of v_z, 0 <= t <= 6",
                 title="accuracy against cost")
     axes[1].set(xlabel="spacing dx (h = dx)", ylabel="relative L2 error of v_z", title="convergence")

@@ -24,6 +24,7 @@
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -45,12 +46,12 @@ Real csrMiB(const SparseMatrix& m) {
           static_cast<Real>(m.outerSize() + 1) * sizeof(int)) / (1024.0 * 1024.0);
 }
 
-// Every `every` steps: each probe's value in the state (the kernel estimate u^h advanced by
-// eq. (23)) and its deconvolved value (eq. (35)) from the probe particle's row of the
-// deconvolution matrix.
+// Every `every` steps: each probe's value in the state and the value the method reports: for the
+// published variant the deconvolved value (eq. (35)) from the probe particle's row of the
+// deconvolution matrix, else the state itself.
 class LambProbes : public Observer {
  public:
-  LambProbes(std::vector<Probe> probes, const ParticleMatrix& deconvolution)
+  LambProbes(std::vector<Probe> probes, const ParticleMatrix* deconvolution)
       : probes_(std::move(probes)), deconvolution_(deconvolution), raw_(probes_.size()), sharp_(probes_.size()) {}
 
   void observe(const StateView& s) override {
@@ -59,18 +60,20 @@ class LambProbes : public Observer {
     for (std::size_t i = 0; i < probes_.size(); ++i) {
       const Vector& field = probes_[i].quantity == ProbeQuantity::Velocity ? s.velocity : s.displacement;
       raw_[i].push_back(field[D * probes_[i].particle + probes_[i].component]);
-      sharp_[i].push_back(deconvolveAt(deconvolution_, probes_[i].particle, field, D, probes_[i].component));
+      sharp_[i].push_back(deconvolution_ ? deconvolveAt(*deconvolution_, probes_[i].particle, field, D,
+                                                        probes_[i].component)
+                                         : raw_[i].back());
     }
   }
   void end(const StateView& s) override { observe(s); }
 
   const std::vector<Real>& times() const { return times_; }
   const std::vector<Real>& raw(std::size_t i) const { return raw_[i]; }
-  const std::vector<Real>& deconvolved(std::size_t i) const { return sharp_[i]; }
+  const std::vector<Real>& reported(std::size_t i) const { return sharp_[i]; }
 
  private:
   std::vector<Probe> probes_;
-  const ParticleMatrix& deconvolution_;
+  const ParticleMatrix* deconvolution_;
   std::vector<Real> times_;
   std::vector<std::vector<Real>> raw_, sharp_;
 };
@@ -165,6 +168,35 @@ std::vector<TractionTerm> tractionTerms(const Scene& scene, const ParticleSet<D>
   return terms;
 }
 
+// The exact response to the load spread over the surface by the kernel: the square's response
+// averaged over in-plane shifts z with the kernel's plane density int W(z, s) ds (normalised). A
+// method whose surface tractions act through W cannot resolve the load more sharply than this.
+std::vector<Real> kernelSmoothedExact(const LambSquareLoad& exact, const Kernel& kernel, Real px, Real py,
+                                      const std::vector<Real>& times, bool velocity) {
+  const Real radius = kernel.supportRadius();
+  constexpr int inPlane = 12, normal = 40;
+  std::vector<std::array<Real, 3>> shifts;
+  Real total = 0;
+  for (int i = -inPlane; i <= inPlane; ++i)
+    for (int j = -inPlane; j <= inPlane; ++j) {
+      const Real zx = radius * i / inPlane, zy = radius * j / inPlane;
+      Real density = 0;
+      for (int k = -normal; k <= normal; ++k) density += kernel.value(Vec3(zx, zy, radius * k / normal));
+      if (density > 0) {
+        shifts.push_back({zx, zy, density});
+        total += density;
+      }
+    }
+  std::vector<Real> smoothed;
+  for (const Real t : times) {
+    Real sum = 0;
+    for (const auto& [zx, zy, weight] : shifts)
+      sum += weight * (velocity ? exact.velocity(px - zx, py - zy, t) : exact.displacement(px - zx, py - zy, t));
+    smoothed.push_back(sum / total);
+  }
+  return smoothed;
+}
+
 void checkSupported(const Scene& scene) {
   for (std::size_t i = 0; i < scene.loads.size(); ++i)
     if (scene.loads[i].type != LoadType::SurfacePatch)
@@ -178,14 +210,14 @@ void writeProbes(const std::string& path, const std::vector<Probe>& probes, cons
   std::ostream& out = file.stream();
   out << "t [s]";
   for (std::size_t i = 0; i < probes.size(); ++i) {
-    out << ',' << probes[i].name << "_raw," << probes[i].name << "_deconvolved";
+    out << ',' << probes[i].name << "_raw," << probes[i].name << "_reported";
     if (!exact[i].empty()) out << ',' << probes[i].name << "_exact";
   }
   out << '\n' << std::setprecision(10);
   for (std::size_t k = 0; k < recorded.times().size(); ++k) {
     out << recorded.times()[k];
     for (std::size_t i = 0; i < probes.size(); ++i) {
-      out << ',' << recorded.raw(i)[k] << ',' << recorded.deconvolved(i)[k];
+      out << ',' << recorded.raw(i)[k] << ',' << recorded.reported(i)[k];
       if (!exact[i].empty()) out << ',' << exact[i][k];
     }
     out << '\n';
@@ -207,21 +239,30 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   const ParticleSet<D> particles = buildParticles<D>(settings.geometry);
   result.particles = particles.physicalCount();
   result.ghosts = particles.size() - particles.physicalCount();
-  result.smoothingLength = study.method.smoothingLengthRatio * settings.geometry.spacing;
-  const std::unique_ptr<Kernel> kernel = makeKernel(study.method.kernel, D, result.smoothingLength);
+  const VeryWeakSphSpec& spec = settings.method;
+  result.smoothingLength = spec.smoothingLengthRatio * settings.geometry.spacing;
+  const std::unique_ptr<Kernel> kernel = makeKernel(spec.kernel, D, result.smoothingLength);
   const NeighbourList neighbours =
       buildNeighbourList(CellList<D>(particles, kernel->supportRadius()), particles.physicalCount());
   result.meanNeighbours = neighbours.meanCount();
 
-  // discretisation: the operator (eqs. 21-22), lumped mass (eqs. 28-29), dashpots (eqs. 31-32)
-  VeryWeakSph<D> method = assembleVeryWeakSph<D>(particles, neighbours, *kernel, study.method.options);
+  // discretisation: the operator (eqs. 21-22, corrected rows for the consistent variant), the mass
+  // (rho / alpha, eqs. 28-29, for the published one), dashpots (eqs. 31-32)
+  VeryWeakSphOptions options = spec.options;
+  const bool consistent = spec.variant == "consistent";
+  options.variant = consistent ? VeryWeakSphVariant::Consistent : VeryWeakSphVariant::Published;
+  VeryWeakSph<D> method = assembleVeryWeakSph<D>(particles, neighbours, *kernel, options);
   method.data.operatorMatrix = SparseMatrix();  // the system holds -K; one copy is enough
   LinearSecondOrderSystem& system = method.system;
   const std::uint8_t transmitting = settings.freeFaces ? 0 : facesWith(scene.boundaries, BoundaryType::Transmitting);
-  if (transmitting != 0)
+  if (transmitting != 0 && consistent)
+    // The dashpot tractions go through the corrected facet blocks, like every traction.
+    system.setDamping(dashpotsThroughTractionMatrix<D>(method.data.tractionMatrix, method.data.facets,
+                                                       options.material, transmitting));
+  else if (transmitting != 0)
     system.setDamping(assembleTransmittingDamping<D>(
-        particles, neighbours, *kernel, method.data.facets, study.method.options.material, transmitting,
-        study.method.dashpotLumping == "consistent" ? DashpotLumping::Consistent : DashpotLumping::Particle));
+        particles, neighbours, *kernel, method.data.facets, options.material, transmitting,
+        spec.dashpotLumping == "consistent" ? DashpotLumping::Consistent : DashpotLumping::Particle));
 
   // loads (eq. 19): fixed vectors T t scaled by their time functions
   const Scene caseScene = [&] {
@@ -256,9 +297,9 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   std::unique_ptr<SecondOrderIntegrator> integrator;
   if (scene.integrator.name == "central_difference") {
     auto central = std::make_unique<CentralDifference>();
-    if (settings.smoothingRate > 0) {
+    if (spec.smoothingRate > 0) {
       smoothing.emplace(smoothingMatrix<D>(particles, neighbours, *kernel, method.data.volume), D,
-                        settings.smoothingRate);
+                        spec.smoothingRate, spec.smoothingOrder);
       central->setVelocityFilter([&smoothing](Real step, Vector& v) { smoothing->apply(step, v); });
     }
     if (!prescribed.dofs.empty())
@@ -269,7 +310,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
       });
     integrator = std::move(central);
   } else {
-    if (settings.smoothingRate > 0)
+    if (spec.smoothingRate > 0)
       throw InputError("method.smoothing_rate", "conservative smoothing is applied by the central_difference "
                                                 "integrator only; set it to 0 to run " + scene.integrator.name);
     if (!prescribed.dofs.empty())
@@ -283,9 +324,10 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   integrator->initialise(system, 0, u0, Vector::Zero(system.size()), dt);
 
   // observers: stability, probes (raw and deconvolved), frames
-  const ParticleMatrix deconvolution = deconvolutionMatrix<D>(particles, neighbours, *kernel, method.data.volume);
+  const ParticleMatrix deconvolution =
+      spec.deconvolution ? deconvolutionMatrix<D>(particles, neighbours, *kernel, method.data.volume) : ParticleMatrix();
   const std::vector<Probe> probes = resolveProbes(scene.probes, particles);
-  LambProbes recorder(probes, deconvolution);
+  LambProbes recorder(probes, spec.deconvolution ? &deconvolution : nullptr);
   result.assemblySeconds = secondsSince(assemblyStart);
 
   StabilityMonitor monitor(scene.stability.options(D));
@@ -340,8 +382,14 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
         r.hasExact = true;
         r.raw = compareSignals(recorder.times(), recorder.raw(i), exactSeries[i], study.errorWindow,
                                study.arrivalFraction);
-        r.deconvolved = compareSignals(recorder.times(), recorder.deconvolved(i), exactSeries[i], study.errorWindow,
-                                       study.arrivalFraction);
+        r.reported = compareSignals(recorder.times(), recorder.reported(i), exactSeries[i], study.errorWindow,
+                                    study.arrivalFraction);
+        if (study.kernelFloor)
+          r.kernelFloor = compareSignals(recorder.times(),
+                                         kernelSmoothedExact(*exact, *kernel, px, py, recorder.times(),
+                                                             probes[i].quantity == ProbeQuantity::Velocity),
+                                         exactSeries[i], study.errorWindow, study.arrivalFraction)
+                              .relativeL2;
       } else {
         result.notes.push_back("probe " + r.name + ": no exact reference (not the normal component on the loaded face)");
       }

@@ -7,6 +7,7 @@
 #include "io/scene/Scene.hpp"
 #include "io/scene/VeryWeakSphSpec.hpp"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -14,18 +15,22 @@ namespace mfwave::lamb3d {
 
 // What distinguishes one run from the scene's own set-up.
 struct CaseSettings {
-  std::string name;                 // "paper", "strong_filter", "free_block", "spacing_0.25", ...
+  std::string name;                 // "consistent_0.5", "published_0.25", "strong_filter", "free_block", ...
   GeometrySpec geometry;            // box and spacing of this run
   bool freeFaces = false;           // every face free (the large-block comparison)
-  Real smoothingRate = 0;           // 1/s, eq. (33)
+  VeryWeakSphSpec method;           // variant, corrections, smoothing (rate at this spacing), deconvolution
   bool writeFrames = false;         // VTK / PNG frames as the scene's [output] asks
 };
 
 struct ProbeResult {
   std::string name;
   bool hasExact = false;
-  SignalErrors raw;            // the state u^h against the exact response
-  SignalErrors deconvolved;    // sharpened by eq. (35)
+  SignalErrors raw;        // the state against the exact response
+  SignalErrors reported;   // what the method reports: deconvolved by eq. (35) when it is on, else the state
+  // Relative L2 distance of the exact response to the load spread over the surface by the kernel
+  // (its plane density) from the exact response: the part of the error that the kernel's width
+  // alone explains. NaN when not computed.
+  Real kernelFloor = std::numeric_limits<Real>::quiet_NaN();
 };
 
 struct CaseResult {
@@ -51,12 +56,12 @@ struct CaseResult {
 
 struct StudySettings {
   Scene scene;
-  VeryWeakSphSpec method;
   Real errorWindow = 6;           // s: the errors are over 0 <= t <= errorWindow
   Real arrivalFraction = 0.1;     // arrival: first |v| >= fraction * |exact peak|
+  bool kernelFloor = false;       // compute ProbeResult::kernelFloor
 };
 
-// Runs one case and writes "<folder>/<case>-probes.csv" (time, then raw, deconvolved and exact
+// Runs one case and writes "<folder>/<case>-probes.csv" (time, then raw, reported and exact
 // columns per probe) and, if asked, frames "<case>_NNNNNN.vtp" with "<case>.pvd".
 CaseResult runCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
                    bool progress);

@@ -5,11 +5,13 @@
 // response of the half-space (Pekeris, integrated over the square and convolved with the pulse).
 //
 // Cases, each one run of the same scene:
-//   paper          the scene as given (the paper's Fig. 1-3: raw and deconvolved probes), frames
-//   strong_filter  study.strong_smoothing_rate instead of method.smoothing_rate (Fig. 4)
-//   free_block     a larger block with all faces free (what the transmitting boundary saves)
-//   spacing_<dx>   every other entry of study.spacings (accuracy against cost)
-// Writes cases.csv (errors and cost per case), <case>-probes.csv, frames, summary.json.
+//   <variant>_<dx>   the scene's variant (method.variant: consistent by default) at geometry.spacing
+//                    (with frames) and at every other entry of study.spacings
+//   published_<dx>   with study.compare_published: the scheme as printed, with the paper's filter and
+//                    deconvolution, at every spacing (at the scene's spacing: the paper's Fig. 1-3)
+//   strong_filter    the published scheme with study.strong_smoothing_rate (the paper's Fig. 4)
+//   free_block       a larger block with all faces free (what the transmitting boundary saves)
+// Writes cases.csv (errors and cost per case), <case>-probes.csv, exact.csv, frames, summary.json.
 // Results: docs/studies/lamb3d.md. Plot: /usr/bin/python3 analysis/plot_lamb3d.py OUT.
 //
 //   lamb3d --scene data/scenes/lamb3d.toml [--set 'study.spacings=[0.5]'] [--out DIR]
@@ -25,6 +27,7 @@
 #include "io/scene/Format.hpp"
 #include "io/scene/LoadScene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -48,8 +51,14 @@ SceneSchema lambSchema() {
       .describedAs("errors are measured over 0 <= t <= error_window");
   schema.add("study.arrival_fraction", T::Number).withUnit("-").defaultsTo("0.1").between(0, 1, false, false)
       .describedAs("arrival time: first |v| >= arrival_fraction * |exact peak|");
+  schema.add("study.kernel_floor", T::Boolean).defaultsTo("true")
+      .describedAs("report the error the kernel's spreading of the load alone explains (exact vs kernel-smoothed exact)");
+  schema.add("study.compare_published", T::Boolean).defaultsTo("true")
+      .describedAs("also run the published variant (the paper's settings) at every spacing, and the figure cases");
+  schema.add("study.published_smoothing_rate", T::Number).withUnit("1/s").defaultsTo("0.77").nonNegative()
+      .describedAs("eq. 33 rate of the published cases (alpha = 0.1 per step at dt = 0.136)");
   schema.add("study.strong_smoothing_rate", T::Number).withUnit("1/s").defaultsTo("0.0").nonNegative()
-      .describedAs("smoothing rate of the strong_filter case (the paper's Fig. 4); 0 skips the case");
+      .describedAs("smoothing rate of the published strong_filter case (the paper's Fig. 4); 0 skips the case");
   schema.add("study.free_block_lower", T::NumberArray).withUnit("m").defaultsToNote("no free_block case")
       .describedAs("lower corner of the larger all-free block (with free_block_upper)");
   schema.add("study.free_block_upper", T::NumberArray).withUnit("m").defaultsToNote("no free_block case")
@@ -62,10 +71,29 @@ struct Plan {
   std::vector<CaseSettings> cases;
 };
 
-std::string spacingName(Real dx) {
+std::string caseName(const std::string& variant, Real dx) {
   std::ostringstream s;
-  s << "spacing_" << dx;
+  s << variant << '_' << dx;
   return s.str();
+}
+
+// The published scheme with the paper's settings (eq. 33 filter, deconvolution, the alpha and
+// boundary corrections as the scene sets them).
+VeryWeakSphSpec publishedSpec(const VeryWeakSphSpec& scene, Real rate) {
+  VeryWeakSphSpec spec = scene;
+  spec.variant = "published";
+  spec.smoothingRate = rate;
+  spec.smoothingOrder = 1;
+  spec.smoothingScalesWithSpacing = false;
+  spec.deconvolution = true;
+  return spec;
+}
+
+// The spec at spacing dx: the smoothing rate scaled when the scene asks.
+VeryWeakSphSpec atSpacing(VeryWeakSphSpec spec, Real dx, Real dx0) {
+  spec.smoothingRate = spec.smoothingRateAt(dx, dx0);
+  spec.smoothingScalesWithSpacing = false;
+  return spec;
 }
 
 Plan readPlan(SceneReader& reader) {
@@ -75,18 +103,43 @@ Plan readPlan(SceneReader& reader) {
   const Scene& scene = study.scene;
   if (scene.info.dimension != 3) reader.fail("scene.dimension", "lamb3d is a 3-D study");
   if (scene.method.name != "very_weak_sph") reader.fail("method.name", "lamb3d runs the very_weak_sph method");
-  study.method = readVeryWeakSph(reader, scene.material.material());
+  const VeryWeakSphSpec main = readVeryWeakSph(reader, scene.material.material());
   study.errorWindow = reader.number("study.error_window");
   study.arrivalFraction = reader.number("study.arrival_fraction");
+  study.kernelFloor = reader.boolean("study.kernel_floor");
   for (std::size_t i = 0; i < scene.loads.size(); ++i)
     if (scene.loads[i].type != LoadType::SurfacePatch)
       reader.fail("load[" + std::to_string(i) + "].type", "lamb3d takes surface_patch loads");
-
-  const GeometrySpec& g = scene.geometry;
-  CaseSettings paper{"paper", g, false, study.method.smoothingRate, true};
-  plan.cases.push_back(paper);
+  const bool comparePublished = reader.boolean("study.compare_published") && main.variant != "published";
+  const VeryWeakSphSpec published = publishedSpec(main, reader.number("study.published_smoothing_rate"));
   const Real strong = reader.number("study.strong_smoothing_rate");
-  if (strong > 0) plan.cases.push_back({"strong_filter", g, false, strong, false});
+
+  // Spacings, the scene's first; each must divide the box.
+  const GeometrySpec& g = scene.geometry;
+  std::vector<GeometrySpec> grids{g};
+  const std::vector<Real> spacings = reader.has("study.spacings") ? reader.numbers("study.spacings") : std::vector<Real>{};
+  for (std::size_t i = 0; i < spacings.size(); ++i) {
+    const Real dx = spacings[i];
+    const std::string at = "study.spacings[" + std::to_string(i) + "]";
+    if (!(dx > 0)) reader.fail(at, "must be positive, got " + scene::formatNumber(dx));
+    if (std::abs(dx - g.spacing) <= 1e-12 * g.spacing) continue;
+    try {
+      grids.push_back(g.withLattice(g.lower, g.upper, dx));
+    } catch (const InputError& e) {
+      reader.fail(at, e.what());
+    }
+  }
+  std::sort(grids.begin() + 1, grids.end(), [](const GeometrySpec& a, const GeometrySpec& b) { return a.spacing > b.spacing; });
+
+  // At the scene's spacing: the main variant (with frames), the published figure cases, the free
+  // block; then every other spacing, for each variant, cheapest first.
+  plan.cases.push_back({caseName(main.variant, g.spacing), g, false, atSpacing(main, g.spacing, g.spacing), true});
+  if (comparePublished) plan.cases.push_back({caseName("published", g.spacing), g, false, published, false});
+  if (strong > 0 && (comparePublished || main.variant == "published")) {
+    VeryWeakSphSpec strongSpec = main.variant == "published" ? atSpacing(main, g.spacing, g.spacing) : published;
+    strongSpec.smoothingRate = strong;
+    plan.cases.push_back({"strong_filter", g, false, strongSpec, false});
+  }
   if (reader.has("study.free_block_lower") || reader.has("study.free_block_upper")) {
     const std::vector<Real> lower = reader.numbers("study.free_block_lower", 3);
     const std::vector<Real> upper = reader.numbers("study.free_block_upper", 3);
@@ -94,22 +147,16 @@ Plan readPlan(SceneReader& reader) {
       if (lower[a] > g.lower[a] || upper[a] < g.upper[a])
         reader.fail("study.free_block_lower", "the free block must contain the scene's box " + g.describeBox());
     try {
-      plan.cases.push_back({"free_block", g.withLattice(lower, upper, g.spacing), true, study.method.smoothingRate, false});
+      plan.cases.push_back({"free_block", g.withLattice(lower, upper, g.spacing), true,
+                            atSpacing(main, g.spacing, g.spacing), false});
     } catch (const InputError& e) {
       reader.fail("study.free_block_upper", e.what());
     }
   }
-  std::vector<Real> spacings = reader.has("study.spacings") ? reader.numbers("study.spacings") : std::vector<Real>{};
-  for (std::size_t i = 0; i < spacings.size(); ++i) {
-    const Real dx = spacings[i];
-    const std::string at = "study.spacings[" + std::to_string(i) + "]";
-    if (!(dx > 0)) reader.fail(at, "must be positive, got " + scene::formatNumber(dx));
-    if (std::abs(dx - g.spacing) <= 1e-12 * g.spacing) continue;  // the paper case
-    try {
-      plan.cases.push_back({spacingName(dx), g.withLattice(g.lower, g.upper, dx), false, study.method.smoothingRate, false});
-    } catch (const InputError& e) {
-      reader.fail(at, e.what());
-    }
+  for (std::size_t i = 1; i < grids.size(); ++i) {
+    const Real dx = grids[i].spacing;
+    plan.cases.push_back({caseName(main.variant, dx), grids[i], false, atSpacing(main, dx, g.spacing), false});
+    if (comparePublished) plan.cases.push_back({caseName("published", dx), grids[i], false, published, false});
   }
   return plan;
 }
@@ -117,27 +164,30 @@ Plan readPlan(SceneReader& reader) {
 void writeCases(const std::string& path, const std::vector<CaseResult>& results) {
   AtomicFile file(path);
   std::ostream& out = file.stream();
-  out << "case,spacing [m],h [m],particles,ghosts,mean_neighbours,operator_nonzeros,operator [MiB],"
+  out << "case,variant,smoothing_rate [1/s],spacing [m],h [m],particles,ghosts,mean_neighbours,operator_nonzeros,operator [MiB],"
          "stable_step_estimate [s],stable_step_gershgorin [s],dt [s],steps,assembly [s],run [s],wall [s],"
          "peak_memory [MiB],particle_steps_per_second";
   for (const ProbeResult& p : results.front().probes)
-    for (const char* kind : {"raw", "deconvolved"})
+    for (const char* kind : {"raw", "reported"})
       out << ',' << p.name << '_' << kind << "_relative_l2," << p.name << '_' << kind << "_peak_error,"
           << p.name << '_' << kind << "_arrival_error [s]";
+  for (const ProbeResult& p : results.front().probes) out << ',' << p.name << "_kernel_floor_relative_l2";
   out << '\n' << std::setprecision(8);
   for (const CaseResult& r : results) {
-    out << r.settings.name << ',' << r.settings.geometry.spacing << ',' << r.smoothingLength << ',' << r.particles
+    out << r.settings.name << ',' << r.settings.method.variant << ',' << r.settings.method.smoothingRate << ','
+        << r.settings.geometry.spacing << ',' << r.smoothingLength << ',' << r.particles
         << ',' << r.ghosts << ',' << r.meanNeighbours << ',' << r.operatorNonZeros << ',' << r.operatorMiB << ','
         << r.stableStepEstimate << ',' << r.stableStepGershgorin << ',' << r.timeStep << ',' << r.steps << ','
         << r.assemblySeconds << ',' << r.runSeconds << ',' << r.assemblySeconds + r.runSeconds << ','
         << r.peakMemoryMiB << ',' << r.particleStepsPerSecond();
     for (const ProbeResult& p : r.probes)
-      for (const SignalErrors* e : {&p.raw, &p.deconvolved}) {
+      for (const SignalErrors* e : {&p.raw, &p.reported}) {
         if (p.hasExact)
           out << ',' << e->relativeL2 << ',' << e->peakError << ',' << e->arrivalError;
         else
           out << ",,,";
       }
+    for (const ProbeResult& p : r.probes) out << ',' << p.kernelFloor;
     out << '\n';
   }
   file.commit();
@@ -147,7 +197,7 @@ void printTable(std::ostream& out, const std::vector<CaseResult>& results) {
   out << std::left << std::setw(16) << "case" << std::right << std::setw(8) << "dx" << std::setw(10) << "particles"
       << std::setw(9) << "dt" << std::setw(7) << "steps" << std::setw(9) << "wall[s]" << std::setw(9) << "MiB";
   for (const ProbeResult& p : results.front().probes) out << std::setw(14) << (p.name + " L2") << std::setw(9) << "peak";
-  out << "   (deconvolved / raw L2)\n";
+  out << "   (reported / raw L2; reported = deconvolved for the published variant)\n";
   for (const CaseResult& r : results) {
     out << std::left << std::setw(16) << r.settings.name << std::right << std::setprecision(4) << std::setw(8)
         << r.settings.geometry.spacing << std::setw(10) << r.particles << std::setw(9) << r.timeStep << std::setw(7)
@@ -155,9 +205,9 @@ void printTable(std::ostream& out, const std::vector<CaseResult>& results) {
         << std::setprecision(4) << r.peakMemoryMiB;
     for (const ProbeResult& p : r.probes) {
       std::ostringstream l2;
-      l2 << std::setprecision(3) << p.deconvolved.relativeL2 << '/' << p.raw.relativeL2;
+      l2 << std::setprecision(3) << p.reported.relativeL2 << '/' << p.raw.relativeL2;
       out << std::setw(14) << (p.hasExact ? l2.str() : "-") << std::setw(9) << std::setprecision(3)
-          << (p.hasExact ? p.deconvolved.peakError : std::nan(""));
+          << (p.hasExact ? p.reported.peakError : std::nan(""));
     }
     out << '\n';
   }
@@ -186,7 +236,7 @@ int main(int argc, char** argv) {
     writeCases(folder + "/cases.csv", results);
     printTable(std::cout, results);
 
-    const CaseResult& paper = results.front();
+    const CaseResult& paper = results.front();  // the scene's variant at its spacing
     RunSummary summary;
     summary.program = kProgram;
     summary.scene = plan.study.scene.info.name;
@@ -204,20 +254,22 @@ int main(int argc, char** argv) {
       for (const ProbeResult& p : r.probes) {
         if (!p.hasExact) continue;
         const std::string stem = r.settings.name + "_" + p.name;
-        summary.errors.push_back({stem + "_relative_l2_deconvolved", p.deconvolved.relativeL2});
-        summary.errors.push_back({stem + "_relative_l2_raw", p.raw.relativeL2});
-        if (&r == &paper) {
-          summary.errors.push_back({stem + "_peak_error_deconvolved", p.deconvolved.peakError});
-          summary.errors.push_back({stem + "_arrival_error_deconvolved [s]", p.deconvolved.arrivalError});
-        }
+        summary.errors.push_back({stem + "_relative_l2", p.reported.relativeL2});
+        if (r.settings.method.deconvolution) summary.errors.push_back({stem + "_relative_l2_raw", p.raw.relativeL2});
+        summary.errors.push_back({stem + "_peak_error", p.reported.peakError});
+        summary.errors.push_back({stem + "_arrival_error [s]", p.reported.arrivalError});
+        if (std::isfinite(p.kernelFloor)) summary.figures.push_back({stem + "_kernel_floor", p.kernelFloor});
       }
-    summary.figures.push_back({"paper_stable_step_estimate", paper.stableStepEstimate});
-    summary.figures.push_back({"paper_stable_step_gershgorin", paper.stableStepGershgorin});
-    summary.figures.push_back({"paper_particle_steps_per_second", paper.particleStepsPerSecond()});
-    summary.notes.push_back("particles, neighbours and dt of the paper case; steps and wall time summed over " +
-                            std::to_string(results.size()) + " cases");
+    for (const CaseResult& r : results) {
+      summary.figures.push_back({r.settings.name + "_stable_step_estimate", r.stableStepEstimate});
+      summary.figures.push_back({r.settings.name + "_particle_steps_per_second", r.particleStepsPerSecond()});
+    }
+    summary.notes.push_back("particles, neighbours and dt of the first case (" + paper.settings.name +
+                            "); steps and wall time summed over " + std::to_string(results.size()) + " cases");
     for (const CaseResult& r : results)
-      for (const std::string& note : r.notes) summary.notes.push_back(note);
+      for (const std::string& note : r.notes)
+        if (std::find(summary.notes.begin(), summary.notes.end(), note) == summary.notes.end())
+          summary.notes.push_back(note);
     summary.files = {"scene.resolved.toml", "cases.csv"};
     for (const CaseResult& r : results)
       for (const std::string& f : r.files) summary.files.push_back(f);

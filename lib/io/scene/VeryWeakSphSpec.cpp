@@ -8,6 +8,8 @@ void addVeryWeakSphKeys(SceneSchema& schema) {
   using T = ValueType;
   const std::string when = "name = very_weak_sph";
   schema.addChoice("method.name", "very_weak_sph");
+  schema.add("method.variant", T::String).defaultsTo("\"consistent\"").oneOf({"consistent", "published"}).when(when)
+      .describedAs("consistent: rows corrected to reproduce quadratic fields (converges); published: Ding-Long-Wu as printed");
   schema.add("method.kernel", T::String).defaultsTo("\"cubic_spline\"").oneOf(kernelNames()).when(when)
       .describedAs("SPH kernel W (Ding-Long-Wu use the cubic spline, eq. 38)");
   schema.add("method.smoothing_length_ratio", T::Number).withUnit("-").defaultsTo("1.0").positive().when(when)
@@ -25,13 +27,18 @@ void addVeryWeakSphKeys(SceneSchema& schema) {
       .describedAs("transmitting dashpots: on the particle's own velocity (eq. 32) or through the traction sum");
   schema.add("method.smoothing_rate", T::Number).withUnit("1/s").defaultsTo("0.0").nonNegative().when(when)
       .describedAs("conservative smoothing of the velocity (eq. 33), per unit time: alpha = 1 - exp(-rate dt) per step");
-  schema.add("method.deconvolution", T::Boolean).defaultsTo("true").when(when)
+  schema.add("method.smoothing_order", T::Integer).withUnit("-").defaultsTo("1").between(1, 2).when(when)
+      .describedAs("1: eq. 33, v += alpha (S v - v); 2: v -= alpha (I - S)^2 v (spares resolved waves)");
+  schema.add("method.smoothing_rate_scales_with_spacing", T::Boolean).defaultsTo("false").when(when)
+      .describedAs("the rate is given at geometry.spacing and scales as 1 / dx in resolution studies");
+  schema.add("method.deconvolution", T::Boolean).defaultsTo("false").when(when)
       .describedAs("report probe values sharpened by the deconvolution of eq. 35 (the raw values are kept too)");
 }
 
 VeryWeakSphSpec readVeryWeakSph(SceneReader& reader, const Material& material) {
   const SceneTable method = reader.section("method");
   VeryWeakSphSpec spec;
+  spec.variant = method.string("variant");
   spec.kernel = method.string("kernel");
   spec.smoothingLengthRatio = method.number("smoothing_length_ratio");
   spec.options.material = material;
@@ -41,6 +48,8 @@ VeryWeakSphSpec readVeryWeakSph(SceneReader& reader, const Material& material) {
   spec.options.boundaryIntegral = method.boolean("boundary_integral");
   spec.dashpotLumping = method.string("dashpot_lumping");
   spec.smoothingRate = method.number("smoothing_rate");
+  spec.smoothingOrder = static_cast<int>(method.integer("smoothing_order"));
+  spec.smoothingScalesWithSpacing = method.boolean("smoothing_rate_scales_with_spacing");
   spec.deconvolution = method.boolean("deconvolution");
   return spec;
 }

@@ -83,9 +83,10 @@ void checkStep(Real dt) {
 
 }  // namespace
 
-ConservativeSmoothing::ConservativeSmoothing(ParticleMatrix matrix, int dimension, Real rate)
-    : matrix_(std::move(matrix)), dimension_(dimension), rate_(rate) {
+ConservativeSmoothing::ConservativeSmoothing(ParticleMatrix matrix, int dimension, Real rate, int order)
+    : matrix_(std::move(matrix)), dimension_(dimension), rate_(rate), order_(order) {
   checkRate(rate);
+  if (order != 1 && order != 2) throw InputError("smoothing.order", "must be 1 (eq. 33) or 2, got " + std::to_string(order));
   if (dimension < 1 || dimension > 3) throw InputError("dimension", "must be 1, 2 or 3");
   if (matrix_.rows() != matrix_.cols()) throw InputError("smoothing.matrix", "must be square (N x N)");
   matrix_.makeCompressed();
@@ -111,8 +112,15 @@ void ConservativeSmoothing::apply(Real dt, Vector& velocity) const {
   if (rate_ == 0) return;
   const Real alpha = stepFraction(rate_, dt);
   multiplyComponents(matrix_, velocity, dimension_, work_);
-  // Ding-Long-Wu eq. (33) with alpha = 1 - exp(-rate dt).
-  velocity += alpha * (work_ - velocity);
+  if (order_ == 1) {
+    // Ding-Long-Wu eq. (33) with alpha = 1 - exp(-rate dt).
+    velocity += alpha * (work_ - velocity);
+    return;
+  }
+  // Order 2: d = (I - S) v, v <- v - alpha (I - S) d.
+  difference_ = velocity - work_;
+  multiplyComponents(matrix_, difference_, dimension_, work_);
+  velocity -= alpha * (difference_ - work_);
 }
 
 template ParticleMatrix smoothingMatrix<1>(const ParticleSet<1>&, const NeighbourList&, const Kernel&,

@@ -13,6 +13,11 @@
 // m_a S_ab = V_a W_ab V_b is symmetric, so sum_a m_a S_ab = m_b and the momentum
 // sum_a (rho / alpha_a) V_a v_a (the lumped mass rho / alpha_a times the volume) is exact. The
 // momentum with the plain volumes, sum_a rho V_a v_a, is not conserved near the boundary.
+//
+// Order 2 applies v <- v - alpha (I - S)^2 v instead: the same matrix, but a smooth mode with
+// 1 - lambda = O((kh)^2) is damped at O((kh)^4), while grid-scale modes (1 - lambda = O(1)) are
+// damped almost as strongly as by order 1. It is the weak stabilising filter of the consistent
+// variant, whose non-symmetric boundary rows have slowly growing modes.
 
 #include "core/Types.hpp"
 #include "kernels/Kernel.hpp"
@@ -43,8 +48,9 @@ void multiplyComponents(const ParticleMatrix& matrix, const Vector& in, int dime
 class ConservativeSmoothing {
  public:
   // Throws InputError("smoothing.rate") unless rate >= 0 and finite, InputError("dimension")
-  // unless 1 <= dimension <= 3, InputError("smoothing.matrix") unless the matrix is square.
-  ConservativeSmoothing(ParticleMatrix matrix, int dimension, Real rate);
+  // unless 1 <= dimension <= 3, InputError("smoothing.matrix") unless the matrix is square,
+  // InputError("smoothing.order") unless order is 1 (eq. 33) or 2.
+  ConservativeSmoothing(ParticleMatrix matrix, int dimension, Real rate, int order = 1);
 
   // alpha_step = 1 - exp(-rate dt). Throws InputError("smoothing.rate") / InputError("time_step").
   static Real stepFraction(Real rate, Real dt);
@@ -63,12 +69,14 @@ class ConservativeSmoothing {
   const ParticleMatrix& matrix() const { return matrix_; }
   int dimension() const { return dimension_; }
   Real rate() const { return rate_; }
+  int order() const { return order_; }
 
  private:
   ParticleMatrix matrix_;
   int dimension_;
   Real rate_;
-  mutable Vector work_;
+  int order_;
+  mutable Vector work_, difference_;
 };
 
 }  // namespace mfwave

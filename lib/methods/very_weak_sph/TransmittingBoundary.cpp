@@ -106,10 +106,40 @@ SparseMatrix assembleTransmittingDamping(const ParticleSet<D>& particles, const 
   return damping;
 }
 
+template <int D>
+SparseMatrix dashpotsThroughTractionMatrix(const SparseMatrix& tractionMatrix, const BoundaryFacets<D>& facets,
+                                           const Material& material, std::uint8_t transmittingFaces) {
+  if ((transmittingFaces & ~allFaces(D)) != 0)
+    throw InputError("transmitting_faces", "mask " + std::to_string(transmittingFaces) + " has faces that a " +
+                                               std::to_string(D) + "-D box does not have");
+  const Index n = static_cast<Index>(facets.offsets.size()) - 1;
+  if (n < 0 || tractionMatrix.cols() != D * facets.count() || tractionMatrix.rows() != D * n ||
+      facets.face.size() != facets.particle.size() || facets.normal.size() != facets.particle.size())
+    throw InputError("facets", "the facets do not match the traction matrix");
+  // Z P: facet f's rows take rho Z_f times the velocity of its particle (eq. (31)).
+  std::vector<Eigen::Triplet<Real, int>> triplets;
+  for (Index f = 0; f < facets.count(); ++f) {
+    const auto fi = static_cast<std::size_t>(f);
+    if (!onTransmittingFace(transmittingFaces, facets.face[fi])) continue;
+    const Mat<D> z = material.density() * dashpotImpedance<D>(material, facets.normal[fi]);
+    for (int l = 0; l < D; ++l)
+      for (int k = 0; k < D; ++k)
+        if (z(l, k) != 0)
+          triplets.emplace_back(static_cast<int>(D * f + l), static_cast<int>(D * facets.particle[fi] + k), z(l, k));
+  }
+  SparseMatrix impedance(static_cast<int>(D * facets.count()), static_cast<int>(D * n));
+  impedance.setFromTriplets(triplets.begin(), triplets.end());
+  SparseMatrix damping = tractionMatrix * impedance;
+  damping.prune(0.0);
+  return damping;
+}
+
 #define MFWAVE_INSTANTIATE(D)                                                                               \
   template SparseMatrix assembleTransmittingDamping<D>(const ParticleSet<D>&, const NeighbourList&,         \
                                                        const Kernel&, const BoundaryFacets<D>&,              \
-                                                       const Material&, std::uint8_t, DashpotLumping);
+                                                       const Material&, std::uint8_t, DashpotLumping);        \
+  template SparseMatrix dashpotsThroughTractionMatrix<D>(const SparseMatrix&, const BoundaryFacets<D>&,     \
+                                                         const Material&, std::uint8_t);
 MFWAVE_INSTANTIATE(1)
 MFWAVE_INSTANTIATE(2)
 MFWAVE_INSTANTIATE(3)

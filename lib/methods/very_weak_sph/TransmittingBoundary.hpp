@@ -58,4 +58,16 @@ SparseMatrix assembleTransmittingDamping(const ParticleSet<D>& particles, const 
                                          const Material& material, std::uint8_t transmittingFaces,
                                          DashpotLumping lumping = DashpotLumping::Particle);
 
+// The dashpots through a given traction matrix T (D N x D F, column facet * D + component), for the
+// consistent variant whose corrected T has full D x D facet blocks: C = T Z P, where P (D F x D N)
+// copies each particle's velocity to its facets and Z = blockdiag(rho Z_f) over the facets on
+// transmitting faces (zero blocks elsewhere). The dashpot traction t_f = -rho Z_f v (eq. (31)) then
+// enters the right-hand side through exactly the weights the loads use: -C v = T t. With the
+// published T this is assembleTransmittingDamping(..., DashpotLumping::Consistent).
+// Throws InputError("transmitting_faces") for bits of faces a D-dimensional box does not have,
+// InputError("facets") when T's columns do not match the facets.
+template <int D>
+SparseMatrix dashpotsThroughTractionMatrix(const SparseMatrix& tractionMatrix, const BoundaryFacets<D>& facets,
+                                           const Material& material, std::uint8_t transmittingFaces);
+
 }  // namespace mfwave

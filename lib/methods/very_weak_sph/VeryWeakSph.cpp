@@ -1,5 +1,6 @@
 #include "methods/very_weak_sph/VeryWeakSph.hpp"
 
+#include "methods/very_weak_sph/ConsistentCorrection.hpp"
 #include "methods/very_weak_sph/KernelCorrection.hpp"
 #include "methods/very_weak_sph/StatisticalVolume.hpp"
 #include "methods/very_weak_sph/TractionLoad.hpp"
@@ -27,6 +28,15 @@ VeryWeakSph<D> assembleVeryWeakSph(const ParticleSet<D>& particles, const Neighb
   data.operatorMatrix = assembleVeryWeakOperator(particles, neighbours, kernel, material.lambda(), material.mu(),
                                                  data.volume, data.facets, options.boundaryIntegral);
   data.tractionMatrix = assembleTractionMatrix(particles, neighbours, kernel, data.facets);
+  if (options.variant == VeryWeakSphVariant::Consistent) {
+    // Rows exact for quadratic fields: the state is the nodal displacement with mass rho, so alpha
+    // (a correction of the same cut-support defect) would count it twice.
+    const ConsistencyReport report = correctToQuadraticConsistency(
+        particles, neighbours, kernel, data.volume, data.facets, material, data.operatorMatrix, data.tractionMatrix);
+    data.consistencyResidual = report.residual;
+    data.consistentRowsSolved = report.rowsSolved;
+    data.alpha.assign(data.alpha.size(), 1.0);
+  }
 
   // Eq. (23) with eqs. (28)-(29): (rho / alpha_a) u''_a = (K u + f)_a.
   const int dofs = static_cast<int>(D * n);

@@ -5,6 +5,11 @@
 // out, with the method data for diagnostics. Eq. (23) reads rho u'' = K u + f; multiplying row a
 // by alpha_a (eqs. (28)-(29)) is the lumped mass rho / alpha_a.
 //
+// With options.variant = Consistent the operator and traction matrices are corrected row by row to
+// reproduce div sigma of every quadratic field (ConsistentCorrection.hpp); the state is then the
+// nodal displacement, M = rho I, alpha = 1 and K_sys = -K_corrected. Loads and dashpots must go
+// through the corrected data.tractionMatrix (dashpotsThroughTractionMatrix).
+//
 // The rest of the method plugs in around this system: transmitting dashpots (eqs. (31)-(32),
 // TransmittingBoundary: system.setDamping), traction and patch loads (eq. (19), TractionLoad and
 // PatchLoad: system.setForce), displacement conditions (eq. (30): the integrator's prescribed
@@ -31,8 +36,12 @@ struct VeryWeakSphData {
   std::vector<Real> volume;           // V_a, eq. (25)
   std::vector<Real> alpha;            // alpha_a, eq. (29) (1 with the correction off)
   BoundaryFacets<D> facets;           // normals and areas A, eq. (27)
-  SparseMatrix operatorMatrix;        // K: rho u'' = K u + f (eq. (23), before alpha)
-  SparseMatrix tractionMatrix;        // T: f = T t for facet tractions t (eq. (19))
+  SparseMatrix operatorMatrix;        // K: rho u'' = K u + f (eq. (23), before alpha); corrected if Consistent
+  SparseMatrix tractionMatrix;        // T: f = T t for facet tractions t (eq. (19)); corrected if Consistent
+  // Consistent variant only (ConsistentCorrection.hpp): the largest relative residual of the
+  // quadratic patch conditions over all rows, and the number of particle rows solved (0 if Published).
+  Real consistencyResidual = 0;
+  Index consistentRowsSolved = 0;
 };
 
 template <int D>
@@ -42,7 +51,8 @@ struct VeryWeakSph {
 };
 
 // Throws InputError("dimension") when the kernel is not D-dimensional, InputError("neighbours")
-// when the list lacks rows for physical particles.
+// when the list lacks rows for physical particles; for the Consistent variant, Error naming the
+// particle whose row cannot reproduce the quadratic fields.
 template <int D>
 VeryWeakSph<D> assembleVeryWeakSph(const ParticleSet<D>& particles, const NeighbourList& neighbours,
                                    const Kernel& kernel, const VeryWeakSphOptions& options);

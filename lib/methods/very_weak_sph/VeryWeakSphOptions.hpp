@@ -6,7 +6,13 @@
 
 namespace mfwave {
 
+// Published: the scheme as printed (state u^h, lumped mass rho / alpha). Consistent: every row of
+// the operator and of the traction matrix corrected to reproduce div sigma of quadratic fields
+// (ConsistentCorrection.hpp); the state is the nodal displacement with mass rho (no alpha).
+enum class VeryWeakSphVariant { Published, Consistent };
+
 struct VeryWeakSphOptions {
+  VeryWeakSphVariant variant = VeryWeakSphVariant::Published;
   // Lame constants and density of eq. (5), (15), (23).
   Material material = Material::fromLame(1, 1, 1);
   // FV_a of eqs. (24)-(25): V_a = FV_a / sum_b W_ab with FV = 1, 1/2, 1/4, 1/8 for interior, face,
@@ -16,9 +22,11 @@ struct VeryWeakSphOptions {
   // edge, 1/4 per facet at a corner (in d dimensions 2^{1-m} for m faces). Off: FA = 1, eq. (20).
   bool boundaryAreaCorrection = true;
   // alpha_a of eqs. (28)-(29), alpha_a = 1 / sum_b W_ab V_b, applied to the whole row a, i.e. as a
-  // lumped mass rho / alpha_a. Off: alpha = 1.
+  // lumped mass rho / alpha_a. Off: alpha = 1. Ignored by the Consistent variant (alpha = 1 there:
+  // the corrected rows already integrate exactly, so alpha would count the cut support twice).
   bool boundaryKernelCorrection = true;
-  // The boundary integral of eq. (22) (Gamma terms). Off: only the interior sum of eq. (21).
+  // The boundary integral of eq. (22) (Gamma terms). Off: only the interior sum of eq. (21). The
+  // Consistent variant starts its correction from whichever is chosen.
   bool boundaryIntegral = true;
 };
 

@@ -1,0 +1,55 @@
+#pragma once
+// The interior stencil of the very weak form SPH (Ding-Long-Wu) on a regular lattice, for the
+// lattice dispersion analysis (analysis/LatticeDispersion.hpp): a block with ghost layers on every
+// face (as in the paper's section 8), large enough that the centre particle's support and the
+// supports of its neighbours see no boundary, assembled by assembleVeryWeakSph, and the centre row
+// of the system. Results: docs/studies/vwsph-dispersion.md.
+
+#include "analysis/LatticeDispersion.hpp"
+#include "core/Material.hpp"
+
+#include <string>
+#include <vector>
+
+namespace mfwave {
+
+enum class VeryWeakSphDispersionVariant {
+  Published,                 // the scheme as published (VeryWeakSphOptions defaults)
+  PublishedRowSumCorrected,  // the published row with its self block corrected to sum to zero
+  Consistent,                // VeryWeakSphVariant::Consistent, when the method has it
+};
+
+// "published", "published_row_sum", "consistent".
+const std::vector<std::string>& veryWeakSphDispersionVariantNames();
+const char* veryWeakSphDispersionVariantName(VeryWeakSphDispersionVariant variant);
+// Throws InputError(key) for an unknown name.
+VeryWeakSphDispersionVariant parseVeryWeakSphDispersionVariant(const std::string& name,
+                                                               const std::string& key = "variant");
+
+// True when VeryWeakSphOptions has the member `variant` (enum VeryWeakSphVariant with an
+// enumerator Consistent) in this tree.
+bool veryWeakSphConsistentVariantAvailable();
+
+template <int D>
+struct VeryWeakSphLatticeStencil {
+  LatticeStencil<D> stencil;   // row of the centre particle: G_b = (alpha_a / rho) K_ab
+  Index physicalParticles = 0; // of the block
+  Index ghostParticles = 0;
+  int halfWidth = 0;           // the block is [-halfWidth dx, halfWidth dx]^D
+  int ghostLayers = 0;
+  Real spacing = 0;
+  Real smoothingLength = 0;
+  // stencilDifference between the centre row and the row of its neighbour at +dx along x: ~1e-16
+  // when the rows are interior (translation invariant).
+  Real translationDifference = 0;
+};
+
+// The centre stencil of a lattice block at spacing dx with smoothing length ratio * dx (kernel by
+// name, kernelNames()). Throws InputError("variant") for Consistent when it is not available,
+// InputError("smoothing_length_ratio") for ratio <= 0, InputError("spacing") for spacing <= 0.
+template <int D>
+VeryWeakSphLatticeStencil<D> veryWeakSphInteriorStencil(VeryWeakSphDispersionVariant variant,
+                                                        const std::string& kernelName, Real smoothingLengthRatio,
+                                                        const Material& material, Real spacing = 1);
+
+}  // namespace mfwave
