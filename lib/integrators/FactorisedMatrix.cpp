@@ -6,6 +6,7 @@
 #include <Eigen/SPQRSupport>
 #include <Eigen/UmfPackSupport>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -16,6 +17,23 @@ struct FactorisedMatrix::Sparse {
   // reference to it: the factorisation owns its copy, declared before the LU so it outlives it.
   SparseMatrix matrix;
   Eigen::UmfPackLU<SparseMatrix> lu;
+  // When some unknowns are decoupled (their row and column hold only the diagonal entry), `matrix`
+  // is the coupled part alone, `coupled` its unknowns in the full vector, and the rest is solved
+  // by `inverseDiagonal` (zero on coupled unknowns). Empty `coupled`: `matrix` is the whole matrix.
+  std::vector<Index> coupled;
+  Vector inverseDiagonal;
+  mutable Vector work, workSolution;
+
+  void solve(const Real* b, Real* x) const {
+    if (coupled.empty()) {
+      Eigen::Map<Vector>(x, matrix.rows()) = lu.solve(Eigen::Map<const Vector>(b, matrix.rows()));
+      return;
+    }
+    for (Index i = 0; i < inverseDiagonal.size(); ++i) x[i] = inverseDiagonal[i] * b[i];
+    for (std::size_t k = 0; k < coupled.size(); ++k) work[static_cast<Index>(k)] = b[coupled[k]];
+    workSolution = lu.solve(work);
+    for (std::size_t k = 0; k < coupled.size(); ++k) x[coupled[k]] = workSolution[static_cast<Index>(k)];
+  }
 };
 
 struct FactorisedMatrix::LeastSquares {
@@ -30,6 +48,16 @@ FactorisedMatrix::FactorisedMatrix(FactorisedMatrix&&) noexcept = default;
 FactorisedMatrix& FactorisedMatrix::operator=(FactorisedMatrix&&) noexcept = default;
 
 namespace {
+
+// |a_ii| > sum_{j != i} |a_ij| for every row.
+bool strictlyDiagonallyDominant(const SparseMatrix& a) {
+  Vector offDiagonal = Vector::Zero(a.rows());
+  Vector diagonal = Vector::Zero(a.rows());
+  for (int column = 0; column < a.outerSize(); ++column)
+    for (SparseMatrix::InnerIterator it(a, column); it; ++it)
+      (it.row() == it.col() ? diagonal[it.row()] : offDiagonal[it.row()]) += std::abs(it.value());
+  return (diagonal.array() > offDiagonal.array()).all();
+}
 
 bool isDiagonalMatrix(const SparseMatrix& m) {
   for (int k = 0; k < m.outerSize(); ++k)
@@ -140,15 +168,57 @@ void FactorisedMatrix::factorise(const SparseMatrix& a, const std::string& what)
   }
 
   auto sparse = std::make_unique<Sparse>();
-  sparse->matrix = a;
+  // Dashpots on a boundary couple a few unknowns; the others keep a diagonal row and column
+  // (M + dt/2 C of central difference). Those are solved by a reciprocal, and UMFPACK sees only
+  // the coupled block, so a solve costs in proportion to the boundary layer, not the body.
+  std::vector<char> isCoupled(static_cast<std::size_t>(n), 0);
+  for (int column = 0; column < a.outerSize(); ++column)
+    for (SparseMatrix::InnerIterator it(a, column); it; ++it)
+      if (it.row() != it.col() && it.value() != 0)
+        isCoupled[static_cast<std::size_t>(it.row())] = isCoupled[static_cast<std::size_t>(it.col())] = 1;
+  const auto coupledCount = static_cast<Index>(std::count(isCoupled.begin(), isCoupled.end(), 1));
+  if (coupledCount < n) {
+    std::vector<Index> position(static_cast<std::size_t>(n), -1);
+    sparse->inverseDiagonal = Vector::Zero(n);
+    const Vector diagonal = a.diagonal();
+    for (Index i = 0; i < n; ++i) {
+      if (isCoupled[static_cast<std::size_t>(i)]) {
+        position[static_cast<std::size_t>(i)] = static_cast<Index>(sparse->coupled.size());
+        sparse->coupled.push_back(i);
+      } else {
+        if (!(std::isfinite(diagonal[i]) && diagonal[i] != 0))
+          throw Error(what + " is singular: diagonal entry " + std::to_string(i) + " is " + std::to_string(diagonal[i]));
+        sparse->inverseDiagonal[i] = 1 / diagonal[i];
+      }
+    }
+    std::vector<Triplet> entries;
+    for (int column = 0; column < a.outerSize(); ++column)
+      for (SparseMatrix::InnerIterator it(a, column); it; ++it)
+        if (isCoupled[static_cast<std::size_t>(it.row())])
+          entries.emplace_back(static_cast<int>(position[static_cast<std::size_t>(it.row())]),
+                               static_cast<int>(position[static_cast<std::size_t>(it.col())]), it.value());
+    sparse->matrix.resize(static_cast<int>(coupledCount), static_cast<int>(coupledCount));
+    sparse->matrix.setFromTriplets(entries.begin(), entries.end());
+    sparse->work.resize(coupledCount);
+  } else {
+    sparse->matrix = a;
+  }
   sparse->matrix.makeCompressed();
   // UMFPACK's automatic strategy picks its symmetric mode for matrices with a nearly symmetric
   // pattern and then accepts diagonal pivots down to 1e-3 of the column maximum: collocation
   // constraint matrices [Psi_I; B] have such patterns and such pivots, and the factors come out
   // useless (residuals of 1e12 at 161 nodes). The unsymmetric strategy with full partial pivoting
   // is robust for every matrix here and costs little for the banded ones.
-  sparse->lu.umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_UNSYMMETRIC;
-  sparse->lu.umfpackControl()(UMFPACK_PIVOT_TOLERANCE) = 1.0;
+  // A strictly diagonally dominant matrix (M + dt/2 C of central difference with dashpots) is
+  // safe with diagonal pivots, which keep the fill-in to the pattern: the symmetric strategy.
+  // Its solves need no iterative refinement either (well conditioned: the test solve below checks).
+  if (strictlyDiagonallyDominant(sparse->matrix)) {
+    sparse->lu.umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
+    sparse->lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
+  } else {
+    sparse->lu.umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_UNSYMMETRIC;
+    sparse->lu.umfpackControl()(UMFPACK_PIVOT_TOLERANCE) = 1.0;
+  }
   sparse->lu.compute(sparse->matrix);
   if (sparse->lu.info() == Eigen::NumericalIssue)
     throw Error(what + " is singular: UMFPACK found a zero pivot (status " +
@@ -157,7 +227,7 @@ void FactorisedMatrix::factorise(const SparseMatrix& a, const std::string& what)
     throw Error(what + " could not be factorised: UMFPACK rejected its structure");
   // A factorisation that cannot reproduce a known solution is useless, whatever UMFPACK's status
   // says: one test solve (cost: one solve) catches it here rather than as a blow-up later.
-  const Vector ones = Vector::Ones(n);
+  const Vector ones = Vector::Ones(sparse->matrix.rows());
   const Real testError = (Vector(sparse->lu.solve(Vector(sparse->matrix * ones))) - ones).norm() / ones.norm();
   if (!(testError < 1e-6))
     throw Error(what + " is too ill-conditioned to factorise reliably: a test solve is off by " +
@@ -178,7 +248,7 @@ void FactorisedMatrix::solve(const Vector& b, Vector& x) const {
     x = leastSquares_->qr.solve(b);
   } else if (sparse_) {
     x.resize(size_);
-    x = sparse_->lu.solve(b);
+    sparse_->solve(b.data(), x.data());
   } else if (blockSize_ > 0) {
     x.resize(size_);
     if (blockSize_ == 2)
@@ -199,7 +269,11 @@ Vector FactorisedMatrix::solve(const Vector& b) const {
 Eigen::MatrixXd FactorisedMatrix::solve(const Eigen::MatrixXd& b) const {
   checkRightHandSide(b.rows());
   if (leastSquares_) return leastSquares_->qr.solve(b);
-  if (sparse_) return sparse_->lu.solve(b);
+  if (sparse_) {
+    Eigen::MatrixXd x(size_, b.cols());
+    for (Index column = 0; column < b.cols(); ++column) sparse_->solve(b.col(column).data(), x.col(column).data());
+    return x;
+  }
   if (blockSize_ > 0) {
     Eigen::MatrixXd x(size_, b.cols());
     for (Index column = 0; column < b.cols(); ++column) {

@@ -107,3 +107,35 @@ TEST(FactorisedMatrix, BlockDiagonalMatricesAreSolvedBlockByBlock) {
     EXPECT_NE(what.find("block 1"), std::string::npos) << what;
   }
 }
+
+// M + dt/2 C with dashpots coupling a few unknowns (a boundary layer): the decoupled unknowns are
+// solved by reciprocals and UMFPACK sees only the coupled block; the result is the full solve.
+TEST(FactorisedMatrix, DecoupledUnknownsAreSplitFromTheCoupledBlock) {
+  const int n = 40;
+  std::vector<Triplet> entries;
+  for (int i = 0; i < n; ++i) entries.emplace_back(i, i, 2.0 + 0.1 * i);
+  // Unknowns 3, 7, 8 and 30 coupled (not symmetrically), the rest diagonal.
+  entries.emplace_back(3, 7, 0.5);
+  entries.emplace_back(7, 8, -0.25);
+  entries.emplace_back(8, 3, 0.3);
+  entries.emplace_back(30, 8, 0.7);
+  SparseMatrix a(n, n);
+  a.setFromTriplets(entries.begin(), entries.end());
+  FactorisedMatrix f;
+  f.factorise(a, "test matrix");
+  Vector b(n);
+  for (int i = 0; i < n; ++i) b[i] = std::sin(1.0 + i);
+  const Vector x = f.solve(b);
+  EXPECT_LT((a * x - b).norm(), 1e-13 * b.norm());
+  const Eigen::MatrixXd dense = Eigen::MatrixXd(a);
+  EXPECT_LT((x - dense.lu().solve(b)).norm(), 1e-13);
+  Eigen::MatrixXd several(n, 2);
+  several.col(0) = b;
+  several.col(1) = 2 * b;
+  const Eigen::MatrixXd xs = f.solve(several);
+  EXPECT_LT((xs.col(1) - 2 * x).norm(), 1e-12);
+  // A zero on a decoupled diagonal is named.
+  SparseMatrix singular = a;
+  singular.coeffRef(20, 20) = 0;
+  EXPECT_THROW(f.factorise(singular, "singular test matrix"), Error);
+}
