@@ -252,7 +252,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   const bool consistent = spec.variant == "consistent";
   options.variant = consistent ? VeryWeakSphVariant::Consistent : VeryWeakSphVariant::Published;
   VeryWeakSph<D> method = assembleVeryWeakSph<D>(particles, neighbours, *kernel, options);
-  method.data.operatorMatrix = SparseMatrix();  // the system holds -K; one copy is enough
+  SparseMatrix().swap(method.data.operatorMatrix);  // the system holds -K; one copy is enough (swap frees)
   LinearSecondOrderSystem& system = method.system;
   const std::uint8_t transmitting = settings.freeFaces ? 0 : facesWith(scene.boundaries, BoundaryType::Transmitting);
   if (transmitting != 0 && consistent)

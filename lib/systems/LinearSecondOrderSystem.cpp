@@ -18,13 +18,16 @@ bool isDiagonal(const SparseMatrix& m) {
 
 LinearSecondOrderSystem::LinearSecondOrderSystem(SparseMatrix mass, SparseMatrix damping,
                                                  SparseMatrix stiffness, ForceFunction force)
-    : mass_(std::move(mass)), damping_(std::move(damping)), stiffness_(std::move(stiffness)),
-      force_(std::move(force)) {
+    : force_(std::move(force)) {
+  // Eigen 3.4's SparseMatrix has no move constructor: std::move would deep-copy. swap hands the
+  // storage over, so an assembled operator is never held twice.
+  mass_.swap(mass);
+  stiffness_.swap(stiffness);
   const Index n = stiffness_.rows();
   if (stiffness_.cols() != n) throw InputError("stiffness", "must be square");
   if (mass_.rows() != n || mass_.cols() != n)
     throw InputError("mass", "must be " + std::to_string(n) + " x " + std::to_string(n) + " like the stiffness");
-  setDamping(std::move(damping_));
+  adoptDamping(damping);
   mass_.makeCompressed();
   stiffness_.makeCompressed();
   if (isDiagonal(mass_)) {
@@ -34,11 +37,13 @@ LinearSecondOrderSystem::LinearSecondOrderSystem(SparseMatrix mass, SparseMatrix
   work_.resize(n);
 }
 
-void LinearSecondOrderSystem::setDamping(SparseMatrix damping) {
+void LinearSecondOrderSystem::setDamping(SparseMatrix damping) { adoptDamping(damping); }
+
+void LinearSecondOrderSystem::adoptDamping(SparseMatrix& damping) {
   const Index n = stiffness_.rows();
   if (damping.size() != 0 && (damping.rows() != n || damping.cols() != n))
     throw InputError("damping", "must be empty or " + std::to_string(n) + " x " + std::to_string(n));
-  damping_ = std::move(damping);
+  damping_.swap(damping);
   if (damping_.size() == 0) damping_.resize(n, n);
   damping_.makeCompressed();
 }

@@ -42,6 +42,9 @@ class LinearSecondOrderSystem : public SecondOrderSystem {
   Real strainEnergy(const Vector& u) const;
 
  private:
+  // Takes the storage of `damping` (left empty) after checking its size.
+  void adoptDamping(SparseMatrix& damping);
+
   SparseMatrix mass_;
   SparseMatrix damping_;
   SparseMatrix stiffness_;

@@ -37,8 +37,11 @@ struct ConsistencyReport {
   // Largest relative residual over all rows and fields: |row(u) - div sigma(u)(x^a)| divided by the
   // sum of the absolute values of the row's terms and of the target (so 1e-16 is round-off).
   Real residual = 0;
-  // Particle rows solved: one decomposition each, shared by the D components.
+  // Particle rows corrected (all physical particles).
   Index rowsSolved = 0;
+  // Decompositions computed, one per particle row type (each shared by the D components): equal to
+  // rowsSolved without reuse or on an irregular cloud, a few hundred on a lattice block.
+  Index decompositions = 0;
 };
 
 // Replaces operatorMatrix (D N x D N, dof = particle * D + component) and tractionMatrix
@@ -46,15 +49,20 @@ struct ConsistencyReport {
 // published matrices (or any starting weights within the kernel supports); on output the operator
 // has a full D x D block for every physical neighbour, the traction matrix one for every facet of
 // a physical neighbour. Rows are solved independently with OpenMP into a precomputed layout, so the
-// result does not depend on the number of threads. Throws Error naming the particle when a row's
+// result does not depend on the number of threads. With reuseRowTypes, rows whose inputs agree to
+// 1e-9 in units of h (RowTypes.hpp: offsets, volumes, facets and starting weights; translates on a
+// lattice) share one decomposition: each takes its representative's change delta on top of its own
+// starting weights, and its residual is checked on its own constraints. Translates differ by
+// round-off only, so the result equals the unshared one to round-off (tested to 1e-13). Throws Error naming the particle when a row's
 // residual exceeds `tolerance` (too few neighbours and facets to reproduce the fields) or when an
-// input entry lies outside the row's neighbours; InputError("volumes") / ("facets") / ("operator")
+// input entry lies outside the row's neighbours (the inputs are released while the rows are solved,
+// to hold K at most twice, so after that Error both matrices are empty); InputError("volumes") / ("facets") / ("operator")
 // for inputs of the wrong size.
 template <int D>
 ConsistencyReport correctToQuadraticConsistency(const ParticleSet<D>& particles, const NeighbourList& neighbours,
                                                 const Kernel& kernel, const std::vector<Real>& volumes,
                                                 const BoundaryFacets<D>& facets, const Material& material,
                                                 SparseMatrix& operatorMatrix, SparseMatrix& tractionMatrix,
-                                                Real tolerance = 1e-10);
+                                                bool reuseRowTypes = true, Real tolerance = 1e-10);
 
 }  // namespace mfwave

@@ -25,16 +25,21 @@ VeryWeakSph<D> assembleVeryWeakSph(const ParticleSet<D>& particles, const Neighb
   data.alpha = kernelCorrectionFactors(particles, neighbours, kernel, data.volume, options.boundaryKernelCorrection);
   data.facets = boundaryFacets(particles, neighbours, kernel, options.boundaryAreaCorrection);
   const Material& material = options.material;
-  data.operatorMatrix = assembleVeryWeakOperator(particles, neighbours, kernel, material.lambda(), material.mu(),
-                                                 data.volume, data.facets, options.boundaryIntegral);
-  data.tractionMatrix = assembleTractionMatrix(particles, neighbours, kernel, data.facets);
+  // Eigen 3.4 sparse matrices have no move constructor or assignment: assigning or std::move-ing
+  // one copies it, so matrices here change hands by swap and K is held at most twice at any time.
+  assembleVeryWeakOperator(particles, neighbours, kernel, material.lambda(), material.mu(), data.volume,
+                           data.facets, options.boundaryIntegral)
+      .swap(data.operatorMatrix);
+  assembleTractionMatrix(particles, neighbours, kernel, data.facets).swap(data.tractionMatrix);
   if (options.variant == VeryWeakSphVariant::Consistent) {
     // Rows exact for quadratic fields: the state is the nodal displacement with mass rho, so alpha
     // (a correction of the same cut-support defect) would count it twice.
     const ConsistencyReport report = correctToQuadraticConsistency(
-        particles, neighbours, kernel, data.volume, data.facets, material, data.operatorMatrix, data.tractionMatrix);
+        particles, neighbours, kernel, data.volume, data.facets, material, data.operatorMatrix, data.tractionMatrix,
+        options.reuseConsistentRowTypes);
     data.consistencyResidual = report.residual;
     data.consistentRowsSolved = report.rowsSolved;
+    data.consistentDecompositions = report.decompositions;
     data.alpha.assign(data.alpha.size(), 1.0);
   }
 
@@ -47,9 +52,21 @@ VeryWeakSph<D> assembleVeryWeakSph(const ParticleSet<D>& particles, const Neighb
       mass.insert(static_cast<int>(D * a + i), static_cast<int>(D * a + i)) =
           material.density() / data.alpha[static_cast<std::size_t>(a)];
   mass.makeCompressed();
-  SparseMatrix stiffness = -data.operatorMatrix;
-  LinearSecondOrderSystem system(std::move(mass), SparseMatrix(), std::move(stiffness));
-  return VeryWeakSph<D>{std::move(data), std::move(system)};
+  // -K is made in place from K and handed to the system (markAsRValue: the by-value parameter takes
+  // the storage by swap; the system's member still copies it once); K is then copied back from the
+  // system's -K and negated in place (assigning the expression -K would insert entry by entry into
+  // a doubling buffer, up to three times K). The result is built in place, the data's matrices
+  // swapped in, not copied.
+  SparseMatrix stiffness, traction;
+  stiffness.swap(data.operatorMatrix);
+  stiffness.coeffs() *= -1;
+  traction.swap(data.tractionMatrix);
+  VeryWeakSph<D> result{std::move(data), LinearSecondOrderSystem(std::move(mass.markAsRValue()), SparseMatrix(),
+                                                                 std::move(stiffness.markAsRValue()))};
+  result.data.tractionMatrix.swap(traction);
+  result.data.operatorMatrix = result.system.stiffness();
+  result.data.operatorMatrix.coeffs() *= -1;
+  return result;
 }
 
 template VeryWeakSph<1> assembleVeryWeakSph<1>(const ParticleSet<1>&, const NeighbourList&, const Kernel&,

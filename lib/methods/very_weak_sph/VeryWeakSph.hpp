@@ -39,9 +39,11 @@ struct VeryWeakSphData {
   SparseMatrix operatorMatrix;        // K: rho u'' = K u + f (eq. (23), before alpha); corrected if Consistent
   SparseMatrix tractionMatrix;        // T: f = T t for facet tractions t (eq. (19)); corrected if Consistent
   // Consistent variant only (ConsistentCorrection.hpp): the largest relative residual of the
-  // quadratic patch conditions over all rows, and the number of particle rows solved (0 if Published).
+  // quadratic patch conditions over all rows, the number of particle rows corrected (0 if Published)
+  // and of the decompositions computed for them (one per row type when rows are reused).
   Real consistencyResidual = 0;
   Index consistentRowsSolved = 0;
+  Index consistentDecompositions = 0;
 };
 
 template <int D>

@@ -28,6 +28,9 @@ struct VeryWeakSphOptions {
   // The boundary integral of eq. (22) (Gamma terms). Off: only the interior sum of eq. (21). The
   // Consistent variant starts its correction from whichever is chosen.
   bool boundaryIntegral = true;
+  // Consistent variant: rows identical up to translation share one least-squares solve
+  // (ConsistentCorrection.hpp); the result is the same to round-off. Off: every row solved on its own.
+  bool reuseConsistentRowTypes = true;
 };
 
 }  // namespace mfwave
