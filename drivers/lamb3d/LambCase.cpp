@@ -120,6 +120,12 @@ struct Prescribed {
   std::vector<Index> dofs;
   std::vector<Real> value;            // per dof
   std::vector<const TimeFunction*> timeFunction;  // per dof (null: constant 0)
+
+  // g(t) at every prescribed dof, in the order of `dofs`.
+  void values(Real t, Vector& g) const {
+    for (std::size_t i = 0; i < dofs.size(); ++i)
+      g[static_cast<Index>(i)] = timeFunction[i] ? value[i] * (*timeFunction[i])(t) : 0;
+  }
 };
 
 Prescribed prescribedDisplacements(const Scene& scene, const ParticleSet<D>& particles) {
@@ -166,6 +172,14 @@ std::vector<TractionTerm> tractionTerms(const Scene& scene, const ParticleSet<D>
     terms.push_back({method.data.tractionMatrix * t, &load.timeFunction});
   }
   return terms;
+}
+
+// The exact response at surface point (px, py) relative to the load centre, at each time.
+std::vector<Real> exactSeriesAt(const LambSquareLoad& exact, Real px, Real py, const std::vector<Real>& times,
+                                bool velocity) {
+  std::vector<Real> series;
+  for (const Real t : times) series.push_back(velocity ? exact.velocity(px, py, t) : exact.displacement(px, py, t));
+  return series;
 }
 
 // The exact response to the load spread over the surface by the kernel: the square's response
@@ -303,11 +317,8 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
       central->setVelocityFilter([&smoothing](Real step, Vector& v) { smoothing->apply(step, v); });
     }
     if (!prescribed.dofs.empty())
-      central->setPrescribedDisplacement(prescribed.dofs, [&prescribed](Real t, Vector& values) {
-        for (std::size_t i = 0; i < prescribed.dofs.size(); ++i)
-          values[static_cast<Index>(i)] =
-              prescribed.timeFunction[i] ? prescribed.value[i] * (*prescribed.timeFunction[i])(t) : 0;
-      });
+      central->setPrescribedDisplacement(prescribed.dofs,
+                                         [&prescribed](Real t, Vector& values) { prescribed.values(t, values); });
     integrator = std::move(central);
   } else {
     if (spec.smoothingRate > 0)
@@ -319,8 +330,9 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   }
   // At rest, with the prescribed faces at their values at t = 0 (eq. (30) holds from the start).
   Vector u0 = Vector::Zero(system.size());
-  for (std::size_t i = 0; i < prescribed.dofs.size(); ++i)
-    u0[prescribed.dofs[i]] = prescribed.timeFunction[i] ? prescribed.value[i] * (*prescribed.timeFunction[i])(0) : 0;
+  Vector g0(static_cast<Index>(prescribed.dofs.size()));
+  prescribed.values(0, g0);
+  for (std::size_t i = 0; i < prescribed.dofs.size(); ++i) u0[prescribed.dofs[i]] = g0[static_cast<Index>(i)];
   integrator->initialise(system, 0, u0, Vector::Zero(system.size()), dt);
 
   // observers: stability, probes (raw and deconvolved), frames
@@ -365,6 +377,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   if (problem.empty()) exact.emplace(exactReference(scene));
   else result.notes.push_back(problem);
   std::vector<std::vector<Real>> exactSeries(probes.size());
+  std::vector<std::array<Real, 2>> surfacePoint(probes.size());  // probe relative to the load centre, in the face
   for (std::size_t i = 0; i < probes.size(); ++i) {
     ProbeResult r;
     r.name = probes[i].name;
@@ -376,9 +389,8 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
       if (onFace && probes[i].component == axis) {
         const Real px = x[(axis + 1) % 3] - load.centre[static_cast<std::size_t>((axis + 1) % 3)];
         const Real py = x[(axis + 2) % 3] - load.centre[static_cast<std::size_t>((axis + 2) % 3)];
-        for (const Real t : recorder.times())
-          exactSeries[i].push_back(probes[i].quantity == ProbeQuantity::Velocity ? exact->velocity(px, py, t)
-                                                                                 : exact->displacement(px, py, t));
+        surfacePoint[i] = {px, py};
+        exactSeries[i] = exactSeriesAt(*exact, px, py, recorder.times(), probes[i].quantity == ProbeQuantity::Velocity);
         r.hasExact = true;
         r.raw = compareSignals(recorder.times(), recorder.raw(i), exactSeries[i], study.errorWindow,
                                study.arrivalFraction);
@@ -399,25 +411,23 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   writeProbes(folder + "/" + settings.name + "-probes.csv", probes, recorder, exactSeries);
   if (exact && settings.writeFrames) {
     // The exact response on a fine time grid, for the figures (the errors use the run's samples).
+    constexpr int samples = 600;
+    std::vector<Real> times;
+    for (int k = 0; k <= samples; ++k) times.push_back(scene.integrator.endTime * k / samples);
+    std::vector<std::vector<Real>> columns(probes.size());
+    for (std::size_t i = 0; i < probes.size(); ++i)
+      if (result.probes[i].hasExact)
+        columns[i] = exactSeriesAt(*exact, surfacePoint[i][0], surfacePoint[i][1], times,
+                                   probes[i].quantity == ProbeQuantity::Velocity);
     AtomicFile file(folder + "/exact.csv");
     file.stream() << "t [s]";
     for (std::size_t i = 0; i < probes.size(); ++i)
       if (result.probes[i].hasExact) file.stream() << ',' << probes[i].name << "_exact";
     file.stream() << '\n' << std::setprecision(10);
-    const LoadSpec& load = scene.loads[0];
-    const int axis = load.face / 2;
-    constexpr int samples = 600;
-    for (int k = 0; k <= samples; ++k) {
-      const Real t = scene.integrator.endTime * k / samples;
-      file.stream() << t;
-      for (std::size_t i = 0; i < probes.size(); ++i) {
-        if (!result.probes[i].hasExact) continue;
-        const Vec<D> x = particles.position(probes[i].particle);
-        const Real px = x[(axis + 1) % 3] - load.centre[static_cast<std::size_t>((axis + 1) % 3)];
-        const Real py = x[(axis + 2) % 3] - load.centre[static_cast<std::size_t>((axis + 2) % 3)];
-        file.stream() << ',' << (probes[i].quantity == ProbeQuantity::Velocity ? exact->velocity(px, py, t)
-                                                                              : exact->displacement(px, py, t));
-      }
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      file.stream() << times[k];
+      for (std::size_t i = 0; i < probes.size(); ++i)
+        if (result.probes[i].hasExact) file.stream() << ',' << columns[i][k];
       file.stream() << '\n';
     }
     file.commit();
