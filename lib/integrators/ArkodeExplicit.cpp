@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <exception>
+#include <string>
 #include <utility>
 
 namespace mfwave {
@@ -94,6 +95,7 @@ struct ArkodeExplicit::Impl {
   Vector yData;
   FirstOrderSystem* system = nullptr;
   Real time = 0;
+  Real maxStep = 0;            // adaptive runs: setMaxStep's bound (0: none)
   std::exception_ptr pending;  // an exception thrown by the system inside a SUNDIALS callback
   std::string lastMessage;     // SUNDIALS's own text for the last error
 
@@ -222,6 +224,7 @@ void ArkodeExplicit::initialise(FirstOrderSystem& system, Real t0, const Vector&
   if (o.adaptive) {
     m.check(ERKStepSStolerances(m.memory, o.relativeTolerance, o.absoluteTolerance), "ERKStepSStolerances");
     if (o.initialStep > 0) m.check(ERKStepSetInitStep(m.memory, o.initialStep), "ERKStepSetInitStep");
+    if (m.maxStep > 0) m.check(ERKStepSetMaxStep(m.memory, m.maxStep), "ERKStepSetMaxStep");
   } else {
     m.check(ERKStepSetFixedStep(m.memory, o.fixedStep), "ERKStepSetFixedStep");
   }
@@ -255,6 +258,26 @@ void ArkodeExplicit::advanceTo(Real t) {
     throw Error("ARKODE ERKStepEvolve returned at t = " + std::to_string(reached) + " instead of " +
                 std::to_string(t));
   m.time = t;  // ARKODE returned at the stop time; keep the caller's value exactly
+}
+
+void ArkodeExplicit::setFixedStep(Real h) {
+  Impl& m = *impl_;
+  if (m.options.adaptive) throw Error("arkode: setFixedStep() on an adaptive run");
+  if (!(h > 0) || !std::isfinite(h))
+    throw InputError("integrator.time_step", "must be positive and finite (got " + std::to_string(h) + ")");
+  m.options.fixedStep = h;
+  // In 6.4.1 this sets the step of every following step (and resets the initial-step estimate,
+  // unused with a fixed step); ARKODE reads it at the start of each step.
+  if (m.memory) m.check(ERKStepSetFixedStep(m.memory, h), "ERKStepSetFixedStep");
+}
+
+void ArkodeExplicit::setMaxStep(Real h) {
+  Impl& m = *impl_;
+  if (!m.options.adaptive) throw Error("arkode: setMaxStep() on a fixed-step run");
+  if (!(h >= 0) || !std::isfinite(h))
+    throw InputError("integrator.max_step", "must be non-negative and finite (got " + std::to_string(h) + ")");
+  m.maxStep = h;
+  if (m.memory) m.check(ERKStepSetMaxStep(m.memory, h), "ERKStepSetMaxStep");
 }
 
 Real ArkodeExplicit::time() const { return impl_->time; }

@@ -57,6 +57,14 @@ class ArkodeExplicit {
   void step();
   // Advances to exactly t (>= time()); the last step is shortened to land on t.
   void advanceTo(Real t);
+  // Fixed-step runs: the step of every following step (and options().fixedStep), e.g. from a CFL
+  // rule before each step. May be called before initialise or between steps. Throws
+  // InputError("integrator.time_step") unless h > 0 and finite, Error on an adaptive run.
+  void setFixedStep(Real h);
+  // Adaptive runs: an upper bound on the steps ARKODE chooses from now on (0: none); it persists
+  // across initialise. Throws
+  // InputError("integrator.max_step") for a negative or non-finite h, Error on a fixed-step run.
+  void setMaxStep(Real h);
 
   Real time() const;
   const Vector& state() const;   // y at time()

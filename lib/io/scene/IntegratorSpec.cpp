@@ -1,8 +1,10 @@
 #include "io/scene/IntegratorSpec.hpp"
 
+#include "integrators/FirstOrderIntegratorFactory.hpp"
 #include "io/scene/Format.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace mfwave {
 
@@ -31,7 +33,7 @@ IntegratorSpec readIntegrator(SceneReader& reader) {
                                               scene::formatNumber(s.endTime) + " into whole steps");
     s.cfl = 0;
   } else {
-    s.cfl = reader.number("integrator.cfl", 0.5);
+    s.cfl = reader.number("integrator.cfl", usesFirstOrderIntegrators(reader.schema()) ? 1.0 : 0.5);
   }
 
   const auto onlyWith = [&](const char* key, const std::string& integrator) {
@@ -66,6 +68,25 @@ IntegratorSpec readIntegrator(SceneReader& reader) {
     }
   }
   return s;
+}
+
+void useFirstOrderIntegrators(SceneSchema& schema) {
+  schema.at("integrator.name").oneOf(firstOrderIntegratorNames()).defaultsTo("\"leapfrog\"")
+      .describedAs("first-order integrator (drivers of first-order systems)");
+  schema.at("integrator.cfl").defaultsToNote("1.0 unless time_step is given")
+      .describedAs("time step as a fraction of the method's own step criteria, evaluated before every step");
+}
+
+bool usesFirstOrderIntegrators(const SceneSchema& schema) {
+  const KeySpec* name = schema.find("integrator.name");
+  return name && name->choices == firstOrderIntegratorNames();
+}
+
+IntegratorSpec readFirstOrderIntegrator(SceneReader& reader) {
+  if (!usesFirstOrderIntegrators(reader.schema()))
+    throw std::logic_error("readFirstOrderIntegrator: the schema offers second-order integrators; call "
+                           "useFirstOrderIntegrators(schema) before loading the scene");
+  return readIntegrator(reader);
 }
 
 }  // namespace mfwave

@@ -1,9 +1,16 @@
 #pragma once
-// [integrator]: which second-order integrator, until when, and with which step: a fixed
-// time_step, or cfl times the method's stable step (cfl = 0.5 when neither is given).
+// [integrator]: which integrator, until when, and with which step: a fixed time_step, or cfl times
+// the method's stable step (cfl = 0.5 when neither is given).
+//
+// Most drivers run second-order systems (secondOrderIntegratorNames()). A driver of a first-order
+// system (the updated-Lagrangian SPH) calls useFirstOrderIntegrators(schema) before loading the
+// scene: integrator.name then takes firstOrderIntegratorNames() (default "leapfrog") and cfl
+// defaults to 1, a factor on the method's own step criteria (which carry their own Courant number).
+// readScene reads either kind; readFirstOrderIntegrator says that the schema is first-order.
 
 #include "integrators/IntegratorFactory.hpp"
 #include "io/scene/SceneReader.hpp"
+#include "io/scene/SceneSchema.hpp"
 
 #include <optional>
 #include <string>
@@ -11,11 +18,11 @@
 namespace mfwave {
 
 struct IntegratorSpec {
-  std::string name = "central_difference";  // one of secondOrderIntegratorNames()
+  std::string name = "central_difference";  // secondOrderIntegratorNames(), or firstOrderIntegratorNames()
   Real endTime = 0;
   std::optional<Real> timeStep;  // given: the step (it divides endTime)
-  Real cfl = 0.5;                // used when timeStep is not given
-  IntegratorOptions options;     // newmark beta/gamma, ARKODE table/adaptive/tolerances
+  Real cfl = 0.5;                // used when timeStep is not given (1 by default for first-order)
+  IntegratorOptions options;     // newmark beta/gamma, ARKODE table/adaptive/tolerances (options.arkode)
 
   // The step to run with: timeStep, or the largest step <= cfl * stableStep that divides
   // endTime into whole steps.
@@ -24,5 +31,14 @@ struct IntegratorSpec {
 };
 
 IntegratorSpec readIntegrator(SceneReader& reader);
+
+// For drivers of first-order systems: integrator.name takes firstOrderIntegratorNames() (default
+// "leapfrog") and integrator.cfl defaults to 1. Call before loading the scene.
+void useFirstOrderIntegrators(SceneSchema& schema);
+// True after useFirstOrderIntegrators (integrator.name offers the first-order names).
+bool usesFirstOrderIntegrators(const SceneSchema& schema);
+// readIntegrator for a first-order driver: name (a first-order one), end time, fixed step or cfl,
+// and the ARKODE options. Throws std::logic_error unless useFirstOrderIntegrators was called.
+IntegratorSpec readFirstOrderIntegrator(SceneReader& reader);
 
 }  // namespace mfwave

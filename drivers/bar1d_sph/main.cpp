@@ -1,0 +1,162 @@
+// bar1d-sph: two elastic bars meeting at x = 0 with +-v0, by the updated-Lagrangian SPH in 1-D
+// (uniaxial strain, waves at c_p). The impact sends a compression front into each bar; behind the
+// fronts the material rests under the stress -rho c v0 (SymmetricBarImpact). The study measures, at
+// each particle spacing, the L1 errors of velocity and stress at the end time, the plateau stress
+// against -rho c v0, the front position against c t, the energy balance, and the orders in dx.
+// The exact fields are discontinuous, so an L1 order near 1 (fronts smeared over a few h) is what a
+// consistent scheme can reach.
+//
+//   bar1d-sph --scene data/scenes/bar1d-sph.toml [--set 'study.spacings=[0.02,0.01]'] [--out DIR]
+// Writes cases.csv, profile-<dx>.csv per spacing, frames of the scene's spacing (frame.pvd), and
+// summary.json. Plot: /usr/bin/python3 analysis/plot_bar1d_sph.py OUT. Results: docs/studies/sph-solids.md.
+
+#include "BarCase.hpp"
+
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "io/run/DriverCommandLine.hpp"
+#include "io/run/RunDriver.hpp"
+#include "io/run/RunSummary.hpp"
+#include "io/run/SceneDriver.hpp"
+#include "io/scene/LoadScene.hpp"
+#include "io/scene/Scene.hpp"
+#include "io/scene/UpdatedLagrangianSphSpec.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+using namespace mfwave;
+using namespace mfwave::bar1dsph;
+
+namespace {
+
+const char* kProgram = "bar1d-sph";
+
+SceneSchema barSchema() {
+  using T = ValueType;
+  SceneSchema schema = SceneSchema::common();
+  addUpdatedLagrangianSphKeys(schema);
+  useFirstOrderIntegrators(schema);
+  schema.add("study", T::Table).describedAs("the convergence study of bar1d-sph");
+  schema.add("study.impact_speed", T::Number).withUnit("m/s").defaultsTo("0.01").positive()
+      .describedAs("v0: the bar on x < 0 moves with +v0, the bar on x > 0 with -v0");
+  schema.add("study.spacings", T::NumberArray).withUnit("m").defaultsToNote("[geometry.spacing]")
+      .describedAs("particle spacings of the convergence cases (h scales with them)");
+  schema.add("study.plateau_fraction", T::Number).withUnit("-").defaultsTo("0.5").between(0, 1, false, false)
+      .describedAs("the plateau stress is the mean over |x| < plateau_fraction * c t");
+  return schema;
+}
+
+Settings readSettings(SceneReader& reader, Scene& scene) {
+  Settings settings;
+  scene = readScene(reader);
+  if (scene.info.dimension != 1) reader.fail("scene.dimension", "bar1d-sph is a 1-D study");
+  if (scene.geometry.shape != "line") reader.fail("geometry.shape", "bar1d-sph needs a line");
+  if (scene.method.name != "updated_lagrangian_sph") reader.fail("method.name", "bar1d-sph runs updated_lagrangian_sph");
+  if (!scene.boundaries.empty()) reader.fail("boundary", "bar1d-sph has free ends and takes no boundaries");
+  if (!scene.loads.empty()) reader.fail("load", "bar1d-sph takes no loads");
+  settings.options = readUpdatedLagrangianSph(reader, scene.material.material());
+  settings.integration = solidIntegrationSettings(scene.integrator);
+  settings.halfLength = scene.geometry.upper[0];
+  if (std::abs(scene.geometry.lower[0] + settings.halfLength) > 1e-12 * settings.halfLength)
+    reader.fail("geometry.lower", "the bars meet at x = 0: lower must be -upper");
+  settings.impactSpeed = reader.number("study.impact_speed");
+  settings.plateauFraction = reader.number("study.plateau_fraction");
+  settings.endTime = scene.integrator.endTime;
+  const Real c = scene.material.material().pWaveSpeed();
+  if (settings.endTime * c > settings.halfLength)
+    reader.fail("integrator.end_time", "the fronts reach the free ends at t = L / c_p = " +
+                                           std::to_string(settings.halfLength / c) + "; choose an end time before");
+  settings.spacings = reader.has("study.spacings") ? reader.numbers("study.spacings")
+                                                   : std::vector<Real>{scene.geometry.spacing};
+  for (Real dx : settings.spacings)
+    if (!(dx > 0) || dx > settings.halfLength / 4)
+      reader.fail("study.spacings", "each spacing must be positive and at most a quarter of a bar");
+  settings.frameSpacing = scene.geometry.spacing;
+  settings.output = scene.output;
+  return settings;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const SceneSchema schema = barSchema();
+  DriverCommandLine cli(kProgram, "bar1d-sph: two bars meeting at +-v0, updated-Lagrangian SPH; errors and convergence in dx",
+                        schema.describe());
+  if (const auto exit = cli.parse(argc, argv)) return *exit;
+
+  return runDriver(kProgram, [&]() -> int {
+    SceneReader reader = loadDriverScene(cli.options(), schema);
+    Scene scene;
+    const Settings settings = readSettings(reader, scene);
+    reader.checkAllKeysRead();
+    const std::string folder = prepareOutputFolder(cli.options(), scene.output.folder, reader);
+
+    std::vector<CaseResult> results;
+    for (Real dx : settings.spacings) {
+      results.push_back(runCase(settings, dx, folder, std::abs(dx - settings.frameSpacing) < 1e-12 * dx));
+      if (!cli.options().quiet) std::cerr << "  done dx = " << dx << '\n';
+    }
+
+    RunSummary summary;
+    summary.program = kProgram;
+    summary.scene = scene.info.name;
+    summary.method = scene.method.name;
+    summary.integrator = settings.integration.integrator;
+    AtomicFile table(folder + "/cases.csv");
+    table.stream() << "dx [m],particles,steps,mean_neighbours,l1_velocity,order_velocity,l1_stress,order_stress,"
+                      "plateau_stress_error,front_error_over_dx,balance_drift,wall_time [s]\n";
+    std::cout << std::right << std::setw(9) << "dx" << std::setw(7) << "N" << std::setw(8) << "steps" << std::setw(11)
+              << "L1(v)" << std::setw(7) << "order" << std::setw(11) << "L1(sig)" << std::setw(7) << "order"
+              << std::setw(11) << "plateau" << std::setw(10) << "front/dx" << std::setw(11) << "drift" << std::setw(9)
+              << "wall s" << '\n';
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      const CaseResult& r = results[i];
+      const auto order = [&](Real CaseResult::*field) {
+        return i > 0 ? std::log(results[i - 1].*field / r.*field) / std::log(results[i - 1].dx / r.dx) : std::nan("");
+      };
+      const Real ov = order(&CaseResult::l1Velocity), os = order(&CaseResult::l1Stress);
+      table.stream() << std::setprecision(10) << r.dx << ',' << r.particles << ',' << r.steps << ','
+                     << r.meanNeighbours << ',' << r.l1Velocity << ',' << ov << ',' << r.l1Stress << ',' << os << ','
+                     << r.plateauStressError << ',' << r.frontErrorOverDx << ',' << r.balanceDrift << ','
+                     << r.wallSeconds << '\n';
+      std::cout << std::setprecision(4) << std::setw(9) << r.dx << std::setw(7) << r.particles << std::setw(8)
+                << r.steps << std::setw(11) << r.l1Velocity << std::setw(7) << std::setprecision(3) << ov
+                << std::setw(11) << std::setprecision(4) << r.l1Stress << std::setw(7) << std::setprecision(3) << os
+                << std::setw(11) << std::setprecision(4) << r.plateauStressError << std::setw(10)
+                << r.frontErrorOverDx << std::setw(11) << r.balanceDrift << std::setw(9) << std::setprecision(3)
+                << r.wallSeconds << '\n';
+      summary.particles = std::max<Index>(summary.particles, r.particles);
+      summary.meanNeighbours = r.meanNeighbours;
+      summary.steps += r.steps;
+      summary.wallSeconds += r.wallSeconds;
+      summary.files.push_back(profileFileName(r.dx));
+    }
+    table.commit();
+    const CaseResult& finest = results.back();
+    summary.timeStep = finest.lastStep;
+    summary.simulatedTime = settings.endTime;
+    summary.errors.push_back({"l1_velocity_finest", finest.l1Velocity});
+    summary.errors.push_back({"l1_stress_finest", finest.l1Stress});
+    summary.errors.push_back({"plateau_stress_error_finest", finest.plateauStressError});
+    summary.errors.push_back({"front_error_over_dx_finest", finest.frontErrorOverDx});
+    summary.figures.push_back({"balance_drift_finest", finest.balanceDrift});
+    if (results.size() > 1) {
+      const CaseResult& previous = results[results.size() - 2];
+      const Real ratio = std::log(previous.dx / finest.dx);
+      summary.figures.push_back({"order_l1_velocity", std::log(previous.l1Velocity / finest.l1Velocity) / ratio});
+      summary.figures.push_back({"order_l1_stress", std::log(previous.l1Stress / finest.l1Stress) / ratio});
+    }
+    summary.notes.push_back("particles: the finest case; steps and wall time summed over all cases");
+    summary.notes.push_back("errors: relative L1 norms at the end time against SymmetricBarImpact; plateau error relative "
+                            "to rho c v0; front error in particle spacings");
+    summary.files.insert(summary.files.begin(), {"scene.resolved.toml", "cases.csv"});
+    if (results.front().framesWritten > 0 || results.back().framesWritten > 0) summary.files.push_back("frame.pvd");
+    summary.finish();
+    summary.files.push_back("summary.json");
+    summary.writeJson(folder + "/summary.json");
+    summary.print(std::cout);
+    return 0;
+  });
+}

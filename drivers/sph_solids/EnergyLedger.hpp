@@ -1,0 +1,42 @@
+#pragma once
+// The energy ledger of an updated-Lagrangian SPH run, recorded every output step: kinetic, strain
+// and internal energy, work done by loads and constraints, energy removed by the artificial
+// viscosity and work of the artificial stress, the balance kinetic + internal - load work, and the
+// zero-energy-mode indicators (zig-zag, smallest spacing), so a user sees when the tensile
+// instability or hourglass modes start. It observes the integrator directly (the whole state y).
+
+#include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
+#include "observers/Observer.hpp"
+#include "observers/TimeSeries.hpp"
+
+namespace mfwave {
+
+template <int D>
+class EnergyLedger : public Observer {
+ public:
+  // Column indices of series() (time excluded).
+  enum Column : std::size_t {
+    Kinetic, Strain, Internal, LoadWork, ViscousDissipation, ArtificialStressWork, Balance, Zigzag,
+    MinimumSpacingRatio
+  };
+
+  explicit EnergyLedger(UpdatedLagrangianSph<D>& system);
+  void observe(const StateView& state) override;
+
+  const TimeSeries& series() const { return series_; }
+  // Largest |balance(t) - balance(0)| / max(kinetic + strain at t = 0, tiny), over the rows so far.
+  Real largestBalanceDrift() const;
+  // Largest zig-zag indicator and the time it was first above `threshold` (-1 if never).
+  Real largestZigzag() const;
+  Real firstTimeZigzagAbove(Real threshold) const;
+
+ private:
+  UpdatedLagrangianSph<D>& system_;
+  TimeSeries series_;
+};
+
+extern template class EnergyLedger<1>;
+extern template class EnergyLedger<2>;
+extern template class EnergyLedger<3>;
+
+}  // namespace mfwave

@@ -1,0 +1,25 @@
+#pragma once
+// [method] options of the updated-Lagrangian SPH for solids (name = "updated_lagrangian_sph"),
+// registered by the drivers that run it (addUpdatedLagrangianSphKeys) and read after the common
+// sections. Every artificial term of the primer (viscosity, artificial stress, XSPH) and every
+// step criterion is a key, with the defaults of UpdatedLagrangianSphOptions, so that its effect can
+// be measured from the scene alone. These drivers integrate a first-order system: they also call
+// useFirstOrderIntegrators (IntegratorSpec.hpp) for [integrator].
+
+#include "io/scene/SceneReader.hpp"
+#include "io/scene/SceneSchema.hpp"
+#include "methods/updated_lagrangian_sph/UpdatedLagrangianSphOptions.hpp"
+
+namespace mfwave {
+
+// Adds "updated_lagrangian_sph" to method.name and its option keys. A schema holds the options of
+// one SPH method: registering these after addVeryWeakSphKeys throws std::logic_error (method.kernel
+// and method.smoothing_length_ratio are shared names with different defaults).
+void addUpdatedLagrangianSphKeys(SceneSchema& schema);
+
+// Reads the options when method.name is updated_lagrangian_sph; `material` from the scene's
+// [material]. method.body_force has scene.dimension entries or 3 (then those beyond the dimension
+// must be 0); absent, it is zero.
+UpdatedLagrangianSphOptions readUpdatedLagrangianSph(SceneReader& reader, const Material& material);
+
+}  // namespace mfwave

@@ -1,0 +1,34 @@
+#pragma once
+// The velocity-gradient pass: everything the configuration rate dq/dt = (dx/dt, drho/dt, ds/dt)
+// needs, from positions, velocities, densities and stresses only (no pressures, no forces), so the
+// leapfrog's drift costs one pass over the pairs.
+//   L_i = sum_j V_j (v_j - v_i) grad_i W_ij^T, V_j = m_j / rho_j     Li eq. (22), L_ab = dv_a/dx_b
+//   ds_i/dt = 2G dev(eps'_i) + Omega_i s_i - s_i Omega_i              Li eq. (24)-(26)
+//   drho_i/dt = sum_j m_j (v_i - v_j) . grad_i W_ij                   Li eq. (18), continuity only
+//   dx_i/dt = v_i + xsph sum_j m_j / rhobar_ij (v_j - v_i) W_ij       XSPH (Monaghan 1989)
+// Constraints are applied by the caller.
+
+#include "methods/updated_lagrangian_sph/ParticleView.hpp"
+#include "methods/updated_lagrangian_sph/UpdatedLagrangianSphLayout.hpp"
+
+namespace mfwave {
+
+struct KinematicsSettings {
+  Real shearModulus = 1;
+  Real xsph = 0;
+  bool continuity = true;  // false: drho/dt = 0 (summation density)
+};
+
+// Writes the rates of x, rho and s into qdot (layout.configurationSize() entries, layout order).
+template <int D>
+void kinematicsRates(const ParticleView<D>& view, const KinematicsSettings& settings,
+                     const UpdatedLagrangianSphLayout<D>& layout, Real* qdot);
+
+extern template void kinematicsRates<1>(const ParticleView<1>&, const KinematicsSettings&,
+                                        const UpdatedLagrangianSphLayout<1>&, Real*);
+extern template void kinematicsRates<2>(const ParticleView<2>&, const KinematicsSettings&,
+                                        const UpdatedLagrangianSphLayout<2>&, Real*);
+extern template void kinematicsRates<3>(const ParticleView<3>&, const KinematicsSettings&,
+                                        const UpdatedLagrangianSphLayout<3>&, Real*);
+
+}  // namespace mfwave

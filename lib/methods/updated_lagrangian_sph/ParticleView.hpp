@@ -1,0 +1,30 @@
+#pragma once
+// A read-only view of the per-particle fields one evaluation works on: positions, velocities and
+// deviatoric stresses straight from the state vector y (particle-major), the current densities
+// (from y, or the summation densities of this evaluation) and the masses. The pair passes take
+// this instead of the system, so each pass is a plain function of its inputs.
+
+#include "core/Types.hpp"
+#include "kernels/Kernel.hpp"
+#include "neighbours/NeighbourList.hpp"
+
+namespace mfwave {
+
+template <int D>
+struct ParticleView {
+  static constexpr int stressComponents = D * (D + 1) / 2;
+
+  Index count = 0;
+  const Kernel* kernel = nullptr;
+  const NeighbourList* neighbours = nullptr;
+  const Real* x = nullptr;    // count * D positions
+  const Real* v = nullptr;    // count * D velocities
+  const Real* s = nullptr;    // count * stressComponents, Voigt order
+  const Real* rho = nullptr;  // count densities
+  const Real* m = nullptr;    // count masses
+
+  Vec<D> position(Index i) const { return Eigen::Map<const Vec<D>>(x + i * D); }
+  Vec<D> velocity(Index i) const { return Eigen::Map<const Vec<D>>(v + i * D); }
+};
+
+}  // namespace mfwave

@@ -1,0 +1,53 @@
+#include "methods/updated_lagrangian_sph/SkinnedNeighbours.hpp"
+
+#include "methods/updated_lagrangian_sph/ParallelThreshold.hpp"
+
+#include <algorithm>
+
+namespace mfwave {
+
+template <int D>
+SkinnedNeighbours<D>::SkinnedNeighbours(Real supportRadius, Real skin)
+    : trigger2_(0.25 * skin * skin * supportRadius * supportRadius), cells_((1 + skin) * supportRadius) {}
+
+template <int D>
+bool SkinnedNeighbours<D>::refresh(const Real* x, Index count) {
+  if (rebuilds_ == 0 || static_cast<Index>(built_[0].size()) != count) {
+    rebuild(x, count);
+    return true;
+  }
+  Real largest = 0;
+#pragma omp parallel for if (count > kParallelParticles) reduction(max : largest)
+  for (Index i = 0; i < count; ++i) {
+    Real d2 = 0;
+    for (int a = 0; a < D; ++a) {
+      const Real d = x[i * D + a] - built_[static_cast<std::size_t>(a)][static_cast<std::size_t>(i)];
+      d2 += d * d;
+    }
+    largest = std::max(largest, d2);
+  }
+  // Strictly more than skin R / 2: with skin 0 any motion at all rebuilds.
+  if (largest > trigger2_) {
+    rebuild(x, count);
+    return true;
+  }
+  return false;
+}
+
+template <int D>
+void SkinnedNeighbours<D>::rebuild(const Real* x, Index count) {
+  for (int a = 0; a < D; ++a) {
+    std::vector<Real>& axis = built_[static_cast<std::size_t>(a)];
+    axis.resize(static_cast<std::size_t>(count));
+    for (Index i = 0; i < count; ++i) axis[static_cast<std::size_t>(i)] = x[i * D + a];
+  }
+  cells_.rebuild(built_);
+  buildNeighbourList(cells_, list_);
+  ++rebuilds_;
+}
+
+template class SkinnedNeighbours<1>;
+template class SkinnedNeighbours<2>;
+template class SkinnedNeighbours<3>;
+
+}  // namespace mfwave

@@ -1,0 +1,41 @@
+#pragma once
+// Neighbour lists for moving particles with a skin (Verlet lists): built with radius
+// (1 + skin) R, R the kernel support, and rebuilt only when some particle has moved more than
+// skin R / 2 since the last build. Then every pair closer than R is still listed (each of the two
+// moved at most skin R / 2, so at the build they were closer than (1 + skin) R), and the pair sums,
+// which skip listed pairs beyond R, are the same as with freshly built lists.
+
+#include "core/Types.hpp"
+#include "neighbours/CellList.hpp"
+#include "neighbours/NeighbourList.hpp"
+
+namespace mfwave {
+
+template <int D>
+class SkinnedNeighbours {
+ public:
+  SkinnedNeighbours(Real supportRadius, Real skin);
+
+  // Makes the lists valid for positions x (particle-major, count * D entries). Returns true when it
+  // rebuilt them.
+  bool refresh(const Real* x, Index count);
+
+  const NeighbourList& list() const { return list_; }
+  long rebuilds() const { return rebuilds_; }
+  Real listRadius() const { return cells_.radius(); }
+
+ private:
+  void rebuild(const Real* x, Index count);
+
+  Real trigger2_;  // (skin R / 2)^2
+  CellList<D> cells_;
+  NeighbourList list_;
+  Coordinates<D> built_;  // positions at the last build
+  long rebuilds_ = 0;
+};
+
+extern template class SkinnedNeighbours<1>;
+extern template class SkinnedNeighbours<2>;
+extern template class SkinnedNeighbours<3>;
+
+}  // namespace mfwave
