@@ -1,0 +1,132 @@
+#!/usr/bin/python3
+"""Plot the plate study (the Gray-Monaghan-Swift oscillating cantilever plate): the tip's transverse
+displacement against the thin-plate motion over the first periods, the main case over the whole run,
+its energy ledger, and the measured period against the resolution with the thin-plate and
+Timoshenko periods.
+
+Usage: /usr/bin/python3 analysis/plot_plate.py OUT_DIR
+Reads OUT_DIR/cases.csv, OUT_DIR/<case>-tip.csv and OUT_DIR/<case>-energy.csv; writes
+OUT_DIR/plate-figures.png.
+"""
+import csv
+import math
+import os
+import sys
+
+from plotting import finish_axes, save_atomically  # selects the Agg backend first
+
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def read_table(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def read_columns(path):
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        reader = csv.reader(f)
+        header = next(reader)
+        columns = list(zip(*[[float(x) for x in row] for row in reader]))
+    return {name: list(col) for name, col in zip(header, columns)}
+
+
+def number(row, key):
+    try:
+        return float(row[key])
+    except (KeyError, ValueError):
+        return math.nan
+
+
+def label(case):
+    method = "very weak SPH" if case["method"] == "very_weak_sph" else "UL-SPH"
+    return f"{method}, H/dp = {case['H_over_dp']}, V_f = {case['V_f']}"
+
+
+def first_periods(ax, out_dir, cases, thin, periods=3.0):
+    """Tip displacement over the tip's thin-plate amplitude V_f c0 / omega, against t / T_thin."""
+    omega = 2 * math.pi / thin
+    shown = [c for c in cases if c["H_over_dp"] == cases[0]["H_over_dp"]]
+    for k, case in enumerate(shown):
+        tip = read_columns(os.path.join(out_dir, f"{case['case']}-tip.csv"))
+        if tip is None:
+            continue
+        scale = number(case, "tip_start_velocity [m/s]") / omega
+        t = [x / thin for x in tip["t [s]"] if x / thin <= periods]
+        u = [y / scale for y in tip["u_y [m]"][: len(t)]]
+        ax.plot(t, u, f"C{k}-", label=label(case))
+    t = [periods * i / 600 for i in range(601)]
+    ax.plot(t, [math.sin(2 * math.pi * x) for x in t], "k--", lw=1.5, label="thin plate")
+    ax.set_xlabel("t / T_thin")
+    ax.set_ylabel("tip u_y / (v_tip(0) / omega_thin)")
+    ax.set_title("tip displacement over the first periods")
+
+
+def whole_run(ax, out_dir, case):
+    tip = read_columns(os.path.join(out_dir, f"{case['case']}-tip.csv"))
+    if tip is None:
+        return
+    ax.plot(tip["t [s]"], tip["u_y [m]"], "C0-", lw=0.7, label=f"{label(case)}: u_y")
+    ax.plot(tip["t [s]"], tip["u_x [m]"], "C1-", lw=0.7, label="u_x")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("tip displacement [m]")
+    ax.set_title(f"{case['case']}: {number(case, 'periods_run'):.1f} periods, T = {number(case, 'period [s]'):.4f} s")
+
+
+def ledger(ax, out_dir, case):
+    energy = read_columns(os.path.join(out_dir, f"{case['case']}-energy.csv"))
+    if energy is None or "balance [J]" not in energy:
+        return
+    t = energy["t [s]"]
+    e0 = energy["kinetic [J]"][0] + energy["strain [J]"][0]
+    for k, name in enumerate(("kinetic [J]", "strain [J]", "internal [J]", "viscous_dissipation [J]",
+                              "artificial_stress_work [J]")):
+        ax.plot(t, [x / e0 for x in energy[name]], f"C{k}-", lw=0.8, label=name.split(" ")[0])
+    b0 = energy["balance [J]"][0]
+    ax.plot(t, [(b - b0) / e0 for b in energy["balance [J]"]], "k-", lw=1.2,
+            label=f"balance drift (largest {number(case, 'energy_drift'):.2g})")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("energy / E(0)")
+    ax.set_title(f"{case['case']}: energy ledger")
+
+
+def convergence(ax, cases, thin, timoshenko):
+    sph = [c for c in cases if c["method"] == "updated_lagrangian_sph"]
+    factors = sorted({c["V_f"] for c in sph}, key=float)
+    for k, vf in enumerate(factors):
+        rows = sorted([c for c in sph if c["V_f"] == vf], key=lambda c: int(c["H_over_dp"]))
+        ax.plot([int(c["H_over_dp"]) for c in rows], [number(c, "period [s]") for c in rows], f"C{k}o-",
+                label=f"UL-SPH, V_f = {vf}")
+    for c in cases:
+        if c["method"] == "very_weak_sph":
+            ax.plot([int(c["H_over_dp"])], [number(c, "period [s]")], "ks", label=f"very weak SPH, V_f = {c['V_f']}")
+    ax.axhline(thin, color="k", ls="--", lw=1, label=f"thin plate {thin:.4f} s")
+    ax.axhline(timoshenko, color="gray", ls=":", lw=1.5, label=f"Timoshenko {timoshenko:.4f} s")
+    ax.set_xlabel("particles across the thickness H / dp")
+    ax.set_ylabel("period [s]")
+    ax.set_title("period against resolution")
+
+
+def main():
+    if len(sys.argv) != 2:
+        print(__doc__)
+        return 2
+    out_dir = sys.argv[1]
+    cases = read_table(os.path.join(out_dir, "cases.csv"))
+    thin = number(cases[0], "thin_period [s]")
+    timoshenko = number(cases[0], "timoshenko_period [s]")
+    fig, axes = plt.subplots(2, 2, figsize=(14, 9))
+    first_periods(axes[0][0], out_dir, cases, thin)
+    whole_run(axes[0][1], out_dir, cases[0])
+    ledger(axes[1][0], out_dir, cases[0])
+    convergence(axes[1][1], cases, thin, timoshenko)
+    finish_axes([axes[0][0], axes[0][1], axes[1][0], axes[1][1]])
+    fig.tight_layout()
+    save_atomically(fig, os.path.join(out_dir, "plate-figures.png"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,176 @@
+#include "PlateCase.hpp"
+
+#include "EnergyLedger.hpp"
+#include "PlateLattice.hpp"
+#include "SolidIntegration.hpp"
+#include "SolidStateAdapter.hpp"
+#include "TipRecorder.hpp"
+#include "VeryWeakPlate.hpp"
+
+#include "core/Error.hpp"
+#include "io/run/ProgressReporter.hpp"
+#include "io/vtk/PngFrameRenderer.hpp"
+#include "io/vtk/VtkFrameWriter.hpp"
+#include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
+#include "observers/TimeLoop.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <optional>
+
+namespace mfwave::plate {
+namespace {
+
+constexpr int D = 2;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+PngOptions pngOptions(const OutputSpec& output) {
+  PngOptions png;
+  png.field = output.pngField;
+  png.component = output.pngComponent == "magnitude" ? PngOptions::magnitude : (output.pngComponent == "x" ? 0 : 1);
+  png.pointSize = output.pngPointSize;
+  png.width = output.pngWidth;
+  png.height = output.pngHeight;
+  return png;
+}
+
+PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCaseSettings& settings,
+                                         const std::string& folder, bool progress) {
+  const Scene& scene = study.scene;
+  PlateCaseResult result;
+  result.settings = settings;
+  const auto setupStart = Clock::now();
+  const CantileverPlate plate(study.length, study.thickness, scene.material.material());
+
+  // particles: the plate and its clamp, cell-centred
+  const PlateLattice lattice =
+      cellCentredPlate(study.length, study.thickness, study.lowerY, settings.rows, study.clampLayers);
+  result.spacing = lattice.spacing;
+  result.particles = lattice.particles.physicalCount();
+  result.fixedParticles = static_cast<Index>(lattice.clamp.size());
+
+  // the method, the clamp, and the first mode's velocity (GMS)
+  UpdatedLagrangianSph<D> system(lattice.particles, study.sph);
+  system.fixParticles(lattice.clamp);
+  result.smoothingLength = system.smoothingLength();
+  Vector v0 = Vector::Zero(result.particles * D);
+  for (Index i = 0; i < result.particles; ++i)
+    v0[i * D + 1] = plate.initialVelocity(lattice.particles.position(i)[0], settings.velocityFactor);
+  const Vector y0 = system.initialState(v0);
+  const auto& layout = system.layout();
+  for (Index i : lattice.tip) result.tipStartVelocity += y0[layout.velocity(i, 1)];
+  result.tipStartVelocity /= static_cast<Real>(lattice.tip.size());
+
+  // the integrator, with the method's step criteria (times integrator.cfl) before every step
+  SolidIntegrationSettings integration;
+  integration.integrator = scene.integrator.name;
+  integration.arkode = scene.integrator.options.arkode;
+  integration.fixedStep = scene.integrator.timeStep.value_or(0);
+  std::unique_ptr<FirstOrderIntegrator> integrator = makeSolidIntegrator(system, y0, integration);
+  if (!scene.integrator.timeStep && study.stepFactor != 1) {
+    const Real factor = study.stepFactor;
+    integrator->setStepSizeFunction([&system, factor](Real, const Vector& y) { return factor * system.stableStep(y); });
+  }
+  const Real firstStep = study.stepFactor * system.stableStep(y0);
+
+  // observers: tip, energy ledger, frames through the particle view
+  TipRecorder tip([&layout, &lattice](const StateView& s) {
+    const Vector& y = s.displacement;  // a first-order integrator's view: the whole state
+    std::array<Real, 4> sum{0, 0, 0, 0};
+    for (Index i : lattice.tip) {
+      const Vec<D> x0 = lattice.particles.position(i);
+      sum[0] += y[layout.position(i, 0)] - x0[0];
+      sum[1] += y[layout.position(i, 1)] - x0[1];
+      sum[2] += y[layout.velocity(i, 0)];
+      sum[3] += y[layout.velocity(i, 1)];
+    }
+    for (Real& value : sum) value /= static_cast<Real>(lattice.tip.size());
+    return sum;
+  });
+  EnergyLedger<D> ledger(system);
+  SolidStateAdapter<D> adapter(system, lattice.particles);
+  ProgressReporter reporter(settings.endTime, result.particles, progress);
+  std::optional<VtkFrameWriter<D>> frames;
+  std::optional<PngFrameRenderer<D>> images;
+  TimeLoop loop;
+  loop.add(reporter);
+  loop.add(tip, study.tipEvery);
+  loop.add(ledger, study.energyEvery);
+  if (settings.writeFrames && scene.output.writesFrames()) {
+    if (scene.output.vtk) {
+      frames.emplace(adapter.particles(), folder, settings.name, D, adapter.extraFields());
+      adapter.add(*frames);
+    }
+    if (scene.output.png && study.pngFrames > 0) {
+      // About study.pngFrames pictures over the run (rendering costs ~1 s each).
+      const Real expectedFrames = settings.endTime / firstStep / static_cast<Real>(scene.output.every);
+      const long every = std::max(1L, std::lround(expectedFrames / static_cast<Real>(study.pngFrames)));
+      images.emplace(adapter.particles(), folder, settings.name, D, pngOptions(scene.output), every,
+                     adapter.extraFields());
+      adapter.add(*images);
+    }
+    loop.add(adapter, scene.output.every);
+  }
+  result.setupSeconds = secondsSince(setupStart);
+
+  const RunStatistics stats = loop.run(*integrator, settings.endTime);
+  result.steps = stats.steps;
+  result.runSeconds = stats.wallSeconds;
+  result.meanStep = stats.steps > 0 ? (stats.endTime - stats.startTime) / static_cast<Real>(stats.steps) : 0;
+  result.meanNeighbours = system.meanNeighbourCount();
+  result.neighbourRebuilds = system.neighbourRebuilds();
+
+  // the ledger: drift of the balance, where the energy went
+  result.energyDrift = ledger.largestBalanceDrift();
+  result.largestZigzag = ledger.largestZigzag();
+  const TimeSeries& energy = ledger.series();
+  const Real initial = energy.column(EnergyLedger<D>::Kinetic).front() + energy.column(EnergyLedger<D>::Strain).front();
+  result.viscousFraction = energy.column(EnergyLedger<D>::ViscousDissipation).back() / initial;
+  result.artificialStressFraction = energy.column(EnergyLedger<D>::ArtificialStressWork).back() / initial;
+  const std::vector<Real> kinetic = energy.column(EnergyLedger<D>::Kinetic);
+  const std::vector<Real> zigzag = energy.column(EnergyLedger<D>::Zigzag);
+  result.largestZigzagEnergy = 0;
+  for (std::size_t k = 0; k < zigzag.size(); ++k)
+    result.largestZigzagEnergy = std::max(result.largestZigzagEnergy, zigzag[k] * zigzag[k] * kinetic[k] / initial);
+  const std::vector<Real> spacing = energy.column(EnergyLedger<D>::MinimumSpacingRatio);
+  result.smallestSpacingRatio = *std::min_element(spacing.begin(), spacing.end());
+
+  tip.series().writeCsv(folder + "/" + settings.name + "-tip.csv");
+  energy.writeCsv(folder + "/" + settings.name + "-energy.csv");
+  result.files.push_back(settings.name + "-tip.csv");
+  result.files.push_back(settings.name + "-energy.csv");
+  if (frames) result.files.push_back(settings.name + ".pvd (" + std::to_string(frames->framesWritten()) + " frames)");
+  if (images) {
+    if (images->skippedReason().empty())
+      result.files.push_back(settings.name + "_*.png (" + std::to_string(images->framesRendered()) + " images)");
+    else
+      result.notes.push_back("no PNG frames: " + images->skippedReason());
+  }
+  analyseTip(result, tip.series(), plate, study.shearCoefficient);
+  return result;
+}
+
+}  // namespace
+
+void analyseTip(PlateCaseResult& result, const TimeSeries& tip, const CantileverPlate& plate, Real shearCoefficient) {
+  result.tip = analyseOscillation(tip.times(), tip.column(1));
+  result.thinPeriod = plate.period();
+  result.timoshenkoPeriod = plate.timoshenkoPeriod(shearCoefficient);
+  constexpr Real pi = 3.14159265358979323846;
+  result.expectedAmplitude = result.tip.period > 0 ? result.tipStartVelocity * result.tip.period / (2 * pi)
+                                                   : std::numeric_limits<Real>::quiet_NaN();
+  if (result.tip.halfPeriods < 2)
+    result.notes.push_back(result.settings.name + ": fewer than two half periods of the tip were seen; no period");
+}
+
+PlateCaseResult runPlateCase(const PlateStudy& study, const PlateCaseSettings& settings, const std::string& folder,
+                             bool progress) {
+  if (settings.method == PlateMethod::VeryWeak) return runVeryWeakPlateCase(study, settings, folder, progress);
+  return runUpdatedLagrangianCase(study, settings, folder, progress);
+}
+
+}  // namespace mfwave::plate

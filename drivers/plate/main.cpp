@@ -1,0 +1,384 @@
+// plate: the oscillating cantilever plate of Gray, Monaghan and Swift (2001) by updated-Lagrangian
+// SPH. A plate L x H (0.2 x 0.02, E = 2e6, nu = 0.3975, rho = 1000, plane strain) is clamped at
+// x = 0 between fixed particles and starts straight with the velocity of its first bending mode,
+// v_y = V_f c0 f(x) / f(L). Its tip's period is compared with the thin-plate period and the
+// Timoshenko period (lib/analytic/CantileverPlate), over the resolutions of study.resolutions; the
+// energy ledger of the main case covers 30 periods.
+//
+// Cases, each one run of the same scene:
+//   ulsph_Hdp<n>_Vf<V>   at the scene's resolution n = H / geometry.spacing: V = study.velocity_factor
+//                        to integrator.end_time (with frames), and V = study.small_velocity_factor
+//                        to the same end time; then every other n of study.resolutions, for both
+//                        velocity factors, to study.convergence_end_time
+//   vwsph_Hdp<n>_Vf<V>   with study.very_weak_sph: the very weak form SPH (consistent variant) at the
+//                        scene's resolution and the small velocity factor, to integrator.end_time
+// Writes cases.csv (period, errors, energy and cost per case), <case>-tip.csv, <case>-energy.csv,
+// frames of the main case (<case>.pvd, PNG under a display), summary.json, scene.resolved.toml.
+// Results: docs/studies/sph-solids.md. Plot: /usr/bin/python3 analysis/plot_plate.py OUT.
+//
+//   plate --scene data/scenes/plate.toml [--set 'study.resolutions=[5, 7, 10, 15]'] [--out DIR]
+
+#include "PlateCase.hpp"
+
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "io/run/DriverCommandLine.hpp"
+#include "io/run/RunDriver.hpp"
+#include "io/run/RunSummary.hpp"
+#include "io/run/SceneDriver.hpp"
+#include "io/scene/Format.hpp"
+#include "io/scene/IntegratorSpec.hpp"
+#include "io/scene/LoadScene.hpp"
+#include "io/scene/UpdatedLagrangianSphSpec.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+using namespace mfwave;
+using namespace mfwave::plate;
+
+namespace {
+
+const char* kProgram = "plate";
+
+SceneSchema plateSchema() {
+  using T = ValueType;
+  SceneSchema schema = SceneSchema::common();
+  addUpdatedLagrangianSphKeys(schema);
+  useFirstOrderIntegrators(schema);
+  schema.add("study", T::Table).describedAs("the cases of the plate study");
+  schema.add("study.velocity_factor", T::Number)
+      .withUnit("-")
+      .defaultsTo("0.05")
+      .positive()
+      .describedAs("V_f of the main case: the tip starts at V_f c0, c0 = sqrt(K / rho)");
+  schema.add("study.small_velocity_factor", T::Number)
+      .withUnit("-")
+      .defaultsTo("0.01")
+      .nonNegative()
+      .describedAs("V_f of the small-amplitude cases (and of the very weak form case); 0: none");
+  schema.add("study.resolutions", T::NumberArray)
+      .withUnit("-")
+      .defaultsToNote("[H / geometry.spacing]")
+      .describedAs("particles across the thickness, H / dp, of the convergence cases (whole numbers)");
+  schema.add("study.convergence_end_time", T::Number)
+      .withUnit("s")
+      .defaultsTo("1.5")
+      .positive()
+      .describedAs("simulated time of the short cases: small V_f, very weak form SPH, other resolutions");
+  schema.add("study.convergence_large_amplitude", T::Boolean)
+      .defaultsTo("false")
+      .describedAs("also run study.velocity_factor at the other resolutions (by default only the small one)");
+  schema.add("study.clamp_layers", T::Integer)
+      .withUnit("-")
+      .defaultsTo("3")
+      .atLeast(1)
+      .describedAs("columns of fixed particles at x < 0 that clamp the plate (at least the kernel support / dp)");
+  schema.add("study.energy_every", T::Integer)
+      .withUnit("-")
+      .defaultsTo("100")
+      .atLeast(1)
+      .describedAs("steps between rows of the energy ledger");
+  schema.add("study.png_frames", T::Integer)
+      .withUnit("-")
+      .defaultsTo("8")
+      .nonNegative()
+      .describedAs("about this many PNG pictures of the main case (with output.png); 0: none");
+  schema.add("study.shear_coefficient", T::Number)
+      .withUnit("-")
+      .defaultsTo("0.8333333333333334")
+      .positive()
+      .describedAs("Timoshenko shear coefficient kappa of the reference (5/6 for a rectangle)");
+  schema.add("study.very_weak_sph", T::Boolean)
+      .defaultsTo("true")
+      .describedAs("also run the very weak form SPH (consistent variant) at the scene's resolution and small V_f");
+  schema.add("study.very_weak_smoothing_length_ratio", T::Number)
+      .withUnit("-")
+      .defaultsTo("1.0")
+      .positive()
+      .describedAs("h / dx of the very weak form case");
+  schema.add("study.very_weak_smoothing_rate", T::Number)
+      .withUnit("1/s")
+      .defaultsTo("1.0e4")
+      .nonNegative()
+      .describedAs("rate of the filter v <- v - alpha (I - S)^2 v of the very weak form case (below 1e4 it blows up)");
+  schema.add("study.very_weak_cfl", T::Number)
+      .withUnit("-")
+      .defaultsTo("0.5")
+      .between(0, 1, false, true)
+      .describedAs("central-difference step of the very weak form case, as a fraction of its operator's stable step");
+  schema.add("study.very_weak_ghost_layers", T::Integer)
+      .withUnit("-")
+      .defaultsTo("2")
+      .nonNegative()
+      .describedAs("ghost layers on every face of the very weak form case (they complete the kernel sums)");
+  return schema;
+}
+
+struct Plan {
+  PlateStudy study;
+  std::vector<PlateCaseSettings> cases;
+};
+
+std::string caseName(const char* method, Index rows, Real velocityFactor) {
+  std::ostringstream s;
+  s << method << "_Hdp" << rows << "_Vf" << velocityFactor;
+  return s.str();
+}
+
+// The plate from [geometry] and [[boundary]]: the box is the plate, the -x face is the clamp.
+void readPlate(SceneReader& reader, PlateStudy& study) {
+  const Scene& scene = study.scene;
+  if (scene.info.dimension != 2) reader.fail("scene.dimension", "the plate is a 2-D (plane strain) study");
+  if (scene.method.name != "updated_lagrangian_sph")
+    reader.fail("method.name",
+                "the plate runs the updated_lagrangian_sph method (the very weak form case is "
+                "study.very_weak_sph)");
+  const GeometrySpec& g = scene.geometry;
+  if (g.ghostLayers > 0)
+    reader.fail("geometry.ghost_layers",
+                "must be 0: the plate's surfaces are free and the clamp is "
+                "study.clamp_layers columns of fixed particles");
+  for (std::size_t a = 0; a < g.periodic.size(); ++a)
+    if (g.periodic[a]) reader.fail("geometry.periodic", "the plate has no periodic axis");
+  if (std::abs(g.lower[0]) > 1e-12 * (g.upper[0] - g.lower[0]))
+    reader.fail("geometry.lower", "the clamp is at x = 0: lower[0] must be 0, got " + scene::formatNumber(g.lower[0]));
+  study.length = g.upper[0] - g.lower[0];
+  study.thickness = g.upper[1] - g.lower[1];
+  study.lowerY = g.lower[1];
+
+  if (scene.boundaries.empty())
+    reader.fail("boundary", "the plate is clamped at x = 0: give [[boundary]] faces = [\"-x\"], type = \"fixed\"");
+  for (std::size_t i = 0; i < scene.boundaries.size(); ++i) {
+    const BoundarySpec& b = scene.boundaries[i];
+    const std::string at = "boundary[" + std::to_string(i) + "]";
+    if (b.type == BoundaryType::Free) continue;
+    if (b.type != BoundaryType::Fixed)
+      reader.fail(at + ".type", "the plate takes only the clamp (fixed, face -x) and free faces, got '" +
+                                    boundaryTypeName(b.type) + "'");
+    if (b.faceMask != 1u)  // BoxFace::MinusX alone
+      reader.fail(at + ".faces", "only the -x face can be fixed (the clamp at x = 0)");
+  }
+  if ((facesWith(scene.boundaries, BoundaryType::Fixed) & 1u) == 0)
+    reader.fail("boundary", "the plate is clamped at x = 0: give [[boundary]] faces = [\"-x\"], type = \"fixed\"");
+  if (!scene.loads.empty())
+    reader.fail("load[0].type", "the plate takes no loads: it starts from its first mode's velocity");
+  if (!scene.probes.empty())
+    reader.fail("probe[0].name", "the plate records its tip itself (<case>-tip.csv); remove the [[probe]] entries");
+}
+
+Index rowsOf(SceneReader& reader, const std::string& at, Real rows, const PlateStudy& study) {
+  const Real rounded = std::round(rows);
+  if (!(rows >= 1) || std::abs(rows - rounded) > 1e-9 * rows)
+    reader.fail(at, "particles across the thickness must be a whole number >= 1, got " + scene::formatNumber(rows));
+  const Real columns = study.length / (study.thickness / rounded);
+  if (std::abs(columns - std::round(columns)) > 1e-6 * columns)
+    reader.fail(at, "dp = H / " + scene::formatNumber(rounded) + " does not divide the length " +
+                        scene::formatNumber(study.length));
+  return static_cast<Index>(rounded);
+}
+
+Plan readPlan(SceneReader& reader) {
+  Plan plan;
+  PlateStudy& study = plan.study;
+  study.scene = readScene(reader);
+  const Scene& scene = study.scene;
+  readPlate(reader, study);
+  study.sph = readUpdatedLagrangianSph(reader, scene.material.material());
+  study.stepFactor = scene.integrator.timeStep ? 1 : scene.integrator.cfl;
+  study.tipEvery = scene.output.probeEvery;
+  study.clampLayers = reader.integer("study.clamp_layers");
+  study.energyEvery = reader.integer("study.energy_every");
+  study.pngFrames = reader.integer("study.png_frames");
+  study.shearCoefficient = reader.number("study.shear_coefficient");
+  const Real velocityFactor = reader.number("study.velocity_factor");
+  const Real smallFactor = reader.number("study.small_velocity_factor");
+  const Real convergenceEnd = reader.number("study.convergence_end_time");
+  const bool veryWeak = reader.boolean("study.very_weak_sph");
+  study.veryWeakSmoothingLengthRatio = reader.number("study.very_weak_smoothing_length_ratio");
+  study.veryWeakSmoothingRate = reader.number("study.very_weak_smoothing_rate");
+  study.veryWeakCfl = reader.number("study.very_weak_cfl");
+  study.veryWeakGhostLayers = reader.integer("study.very_weak_ghost_layers");
+
+  const Index mainRows = rowsOf(reader, "geometry.spacing", study.thickness / scene.geometry.spacing, study);
+  // The clamp must hold every neighbour of the plate's first column: its support reaches
+  // kappa h = 2 h (cubic spline) beyond x = dp / 2.
+  const Real reach = 2 * study.sph.smoothingLengthRatio;
+  if (static_cast<Real>(study.clampLayers) + 0.5 < reach)
+    reader.fail("study.clamp_layers", std::to_string(study.clampLayers) +
+                                          " columns do not cover the kernel "
+                                          "support (" +
+                                          scene::formatNumber(reach) + " dp) of the plate's first particles");
+
+  std::vector<Index> others;
+  const std::vector<Real> resolutions =
+      reader.has("study.resolutions") ? reader.numbers("study.resolutions") : std::vector<Real>{};
+  for (std::size_t i = 0; i < resolutions.size(); ++i) {
+    const Index rows = rowsOf(reader, "study.resolutions[" + std::to_string(i) + "]", resolutions[i], study);
+    if (rows != mainRows && std::find(others.begin(), others.end(), rows) == others.end()) others.push_back(rows);
+  }
+  std::sort(others.begin(), others.end());
+
+  const Real endTime = scene.integrator.endTime;
+  const bool largeConvergence = reader.boolean("study.convergence_large_amplitude");
+  const bool small = smallFactor > 0 && smallFactor != velocityFactor;
+  const Real linearFactor = small ? smallFactor : velocityFactor;
+  const auto add = [&](PlateMethod method, Index rows, Real vf, Real end, bool frames) {
+    plan.cases.push_back(
+        {caseName(method == PlateMethod::VeryWeak ? "vwsph" : "ulsph", rows, vf), method, rows, vf, end, frames});
+  };
+  // The main case (30 periods, frames), then the short cases: the small amplitude and the very weak
+  // form SPH at the scene's resolution, and the other resolutions.
+  add(PlateMethod::UpdatedLagrangian, mainRows, velocityFactor, endTime, true);
+  if (small) add(PlateMethod::UpdatedLagrangian, mainRows, smallFactor, convergenceEnd, false);
+  if (veryWeak) add(PlateMethod::VeryWeak, mainRows, linearFactor, convergenceEnd, false);
+  for (Index rows : others) {
+    add(PlateMethod::UpdatedLagrangian, rows, linearFactor, convergenceEnd, false);
+    if (small && largeConvergence) add(PlateMethod::UpdatedLagrangian, rows, velocityFactor, convergenceEnd, false);
+  }
+  return plan;
+}
+
+const char* methodName(PlateMethod method) {
+  return method == PlateMethod::VeryWeak ? "very_weak_sph" : "updated_lagrangian_sph";
+}
+
+void writeCases(const std::string& path, const std::vector<PlateCaseResult>& results) {
+  AtomicFile file(path);
+  std::ostream& out = file.stream();
+  out << "case,method,H_over_dp,dp [m],V_f,particles,fixed_particles,h [m],mean_neighbours,neighbour_rebuilds,steps,"
+         "mean_dt [s],end_time [s],setup [s],run [s],wall [s],particle_steps_per_second,period [s],half_periods,"
+         "periods_run,early_period [s],shortest_period [s],longest_period [s],thin_period [s],timoshenko_period "
+         "[s],thin_error,timoshenko_error,tip_start_velocity [m/s],"
+         "first_amplitude [m],expected_amplitude [m],first_amplitude_ratio,last_amplitude [m],energy_drift,"
+         "viscous_fraction,artificial_stress_fraction,largest_zigzag,largest_zigzag_energy,smallest_spacing_ratio\n";
+  out << std::setprecision(8);
+  for (const PlateCaseResult& r : results) {
+    const PlateCaseSettings& s = r.settings;
+    out << s.name << ',' << methodName(s.method) << ',' << s.rows << ',' << r.spacing << ',' << s.velocityFactor << ','
+        << r.particles << ',' << r.fixedParticles << ',' << r.smoothingLength << ',' << r.meanNeighbours << ','
+        << r.neighbourRebuilds << ',' << r.steps << ',' << r.meanStep << ',' << s.endTime << ',' << r.setupSeconds
+        << ',' << r.runSeconds << ',' << r.setupSeconds + r.runSeconds << ',' << r.particleStepsPerSecond() << ','
+        << r.tip.period << ',' << r.tip.halfPeriods << ',' << r.periodsRun() << ','
+        << r.tip.earlyPeriod(PlateCaseResult::earlyPeriods) << ',' << r.tip.shortestPeriod() << ','
+        << r.tip.longestPeriod() << ',' << r.thinPeriod << ',' << r.timoshenkoPeriod << ',' << r.thinError() << ','
+        << r.timoshenkoError() << ',' << r.tipStartVelocity << ',' << r.tip.firstAmplitude() << ','
+        << r.expectedAmplitude << ',' << r.tip.firstAmplitude() / r.expectedAmplitude << ',' << r.tip.lastAmplitude()
+        << ',' << r.energyDrift << ',' << r.viscousFraction << ',' << r.artificialStressFraction << ','
+        << r.largestZigzag << ',' << r.largestZigzagEnergy << ',' << r.smallestSpacingRatio << '\n';
+  }
+  file.commit();
+}
+
+void printTable(std::ostream& out, const std::vector<PlateCaseResult>& results) {
+  const PlateCaseResult& first = results.front();
+  out << std::setprecision(5) << "thin-plate period " << first.thinPeriod << " s, Timoshenko period "
+      << first.timoshenkoPeriod << " s\n";
+  out << "period: mean over the run after the first half period; vs thin / vs Tim.: its error against the references;\n"
+         "early: mean over the first "
+      << PlateCaseResult::earlyPeriods
+      << " periods; amplitude: first peak of the tip, / expect: over"
+         " v_tip(0) T / (2 pi)\n";
+  out << std::left << std::setw(20) << "case" << std::right << std::setw(6) << "H/dp" << std::setw(10) << "particles"
+      << std::setw(8) << "steps" << std::setw(9) << "wall[s]" << std::setw(10) << "period" << std::setw(8) << "periods"
+      << std::setw(9) << "early" << std::setw(9) << "vs thin" << std::setw(9) << "vs Tim." << std::setw(10)
+      << "amplitude" << std::setw(9) << "/ expect" << std::setw(10) << "drift" << std::setw(10) << "zz energy" << '\n';
+  for (const PlateCaseResult& r : results) {
+    out << std::left << std::setw(20) << r.settings.name << std::right << std::setw(6) << r.settings.rows
+        << std::setw(10) << r.particles << std::setw(8) << r.steps << std::setw(9) << std::setprecision(3)
+        << r.setupSeconds + r.runSeconds << std::setw(10) << std::setprecision(5) << r.tip.period << std::setw(8)
+        << std::setprecision(3) << r.periodsRun() << std::setw(9) << std::setprecision(4)
+        << r.tip.earlyPeriod(PlateCaseResult::earlyPeriods) << std::setw(9) << std::setprecision(3)
+        << 100 * r.thinError() << '%' << std::setw(8) << 100 * r.timoshenkoError() << '%' << std::setw(10)
+        << std::setprecision(4) << r.tip.firstAmplitude() << std::setw(9) << std::setprecision(4)
+        << r.tip.firstAmplitude() / r.expectedAmplitude << std::setw(10) << std::setprecision(3) << r.energyDrift
+        << std::setw(10) << r.largestZigzagEnergy << '\n';
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const SceneSchema schema = plateSchema();
+  DriverCommandLine cli(
+      kProgram,
+      "plate: the Gray-Monaghan-Swift oscillating cantilever plate by updated-Lagrangian SPH, against "
+      "the thin-plate and Timoshenko periods",
+      schema.describe());
+  if (const auto exit = cli.parse(argc, argv)) return *exit;
+
+  return runDriver(kProgram, [&]() -> int {
+    SceneReader reader = loadDriverScene(cli.options(), schema);
+    const Plan plan = readPlan(reader);
+    reader.checkAllKeysRead();
+    const std::string folder = prepareOutputFolder(cli.options(), plan.study.scene.output.folder, reader);
+
+    std::vector<PlateCaseResult> results;
+    for (const PlateCaseSettings& settings : plan.cases) {
+      results.push_back(runPlateCase(plan.study, settings, folder, !cli.options().quiet));
+      if (!cli.options().quiet)
+        std::cerr << "  done " << settings.name << " (" << results.back().particles << " particles, "
+                  << results.back().steps << " steps)\n";
+    }
+    writeCases(folder + "/cases.csv", results);
+    printTable(std::cout, results);
+
+    const PlateCaseResult& main = results.front();
+    RunSummary summary;
+    summary.program = kProgram;
+    summary.scene = plan.study.scene.info.name;
+    summary.method = plan.study.scene.method.name;
+    summary.integrator = plan.study.scene.integrator.name;
+    summary.particles = main.particles;
+    summary.meanNeighbours = main.meanNeighbours;
+    summary.timeStep = main.meanStep;
+    summary.simulatedTime = main.settings.endTime;
+    for (const PlateCaseResult& r : results) {
+      summary.steps += r.steps;
+      summary.wallSeconds += r.setupSeconds + r.runSeconds;
+    }
+    summary.figures.push_back({"thin_period [s]", main.thinPeriod});
+    summary.figures.push_back({"timoshenko_period [s]", main.timoshenkoPeriod});
+    for (const PlateCaseResult& r : results) {
+      const std::string& c = r.settings.name;
+      summary.errors.push_back({c + "_period_error_thin", r.thinError()});
+      summary.errors.push_back({c + "_period_error_timoshenko", r.timoshenkoError()});
+      summary.figures.push_back({c + "_period [s]", r.tip.period});
+      summary.figures.push_back({c + "_periods_run", r.periodsRun()});
+      summary.figures.push_back({c + "_early_period [s]", r.tip.earlyPeriod(PlateCaseResult::earlyPeriods)});
+      summary.figures.push_back({c + "_shortest_period [s]", r.tip.shortestPeriod()});
+      summary.figures.push_back({c + "_longest_period [s]", r.tip.longestPeriod()});
+      summary.figures.push_back({c + "_first_amplitude [m]", r.tip.firstAmplitude()});
+      summary.figures.push_back({c + "_first_amplitude_ratio", r.tip.firstAmplitude() / r.expectedAmplitude});
+      summary.figures.push_back({c + "_last_amplitude_ratio", r.tip.lastAmplitude() / r.tip.firstAmplitude()});
+      summary.figures.push_back({c + "_energy_drift", r.energyDrift});
+      if (r.settings.method == PlateMethod::UpdatedLagrangian) {
+        summary.figures.push_back({c + "_viscous_fraction", r.viscousFraction});
+        summary.figures.push_back({c + "_largest_zigzag", r.largestZigzag});
+        summary.figures.push_back({c + "_largest_zigzag_energy", r.largestZigzagEnergy});
+        summary.figures.push_back({c + "_smallest_spacing_ratio", r.smallestSpacingRatio});
+      }
+      summary.figures.push_back({c + "_particle_steps_per_second", r.particleStepsPerSecond()});
+      summary.figures.push_back({c + "_wall [s]", r.setupSeconds + r.runSeconds});
+    }
+    summary.notes.push_back("particles, neighbours and mean dt of the main case (" + main.settings.name +
+                            "); steps and wall time summed over " + std::to_string(results.size()) + " cases");
+    summary.notes.push_back("errors: measured period / reference - 1 (thin plate, Timoshenko with kappa = " +
+                            scene::formatNumber(plan.study.shearCoefficient) + ")");
+    for (const PlateCaseResult& r : results)
+      for (const std::string& note : r.notes)
+        if (std::find(summary.notes.begin(), summary.notes.end(), note) == summary.notes.end())
+          summary.notes.push_back(note);
+    summary.files = {"scene.resolved.toml", "cases.csv"};
+    for (const PlateCaseResult& r : results)
+      for (const std::string& f : r.files) summary.files.push_back(f);
+    summary.finish();
+    summary.files.push_back("summary.json");
+    summary.writeJson(folder + "/summary.json");
+    summary.print(std::cout);
+    return 0;
+  });
+}

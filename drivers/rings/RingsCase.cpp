@@ -1,0 +1,407 @@
+#include "RingsCase.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <memory>
+#include <optional>
+
+#include "EnergyLedger.hpp"
+#include "Fragments.hpp"
+#include "SolidStateAdapter.hpp"
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "io/run/ProgressReporter.hpp"
+#include "io/run/RunSummary.hpp"
+#include "io/vtk/PngFrameRenderer.hpp"
+#include "io/vtk/VtkFrameWriter.hpp"
+#include "kernels/KernelFactory.hpp"
+#include "observers/ProbeRecorder.hpp"
+#include "observers/StabilityMonitor.hpp"
+#include "observers/TimeLoop.hpp"
+#include "observers/TimeSeries.hpp"
+#include "particles/Annulus.hpp"
+
+namespace mfwave::rings {
+namespace {
+
+constexpr int D = 2;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// The two rings (concentric circles of particles, makeAnnulus), the left one (centre (-offset, 0))
+// first, their outer edges `gap` apart.
+ParticleSet<D> makeRings(const StudySettings& study, Index& leftCount) {
+  const Real dp = study.scene.geometry.spacing;
+  const Real offset = study.outerRadius + 0.5 * study.gap;
+  ParticleSet<D> rings = makeAnnulus(Vec2(-offset, 0), study.innerRadius, study.outerRadius, dp);
+  leftCount = rings.physicalCount();
+  appendParticles(rings, makeAnnulus(Vec2(offset, 0), study.innerRadius, study.outerRadius, dp));
+  return rings;
+}
+
+Coordinates<D> positionsOf(const UpdatedLagrangianSphLayout<D>& layout, const Vector& y) {
+  Coordinates<D> x;
+  for (int a = 0; a < D; ++a) x[static_cast<std::size_t>(a)].resize(static_cast<std::size_t>(layout.particles));
+  for (Index i = 0; i < layout.particles; ++i)
+    for (int a = 0; a < D; ++a) x[static_cast<std::size_t>(a)][static_cast<std::size_t>(i)] = y[layout.position(i, a)];
+  return x;
+}
+
+bool allFinite(const Vector& y) { return y.allFinite(); }
+
+// Follows the two rings on the whole state y, every step: the smallest step, each ring's centre
+// of mass (position and x velocity) and the gap between them along x every `every` steps, and
+// every particle with its fragment at the snapshot times.
+class RingTracker : public Observer {
+ public:
+  struct Snapshot {
+    Real time;
+    Coordinates<D> positions;
+    std::vector<Index> fragment;
+  };
+
+  RingTracker(const UpdatedLagrangianSph<D>& system, Index leftCount, long every, std::vector<Real> snapshotTimes,
+              Real linkDistance)
+      : layout_(system.layout()),
+        mass_(system.masses()),
+        left_(leftCount),
+        every_(every),
+        snapshotTimes_(std::move(snapshotTimes)),
+        link_(linkDistance),
+        series_("t [s]", {"x_left [m]", "x_right [m]", "vx_left [m/s]", "vx_right [m/s]", "gap_x [m]", "dt [s]"}) {}
+
+  void begin(const StateView& s) override { take(s, false); }
+  void observe(const StateView& s) override { take(s, false); }
+  void end(const StateView& s) override { take(s, true); }
+
+  const TimeSeries& series() const { return series_; }
+  const std::vector<Snapshot>& snapshots() const { return snapshots_; }
+  Real smallestStep() const { return smallestStep_; }
+  Real smallestGap() const { return smallestGap_; }
+
+ private:
+  void take(const StateView& s, bool last) {
+    const Vector& y = s.displacement;  // a first-order integrator's view: the whole state
+    if (s.step == lastStep_ && !last) return;
+    if (s.step > lastStep_ && lastStep_ >= 0) {
+      lastStepSize_ = (s.time - lastTime_) / static_cast<Real>(s.step - lastStep_);
+      smallestStep_ = std::min(smallestStep_, lastStepSize_);
+    }
+    lastStep_ = s.step;
+    lastTime_ = s.time;
+    if (!allFinite(y)) return;
+    if ((s.step % every_ == 0 || last) && s.step != lastSampled_) sample(s);
+    const Real slack = 1e-9 * (snapshotTimes_.empty() ? 1 : std::max(snapshotTimes_.back(), Real(1e-300)));
+    while (nextSnapshot_ < snapshotTimes_.size() && (last || s.time >= snapshotTimes_[nextSnapshot_] - slack)) {
+      Snapshot snap{s.time, positionsOf(layout_, y), {}};
+      snap.fragment = findFragments(snap.positions, link_).label;
+      snapshots_.push_back(std::move(snap));
+      ++nextSnapshot_;
+      if (last) continue;
+      // one snapshot per state: later times wait for later steps
+      break;
+    }
+  }
+
+  void sample(const StateView& s) {
+    lastSampled_ = s.step;
+    const Vector& y = s.displacement;
+    Real m[2] = {0, 0}, x[2] = {0, 0}, vx[2] = {0, 0};
+    Real leftEdge = -std::numeric_limits<Real>::infinity(), rightEdge = std::numeric_limits<Real>::infinity();
+    for (Index i = 0; i < layout_.particles; ++i) {
+      const int r = i < left_ ? 0 : 1;
+      const Real mi = mass_[static_cast<std::size_t>(i)];
+      const Real xi = y[layout_.position(i, 0)];
+      m[r] += mi;
+      x[r] += mi * xi;
+      vx[r] += mi * y[layout_.velocity(i, 0)];
+      if (r == 0)
+        leftEdge = std::max(leftEdge, xi);
+      else
+        rightEdge = std::min(rightEdge, xi);
+    }
+    const Real gap = rightEdge - leftEdge;
+    smallestGap_ = std::min(smallestGap_, gap);
+    series_.append(s.time, {x[0] / m[0], x[1] / m[1], vx[0] / m[0], vx[1] / m[1], gap, lastStepSize_});
+  }
+
+  const UpdatedLagrangianSphLayout<D>& layout_;
+  const std::vector<Real>& mass_;
+  Index left_;
+  long every_;
+  std::vector<Real> snapshotTimes_;
+  std::size_t nextSnapshot_ = 0;
+  Real link_;
+  TimeSeries series_;
+  std::vector<Snapshot> snapshots_;
+  long lastStep_ = -1, lastSampled_ = -1;
+  Real lastTime_ = 0, lastStepSize_ = 0;
+  Real smallestStep_ = std::numeric_limits<Real>::infinity();
+  Real smallestGap_ = std::numeric_limits<Real>::infinity();
+};
+
+// Shows the adapted view (particles at their current positions) to the PNG renderer with four
+// still, zero-valued markers at the corners of the scene's box, so every picture frames the same
+// window (the renderer fits its view to the particles it is given).
+class WindowedView : public Observer {
+ public:
+  WindowedView(const ParticleSet<D>& moving, const std::vector<Real>& lower, const std::vector<Real>& upper)
+      : moving_(moving), windowed_(moving) {
+    const Real volume = moving.volume.empty() ? 1 : moving.volume.front();
+    for (int corner = 0; corner < 4; ++corner)
+      windowed_.add(Vec2(corner & 1 ? upper[0] : lower[0], corner & 2 ? upper[1] : lower[1]), volume);
+    displacement_ = Vector::Zero(windowed_.size() * D);
+    velocity_ = Vector::Zero(windowed_.size() * D);
+  }
+  void add(Observer& observer) { observers_.push_back(&observer); }
+  const ParticleSet<D>& particles() const { return windowed_; }
+
+  void begin(const StateView& s) override {
+    const StateView view = adapt(s);
+    for (Observer* o : observers_) o->begin(view);
+  }
+  void observe(const StateView& s) override {
+    const StateView view = adapt(s);
+    for (Observer* o : observers_) o->observe(view);
+  }
+  void end(const StateView& s) override {
+    const StateView view = adapt(s);
+    for (Observer* o : observers_) o->end(view);
+  }
+
+ private:
+  StateView adapt(const StateView& s) {
+    const Index n = moving_.size();
+    for (int a = 0; a < D; ++a)
+      std::copy(moving_.coordinate(a).begin(), moving_.coordinate(a).end(), windowed_.coordinate(a).begin());
+    displacement_.head(n * D) = s.displacement;
+    velocity_.head(n * D) = s.velocity;
+    return {s.step, s.time, displacement_, velocity_};
+  }
+
+  const ParticleSet<D>& moving_;
+  ParticleSet<D> windowed_;
+  Vector displacement_, velocity_;
+  std::vector<Observer*> observers_;
+};
+
+void writeSnapshots(const std::string& path, const std::vector<RingTracker::Snapshot>& snapshots, Index leftCount) {
+  AtomicFile file(path);
+  std::ostream& out = file.stream();
+  out << "t [s],particle,ring,fragment,x [m],y [m]\n" << std::setprecision(9);
+  for (const RingTracker::Snapshot& s : snapshots)
+    for (std::size_t i = 0; i < s.fragment.size(); ++i)
+      out << s.time << ',' << i << ',' << (static_cast<Index>(i) < leftCount ? "left" : "right") << ',' << s.fragment[i]
+          << ',' << s.positions[0][i] << ',' << s.positions[1][i] << '\n';
+  file.commit();
+}
+
+PngOptions pngOptions(const StudySettings& study, Real approachSpeed) {
+  const Scene& scene = study.scene;
+  PngOptions png;
+  png.field = scene.output.pngField;
+  png.component = scene.output.pngComponent == "magnitude" ? PngOptions::magnitude
+                  : scene.output.pngComponent == "x"       ? 0
+                                                           : 1;
+  png.width = scene.output.pngWidth;
+  png.height = scene.output.pngHeight;
+  png.pointSize = scene.output.pngPointSize;
+  if (study.autoPointSize) {
+    // 0.9 dp on screen: the renderer fits the window's rectangle into the left 80 % of the
+    // picture (the colour bar takes the rest) with 12 % to spare.
+    const Real halfWidth = 0.5 * (scene.geometry.upper[0] - scene.geometry.lower[0]);
+    const Real halfHeight = 0.5 * (scene.geometry.upper[1] - scene.geometry.lower[1]);
+    const Real aspect = 0.8 * png.width / png.height;
+    const Real pixelsPerMetre = 0.5 * png.height * 0.88 / std::max(halfHeight, halfWidth / aspect);
+    png.pointSize = std::clamp(0.9 * scene.geometry.spacing * pixelsPerMetre, 1.0, 40.0);
+  }
+  // One colour scale for every picture: the rings' initial speed sets it for the velocity.
+  if (png.field == "velocity")
+    png.range = png.component == PngOptions::magnitude ? std::array<Real, 2>{0, 2 * approachSpeed}
+                                                       : std::array<Real, 2>{-1.5 * approachSpeed, 1.5 * approachSpeed};
+  return png;
+}
+
+}  // namespace
+
+CaseResult runCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder, bool progress) {
+  const Scene& scene = study.scene;
+  CaseResult result;
+  result.settings = settings;
+  const auto setupStart = Clock::now();
+
+  // particles: two rings of concentric particle circles, dp apart
+  Index leftCount = 0;
+  const ParticleSet<D> particles = makeRings(study, leftCount);
+  result.particles = particles.physicalCount();
+  result.leftParticles = leftCount;
+  result.spacing = scene.geometry.spacing;
+
+  // the method, with or without the artificial stress
+  UpdatedLagrangianSphOptions options = study.method;
+  options.artificialStress.enabled = settings.artificialStress;
+  UpdatedLagrangianSph<D> system(particles, options);
+  result.smoothingLength = system.smoothingLength();
+  result.supportRadius = makeKernel(options.kernel, D, result.smoothingLength)->supportRadius();
+  const std::vector<std::pair<Index, Index>> links =
+      linkPairs(particles.coordinates(), study.linkDistance * result.spacing);
+  result.links = static_cast<Index>(links.size());
+  const Material& material = options.material;
+  result.soundSpeed = std::sqrt(material.bulkModulus() / material.density());
+  result.approachSpeed = study.approachFraction * result.soundSpeed;
+
+  // the rings approach each other along x, each at approachFraction c0
+  Vector velocity = Vector::Zero(result.particles * D);
+  for (Index i = 0; i < result.particles; ++i)
+    velocity[i * D] = i < leftCount ? result.approachSpeed : -result.approachSpeed;
+  const Vector y0 = system.initialState(velocity);
+  std::unique_ptr<FirstOrderIntegrator> integrator = makeSolidIntegrator(system, y0, study.integration);
+  result.firstStep = integrator->stepSize();
+
+  // observers: ledger and ring motion on the whole state; frames, probes and the stability
+  // monitor on the particle view of the adapter
+  const Real endTime = scene.integrator.endTime;
+  EnergyLedger<D> ledger(system);
+  std::vector<Real> snapshotTimes;
+  for (int k = 0; k < study.snapshots; ++k) snapshotTimes.push_back(endTime * k / std::max(1, study.snapshots - 1));
+  RingTracker tracker(system, leftCount, study.trackEvery, snapshotTimes, study.linkDistance * result.spacing);
+  SolidStateAdapter<D> adapter(system, particles);
+  StabilityMonitorOptions stability = scene.stability.options(D);
+  StabilityMonitor monitor(stability);
+  adapter.add(monitor);
+  const std::vector<Probe> probes = resolveProbes(scene.probes, particles);
+  ProbeRecorder probeRecorder(probes, D);
+  SolidStateAdapter<D> probeAdapter(system, particles);
+  probeAdapter.add(probeRecorder);
+  ProgressReporter reporter(endTime, result.particles, progress);
+
+  SolidStateAdapter<D> frameAdapter(system, particles);
+  std::optional<VtkFrameWriter<D>> frames;
+  std::optional<WindowedView> window;
+  std::optional<PngFrameRenderer<D>> images;
+  const ExtraFields methodFields = frameAdapter.extraFields();
+  const ExtraFields extra = [&](const StateView& s, Index count, std::vector<ParticleField>& fields) {
+    methodFields(s, count, fields);
+    std::vector<Real> ring(static_cast<std::size_t>(count));
+    for (Index i = 0; i < count; ++i) ring[static_cast<std::size_t>(i)] = i < leftCount ? 0 : 1;
+    fields.push_back(ParticleField::scalar("ring", std::move(ring)));
+    const Fragments pieces = findFragments(frameAdapter.particles().coordinates(), study.linkDistance * result.spacing);
+    std::vector<Real> fragment(pieces.label.begin(), pieces.label.end());
+    fields.push_back(ParticleField::scalar("fragment", std::move(fragment)));
+  };
+  if (settings.writeFrames && scene.output.vtk) {
+    frames.emplace(frameAdapter.particles(), folder, settings.name, D, extra);
+    frameAdapter.add(*frames);
+  }
+  if (settings.writeFrames && scene.output.png) {
+    window.emplace(frameAdapter.particles(), scene.geometry.lower, scene.geometry.upper);
+    images.emplace(window->particles(), folder, settings.name, D, pngOptions(study, result.approachSpeed));
+    window->add(*images);
+    frameAdapter.add(*window);
+  }
+
+  TimeLoop loop;
+  loop.add(reporter);
+  loop.add(tracker);
+  loop.add(adapter);
+  loop.add(ledger, study.trackEvery);
+  if (!probes.empty()) loop.add(probeAdapter, scene.output.probeEvery);
+  if (frames || images) loop.add(frameAdapter, scene.output.every);
+  result.setupSeconds = secondsSince(setupStart);
+
+  const auto runStart = Clock::now();
+  try {
+    const RunStatistics stats = loop.run(*integrator, endTime);
+    result.steps = stats.steps;
+    result.endTime = stats.endTime;
+  } catch (const InstabilityError& e) {
+    result.failure = e.what();
+    result.steps = integrator->stepCount();
+    result.endTime = integrator->time();
+  }
+  result.runSeconds = secondsSince(runStart);
+  result.rhsEvaluations = integrator->rhsEvaluations();
+  result.meanNeighbours = system.meanNeighbourCount();
+  result.neighbourRebuilds = system.neighbourRebuilds();
+  result.smallestStep = tracker.smallestStep();
+  result.meanStep = result.steps > 0 ? result.endTime / static_cast<Real>(result.steps) : 0;
+
+  // energy budget and zero-energy-mode indicators
+  const TimeSeries& energy = ledger.series();
+  result.initialEnergy = system.energy(y0);
+  const Vector& y = integrator->solution();
+  const bool finite = allFinite(y);
+  if (finite) result.finalEnergy = system.energy(y);
+  result.largestBalanceDrift = ledger.largestBalanceDrift();
+  const Real scale =
+      std::max(result.initialEnergy.kinetic + result.initialEnergy.strain, std::numeric_limits<Real>::min());
+  result.finalBalanceDrift = (result.finalEnergy.balance() - result.initialEnergy.balance()) / scale;
+  result.largestZigzag = ledger.largestZigzag();
+  result.firstZigzagTime = ledger.firstTimeZigzagAbove(study.zigzagThreshold);
+  if (energy.rows() > 0) {
+    const std::vector<Real> spacing = energy.column(EnergyLedger<D>::MinimumSpacingRatio);
+    result.smallestSpacingRatio = *std::min_element(spacing.begin(), spacing.end());
+    result.finalSpacingRatio = spacing.back();
+  }
+
+  // fragments at the end, and each ring's rebound
+  if (finite) {
+    const Fragments pieces = findFragments(positionsOf(system.layout(), y), study.linkDistance * result.spacing);
+    result.fragments = pieces.count();
+    result.strayParticles = pieces.particlesOutsideLargest(2);
+    result.tornLinks = tornLinks(links, positionsOf(system.layout(), y), 2 * study.linkDistance * result.spacing);
+    for (std::size_t f = 0; f < pieces.sizes.size() && f < 10; ++f) result.fragmentSizes.push_back(pieces.sizes[f]);
+  } else {
+    result.fragments = -1;
+    result.notes.push_back(settings.name + ": the final state is not finite; no fragment count");
+  }
+  const TimeSeries& motion = tracker.series();
+  if (motion.rows() > 0) {
+    const std::vector<Real> vl = motion.column(2), vr = motion.column(3), gap = motion.column(4);
+    result.leftVelocityStart = vl.front();
+    result.rightVelocityStart = vr.front();
+    result.leftVelocityEnd = vl.back();
+    result.rightVelocityEnd = vr.back();
+    result.restitutionLeft = -result.leftVelocityEnd / result.leftVelocityStart;
+    result.restitutionRight = -result.rightVelocityEnd / result.rightVelocityStart;
+    // In contact while the rings are within the kernel's reach of each other; separated once they
+    // are out of it for good.
+    for (std::size_t k = 0; k < gap.size(); ++k) {
+      if (gap[k] < result.supportRadius) {
+        if (result.contactTime < 0) result.contactTime = motion.times()[k];
+        result.separationTime = -1;
+      } else if (result.contactTime >= 0 && result.separationTime < 0) {
+        result.separationTime = motion.times()[k];
+      }
+    }
+    result.smallestGap = tracker.smallestGap();
+  }
+
+  // files
+  energy.writeCsv(folder + "/" + settings.name + "-energy.csv");
+  result.files.push_back(settings.name + "-energy.csv");
+  motion.writeCsv(folder + "/" + settings.name + "-rings.csv");
+  result.files.push_back(settings.name + "-rings.csv");
+  writeSnapshots(folder + "/" + settings.name + "-positions.csv", tracker.snapshots(), leftCount);
+  result.files.push_back(settings.name + "-positions.csv");
+  if (!probes.empty()) {
+    probeRecorder.series().writeCsv(folder + "/" + settings.name + "-probes.csv");
+    result.files.push_back(settings.name + "-probes.csv");
+  }
+  if (frames) result.files.push_back(settings.name + ".pvd (" + std::to_string(frames->framesWritten()) + " frames)");
+  if (images) {
+    if (images->skippedReason().empty())
+      result.files.push_back(settings.name + "_*.png (" + std::to_string(images->framesRendered()) + " images)");
+    else
+      result.notes.push_back("no PNG frames: " + images->skippedReason());
+  }
+  if (!result.failure.empty()) result.notes.push_back(settings.name + " stopped early: " + result.failure);
+  result.peakMemoryMiB = peakMemoryMiB();
+  return result;
+}
+
+}  // namespace mfwave::rings

@@ -1,0 +1,304 @@
+// rings: two colliding rubber rings by the updated-Lagrangian SPH (Gray, Monaghan & Swift 2001;
+// Monaghan 2000, "SPH without a tensile instability"). Two annuli (inner radius 0.03 m, outer
+// 0.04 m; E = 1e7 Pa, nu = 0.3975, rho = 1 kg/m^3, plane strain) approach each other along x, each
+// at 0.059 c0 (c0 = sqrt(K / rho0)). With the Monaghan-Gray artificial stress (epsilon = 0.3,
+// n = 4) they bounce off each other and stay whole; without it the tensile instability clumps the
+// particles and tears the rings apart.
+//
+// There is no exact solution. What the study reports instead, per case:
+//   energy      the ledger (kinetic, strain, internal, viscous dissipation, artificial-stress work)
+//               and the drift of the balance kinetic + internal: the "error" of the run
+//   fragments   connected pieces at the end (particles closer than study.link_distance spacings
+//               joined): 2 means both rings are intact, the other measured "error"
+//   rebound     each ring's centre-of-mass x velocity at the end over its initial one
+//   modes       the smallest pair spacing over dp and the zig-zag indicator, with the first time it
+//               exceeded study.zigzag_threshold
+// Cases (study.cases): artificial_stress (the scene's [method] with the artificial stress on) and
+// no_artificial_stress (the same, off).
+// Writes cases.csv, <case>-energy.csv, <case>-rings.csv, <case>-positions.csv, frames, summary.json.
+// Results: docs/studies/sph-solids.md. Plot: /usr/bin/python3 analysis/plot_rings.py OUT.
+//
+//   rings --scene data/scenes/rings.toml [--set geometry.spacing=0.0005] [--out DIR]
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "RingsCase.hpp"
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "io/run/DriverCommandLine.hpp"
+#include "io/run/RunDriver.hpp"
+#include "io/run/RunSummary.hpp"
+#include "io/run/SceneDriver.hpp"
+#include "io/scene/Format.hpp"
+#include "io/scene/IntegratorSpec.hpp"
+#include "io/scene/LoadScene.hpp"
+#include "io/scene/UpdatedLagrangianSphSpec.hpp"
+
+using namespace mfwave;
+using namespace mfwave::rings;
+
+namespace {
+
+const char* kProgram = "rings";
+const std::vector<std::string> kCaseNames{"artificial_stress", "no_artificial_stress"};
+
+SceneSchema ringsSchema() {
+  using T = ValueType;
+  SceneSchema schema = SceneSchema::common();
+  addUpdatedLagrangianSphKeys(schema);
+  useFirstOrderIntegrators(schema);
+  schema.add("study", T::Table).describedAs("the rings: their size, approach and what is measured");
+  schema.add("study.inner_radius", T::Number).withUnit("m").defaultsTo("0.03").positive()
+      .describedAs("inner radius of each ring");
+  schema.add("study.outer_radius", T::Number).withUnit("m").defaultsTo("0.04").positive()
+      .describedAs("outer radius of each ring (above inner_radius)");
+  schema.add("study.gap", T::Number).withUnit("m").defaultsTo("0.005").positive()
+      .describedAs("distance between the rings' outer edges along x at t = 0 (centres at +-(outer_radius + gap / 2), 0)");
+  schema.add("study.approach_speed", T::Number).withUnit("-").defaultsTo("0.059").positive()
+      .describedAs("speed of each ring towards the other, as a fraction of c0 = sqrt(K / rho0)");
+  schema.add("study.cases", T::StringArray).defaultsTo("[\"artificial_stress\", \"no_artificial_stress\"]")
+      .oneOf(kCaseNames).describedAs("runs: the scene's [method] with the artificial stress on, and off");
+  schema.add("study.link_distance", T::Number).withUnit("-").defaultsTo("1.5").positive()
+      .describedAs("fragments: particles closer than this many geometry.spacing are joined");
+  schema.add("study.zigzag_threshold", T::Number).withUnit("-").defaultsTo("0.1").positive()
+      .describedAs("report the first time the zig-zag indicator exceeds this");
+  schema.add("study.snapshots", T::Integer).withUnit("-").defaultsTo("6").between(2, 100)
+      .describedAs("times (evenly spaced, t = 0 and the end included) at which every particle is written to "
+                   "<case>-positions.csv");
+  return schema;
+}
+
+struct Plan {
+  StudySettings study;
+  std::vector<CaseSettings> cases;
+};
+
+Plan readPlan(SceneReader& reader) {
+  Plan plan;
+  StudySettings& study = plan.study;
+  study.autoPointSize = !reader.has("output.png_point_size");
+  study.scene = readScene(reader);
+  const Scene& scene = study.scene;
+  if (scene.info.dimension != 2) reader.fail("scene.dimension", "the rings are a 2-D (plane strain) study");
+  if (scene.method.name != "updated_lagrangian_sph")
+    reader.fail("method.name", "rings runs the updated_lagrangian_sph method");
+  if (scene.geometry.ghostLayers > 0)
+    reader.fail("geometry.ghost_layers",
+                "the rings are free bodies without ghost particles; the [geometry] box only "
+                "frames the pictures");
+  if (!scene.boundaries.empty()) reader.fail("boundary[0].type", "the rings are free bodies: no boundary conditions");
+  if (!scene.loads.empty()) reader.fail("load[0].type", "the rings are free bodies: no loads");
+  study.method = readUpdatedLagrangianSph(reader, scene.material.material());
+  const IntegratorSpec& integrator = scene.integrator;  // first-order names (useFirstOrderIntegrators)
+  study.integration.integrator = integrator.name;
+  study.integration.arkode = integrator.options.arkode;
+  study.integration.fixedStep = integrator.timeStep.value_or(0);
+  if (!integrator.timeStep) {
+    // integrator.cfl is a factor on the method's own step criteria (CFL and viscous, force)
+    study.method.courant *= integrator.cfl;
+    study.method.forceFactor *= integrator.cfl;
+  }
+  study.innerRadius = reader.number("study.inner_radius");
+  study.outerRadius = reader.number("study.outer_radius");
+  if (!(study.outerRadius > study.innerRadius))
+    reader.fail("study.outer_radius", "must exceed study.inner_radius = " + scene::formatNumber(study.innerRadius));
+  if (study.outerRadius - study.innerRadius < 2 * scene.geometry.spacing)
+    reader.fail("geometry.spacing", "leaves fewer than 2 particles across the ring wall (" +
+                                        scene::formatNumber(study.outerRadius - study.innerRadius) + " m)");
+  study.gap = reader.number("study.gap");
+  // The rings span |x| <= 2 outer_radius + gap / 2, |y| <= outer_radius at t = 0: inside the window.
+  const GeometrySpec& g = scene.geometry;
+  const Real reach[2] = {2 * study.outerRadius + 0.5 * study.gap, study.outerRadius};
+  for (std::size_t a = 0; a < 2; ++a)
+    if (g.lower[a] > -reach[a] || g.upper[a] < reach[a])
+      reader.fail("geometry.upper", "the box " + g.describeBox() +
+                                        " (the window of the pictures) does not hold the "
+                                        "rings at t = 0: they span |x| <= " +
+                                        scene::formatNumber(reach[0]) + ", |y| <= " + scene::formatNumber(reach[1]));
+  study.approachFraction = reader.number("study.approach_speed");
+  study.linkDistance = reader.number("study.link_distance");
+  study.zigzagThreshold = reader.number("study.zigzag_threshold");
+  study.snapshots = static_cast<int>(reader.integer("study.snapshots"));
+  study.trackEvery = scene.output.probeEvery;
+
+  const std::vector<std::string> names = reader.strings("study.cases");
+  if (names.empty()) reader.fail("study.cases", "must name at least one case");
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (std::find(names.begin(), names.begin() + static_cast<long>(i), names[i]) !=
+        names.begin() + static_cast<long>(i))
+      reader.fail("study.cases", "names '" + names[i] + "' twice");
+    plan.cases.push_back({names[i], names[i] == "artificial_stress", true});
+  }
+  return plan;
+}
+
+void writeCases(const std::string& path, const std::vector<CaseResult>& results, Real linkDistance) {
+  AtomicFile file(path);
+  std::ostream& out = file.stream();
+  out << "case,artificial_stress,spacing [m],h [m],particles,left_particles,c0 [m/s],approach_speed [m/s],"
+         "mean_neighbours,neighbour_rebuilds,steps,end_time [s],first_step [s],smallest_step [s],mean_step [s],"
+         "rhs_evaluations,setup [s],run [s],particle_steps_per_second,peak_memory [MiB],"
+         "kinetic_start [J],kinetic_end [J],strain_end [J],internal_end [J],viscous_dissipation_end [J],"
+         "artificial_stress_work_end [J],load_work_end [J],largest_balance_drift,final_balance_drift,"
+         "largest_zigzag,first_zigzag_time [s],smallest_spacing_ratio,final_spacing_ratio,fragments,stray_particles,"
+         "largest_fragments,links,torn_links,vx_left_start [m/s],vx_right_start [m/s],vx_left_end [m/s],vx_right_end "
+         "[m/s],"
+         "restitution_left,restitution_right,support_radius [m],contact_time [s],separation_time [s],smallest_gap [m],"
+         "link_distance [dp],failure\n"
+      << std::setprecision(8);
+  for (const CaseResult& r : results) {
+    std::string sizes;
+    for (std::size_t k = 0; k < r.fragmentSizes.size(); ++k)
+      sizes += (k ? " " : "") + std::to_string(r.fragmentSizes[k]);
+    std::string failure = r.failure;
+    std::replace(failure.begin(), failure.end(), ',', ';');
+    std::replace(failure.begin(), failure.end(), '\n', ' ');
+    const UpdatedLagrangianSphEnergy& e = r.finalEnergy;
+    out << r.settings.name << ',' << (r.settings.artificialStress ? "true" : "false") << ',' << r.spacing << ','
+        << r.smoothingLength << ',' << r.particles << ',' << r.leftParticles << ',' << r.soundSpeed << ','
+        << r.approachSpeed << ',' << r.meanNeighbours << ',' << r.neighbourRebuilds << ',' << r.steps << ','
+        << r.endTime << ',' << r.firstStep << ',' << r.smallestStep << ',' << r.meanStep << ',' << r.rhsEvaluations
+        << ',' << r.setupSeconds << ',' << r.runSeconds << ',' << r.particleStepsPerSecond() << ',' << r.peakMemoryMiB
+        << ',' << r.initialEnergy.kinetic << ',' << e.kinetic << ',' << e.strain << ',' << e.internal << ','
+        << e.viscousDissipation << ',' << e.artificialStressWork << ',' << e.loadWork << ',' << r.largestBalanceDrift
+        << ',' << r.finalBalanceDrift << ',' << r.largestZigzag << ',' << r.firstZigzagTime << ','
+        << r.smallestSpacingRatio << ',' << r.finalSpacingRatio << ',' << r.fragments << ',' << r.strayParticles << ','
+        << sizes << ',' << r.links << ',' << r.tornLinks << ',' << r.leftVelocityStart << ',' << r.rightVelocityStart
+        << ',' << r.leftVelocityEnd << ',' << r.rightVelocityEnd << ',' << r.restitutionLeft << ','
+        << r.restitutionRight << ',' << r.supportRadius << ',' << r.contactTime << ',' << r.separationTime << ','
+        << r.smallestGap << ',' << linkDistance << ',' << failure << '\n';
+  }
+  file.commit();
+}
+
+void printTables(std::ostream& out, const std::vector<CaseResult>& results, Real zigzagThreshold) {
+  out << std::left << std::setw(22) << "case" << std::right << std::setw(10) << "particles" << std::setw(8) << "steps"
+      << std::setw(9) << "wall[s]" << std::setw(11) << "p-steps/s" << std::setw(11) << "fragments" << std::setw(7)
+      << "stray" << std::setw(7) << "torn" << std::setw(16) << "rebound L/R" << std::setw(12) << "min dx/dp"
+      << std::setw(11) << "max zigzag" << std::setw(14) << "t(zigzag>" + scene::formatNumber(zigzagThreshold) + ")"
+      << '\n';
+  for (const CaseResult& r : results) {
+    std::ostringstream rebound, zigzagTime;
+    rebound << std::setprecision(3) << r.restitutionLeft << '/' << r.restitutionRight;
+    if (r.firstZigzagTime >= 0)
+      zigzagTime << std::setprecision(3) << r.firstZigzagTime;
+    else
+      zigzagTime << "never";
+    out << std::left << std::setw(22) << r.settings.name << std::right << std::setw(10) << r.particles << std::setw(8)
+        << r.steps << std::setw(9) << std::setprecision(3) << r.setupSeconds + r.runSeconds << std::setw(11)
+        << std::setprecision(3) << r.particleStepsPerSecond() << std::setw(11) << r.fragments << std::setw(7)
+        << r.strayParticles << std::setw(7) << r.tornLinks << std::setw(16) << rebound.str() << std::setw(12)
+        << std::setprecision(3) << r.smallestSpacingRatio << std::setw(11) << r.largestZigzag << std::setw(14)
+        << zigzagTime.str() << '\n';
+  }
+  out << "\nenergy at the end [J] (kinetic at t = 0, then at the end; drift of kinetic + internal over kinetic + "
+         "strain at t = 0)\n";
+  out << std::left << std::setw(22) << "case" << std::right << std::setw(11) << "kinetic0" << std::setw(11) << "kinetic"
+      << std::setw(11) << "strain" << std::setw(11) << "internal" << std::setw(11) << "viscous" << std::setw(11)
+      << "art.stress" << std::setw(12) << "max drift" << std::setw(12) << "end drift" << '\n';
+  for (const CaseResult& r : results) {
+    const UpdatedLagrangianSphEnergy& e = r.finalEnergy;
+    out << std::left << std::setw(22) << r.settings.name << std::right << std::setprecision(4) << std::setw(11)
+        << r.initialEnergy.kinetic << std::setw(11) << e.kinetic << std::setw(11) << e.strain << std::setw(11)
+        << e.internal << std::setw(11) << e.viscousDissipation << std::setw(11) << e.artificialStressWork
+        << std::setw(12) << std::setprecision(3) << r.largestBalanceDrift << std::setw(12) << r.finalBalanceDrift
+        << '\n';
+  }
+  out << '\n';
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const SceneSchema schema = ringsSchema();
+  DriverCommandLine cli(
+      kProgram, "rings: two colliding rubber rings by updated-Lagrangian SPH, with and without the artificial stress",
+      schema.describe());
+  if (const auto exit = cli.parse(argc, argv)) return *exit;
+
+  return runDriver(kProgram, [&]() -> int {
+    SceneReader reader = loadDriverScene(cli.options(), schema);
+    const Plan plan = readPlan(reader);
+    reader.checkAllKeysRead();
+    const std::string folder = prepareOutputFolder(cli.options(), plan.study.scene.output.folder, reader);
+
+    std::vector<CaseResult> results;
+    for (const CaseSettings& settings : plan.cases) {
+      results.push_back(runCase(plan.study, settings, folder, !cli.options().quiet));
+      if (!cli.options().quiet)
+        std::cerr << "  done " << settings.name << " (" << results.back().particles << " particles, "
+                  << results.back().steps << " steps)\n";
+    }
+    writeCases(folder + "/cases.csv", results, plan.study.linkDistance);
+    printTables(std::cout, results, plan.study.zigzagThreshold);
+
+    const Scene& scene = plan.study.scene;
+    const CaseResult& first = results.front();
+    RunSummary summary;
+    summary.program = kProgram;
+    summary.scene = scene.info.name;
+    summary.method = scene.method.name;
+    summary.integrator = plan.study.integration.integrator;
+    summary.particles = first.particles;
+    summary.meanNeighbours = first.meanNeighbours;
+    summary.timeStep = first.meanStep;
+    summary.simulatedTime = scene.integrator.endTime;
+    for (const CaseResult& r : results) {
+      summary.steps += r.steps;
+      summary.wallSeconds += r.setupSeconds + r.runSeconds;
+    }
+    // No exact solution: the errors are the energy balance and the fragments beyond the two rings.
+    for (const CaseResult& r : results) {
+      summary.errors.push_back({r.settings.name + "_largest_balance_drift", r.largestBalanceDrift});
+      summary.errors.push_back({r.settings.name + "_extra_fragments", static_cast<Real>(r.fragments - 2)});
+    }
+    for (const CaseResult& r : results) {
+      const std::string c = r.settings.name + "_";
+      const UpdatedLagrangianSphEnergy& e = r.finalEnergy;
+      summary.figures.push_back({c + "fragments", static_cast<Real>(r.fragments)});
+      summary.figures.push_back({c + "stray_particles", static_cast<Real>(r.strayParticles)});
+      summary.figures.push_back({c + "torn_links", static_cast<Real>(r.tornLinks)});
+      summary.figures.push_back({c + "restitution_left", r.restitutionLeft});
+      summary.figures.push_back({c + "restitution_right", r.restitutionRight});
+      summary.figures.push_back({c + "vx_left_end [m/s]", r.leftVelocityEnd});
+      summary.figures.push_back({c + "vx_right_end [m/s]", r.rightVelocityEnd});
+      summary.figures.push_back({c + "contact_time [s]", r.contactTime});
+      summary.figures.push_back({c + "separation_time [s]", r.separationTime});
+      summary.figures.push_back({c + "smallest_spacing_ratio", r.smallestSpacingRatio});
+      summary.figures.push_back({c + "largest_zigzag", r.largestZigzag});
+      summary.figures.push_back({c + "first_zigzag_time [s]", r.firstZigzagTime});
+      summary.figures.push_back({c + "kinetic_start [J]", r.initialEnergy.kinetic});
+      summary.figures.push_back({c + "kinetic_end [J]", e.kinetic});
+      summary.figures.push_back({c + "strain_end [J]", e.strain});
+      summary.figures.push_back({c + "internal_end [J]", e.internal});
+      summary.figures.push_back({c + "viscous_dissipation_end [J]", e.viscousDissipation});
+      summary.figures.push_back({c + "artificial_stress_work_end [J]", e.artificialStressWork});
+      summary.figures.push_back({c + "final_balance_drift", r.finalBalanceDrift});
+      summary.figures.push_back({c + "steps", static_cast<Real>(r.steps)});
+      summary.figures.push_back({c + "wall [s]", r.setupSeconds + r.runSeconds});
+      summary.figures.push_back({c + "particle_steps_per_second", r.particleStepsPerSecond()});
+    }
+    summary.notes.push_back(
+        "no exact solution: the errors are the largest drift of the energy balance (kinetic + "
+        "internal, over the initial kinetic + strain energy) and the fragments beyond the two "
+        "rings at the end (0 = both intact)");
+    summary.notes.push_back("particles, neighbours and mean dt of the first case (" + first.settings.name +
+                            "); steps and wall time summed over " + std::to_string(results.size()) + " cases");
+    for (const CaseResult& r : results)
+      for (const std::string& note : r.notes)
+        if (std::find(summary.notes.begin(), summary.notes.end(), note) == summary.notes.end())
+          summary.notes.push_back(note);
+    summary.files = {"scene.resolved.toml", "cases.csv"};
+    for (const CaseResult& r : results)
+      for (const std::string& f : r.files) summary.files.push_back(f);
+    summary.finish();
+    summary.files.push_back("summary.json");
+    summary.writeJson(folder + "/summary.json");
+    summary.print(std::cout);
+    return 0;
+  });
+}
