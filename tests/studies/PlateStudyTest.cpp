@@ -3,47 +3,28 @@
 // the scene's artificial terms, the small-amplitude case and the very weak form SPH beside it. Its
 // outputs exist, and the period, the amplitude and the energy balance are what
 // docs/studies/sph-solids.md reports, so a change to the method shows up here.
+#include "support/StudyRun.hpp"
+
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-#include <sys/wait.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 
 namespace fs = std::filesystem;
+using mfwave::testing::runStudy;
+using mfwave::testing::StudyOutcome;
 
 namespace {
 
-struct Outcome {
-  bool exited;
-  int exitCode;
-  std::string log;
-};
-
-Outcome runPlate(const std::string& arguments, const std::string& name) {
-  const fs::path log = fs::temp_directory_path() / ("mfwave-plate-" + name + ".log");
-  const std::string command = std::string(PLATE_EXECUTABLE) + " --quiet --scene " + SCENES_FOLDER + "/plate.toml " +
-                              arguments + " > " + log.string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  return {WIFEXITED(status) != 0, WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+StudyOutcome runPlate(const std::string& arguments, const std::string& name) {
+  return runStudy(PLATE_EXECUTABLE, std::string(SCENES_FOLDER) + "/plate.toml", arguments, "plate-" + name);
 }
 
 // errors and figures of summary.json in one map (null, i.e. NaN, entries are left out).
 std::map<std::string, double> numbers(const fs::path& summaryPath) {
-  const nlohmann::json summary = nlohmann::json::parse(std::ifstream(summaryPath));
-  std::map<std::string, double> found;
-  for (const char* section : {"errors", "figures"})
-    for (const auto& [key, value] : summary[section].items())
-      if (value.is_number()) found[key] = value.get<double>();
-  return found;
+  return mfwave::testing::summaryNumbers(summaryPath);
 }
 
 }  // namespace
@@ -51,7 +32,7 @@ std::map<std::string, double> numbers(const fs::path& summaryPath) {
 TEST(PlateStudy, CoarsePlateKeepsItsPeriodAmplitudeAndEnergyOverThirtyPeriods) {
   const fs::path out = fs::temp_directory_path() / "mfwave-plate-coarse";
   fs::remove_all(out);
-  const Outcome run = runPlate(
+  const StudyOutcome run = runPlate(
       "--set geometry.spacing=0.006666666666666667 --set 'study.resolutions=[3]' "
       "--set output.png=false --set output.every=40000 --out " +
           out.string(),
@@ -102,7 +83,7 @@ TEST(PlateStudy, CoarsePlateKeepsItsPeriodAmplitudeAndEnergyOverThirtyPeriods) {
 TEST(PlateStudy, BadInputNamesItsKeyAndWritesNothing) {
   const fs::path out = fs::temp_directory_path() / "mfwave-plate-bad";
   fs::remove_all(out);
-  Outcome run = runPlate("--set 'study.resolutions=[4.5]' --out " + out.string(), "bad-resolution");
+  StudyOutcome run = runPlate("--set 'study.resolutions=[4.5]' --out " + out.string(), "bad-resolution");
   EXPECT_TRUE(run.exited);
   EXPECT_EQ(run.exitCode, 2) << run.log;
   EXPECT_NE(run.log.find("study.resolutions[0]"), std::string::npos) << run.log;

@@ -35,11 +35,17 @@ inline StudyOutcome runStudy(const std::string& executable, const std::string& s
   return {WIFEXITED(status) != 0, WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
 }
 
-// The named numbers of one section ("errors" or "figures") of a summary.json.
-inline std::map<std::string, double> summaryNumbers(const std::filesystem::path& summaryPath, const char* section) {
+// The named numbers of one section ("errors" or "figures") of a summary.json, or of both when
+// `section` is null. Entries that are not numbers (null for NaN) are left out.
+inline std::map<std::string, double> summaryNumbers(const std::filesystem::path& summaryPath,
+                                                    const char* section = nullptr) {
   const nlohmann::json summary = nlohmann::json::parse(std::ifstream(summaryPath));
   std::map<std::string, double> found;
-  for (const auto& [key, value] : summary[section].items()) found[key] = value.get<double>();
+  for (const char* name : {"errors", "figures"}) {
+    if (section != nullptr && std::string(section) != name) continue;
+    for (const auto& [key, value] : summary[name].items())
+      if (value.is_number()) found[key] = value.get<double>();
+  }
   return found;
 }
 
