@@ -66,15 +66,8 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
   result.tipStartVelocity /= static_cast<Real>(lattice.tip.size());
 
   // the integrator, with the method's step criteria (times integrator.cfl) before every step
-  SolidIntegrationSettings integration;
-  integration.integrator = scene.integrator.name;
-  integration.arkode = scene.integrator.options.arkode;
-  integration.fixedStep = scene.integrator.timeStep.value_or(0);
-  std::unique_ptr<FirstOrderIntegrator> integrator = makeSolidIntegrator(system, y0, integration);
-  if (!scene.integrator.timeStep && study.stepFactor != 1) {
-    const Real factor = study.stepFactor;
-    integrator->setStepSizeFunction([&system, factor](Real, const Vector& y) { return factor * system.stableStep(y); });
-  }
+  std::unique_ptr<FirstOrderIntegrator> integrator =
+      makeSolidIntegrator(system, y0, solidIntegrationSettings(scene.integrator));
   const Real firstStep = study.stepFactor * system.stableStep(y0);
 
   // observers: tip, energy ledger, frames through the particle view

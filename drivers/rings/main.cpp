@@ -94,14 +94,8 @@ Plan readPlan(SceneReader& reader) {
   if (!scene.loads.empty()) reader.fail("load[0].type", "the rings are free bodies: no loads");
   study.method = readUpdatedLagrangianSph(reader, scene.material.material());
   const IntegratorSpec& integrator = scene.integrator;  // first-order names (useFirstOrderIntegrators)
-  study.integration.integrator = integrator.name;
-  study.integration.arkode = integrator.options.arkode;
-  study.integration.fixedStep = integrator.timeStep.value_or(0);
-  if (!integrator.timeStep) {
-    // integrator.cfl is a factor on the method's own step criteria (CFL and viscous, force)
-    study.method.courant *= integrator.cfl;
-    study.method.forceFactor *= integrator.cfl;
-  }
+  // integrator.cfl is a factor on the method's own step criteria (CFL and viscous, force)
+  study.integration = solidIntegrationSettings(integrator);
   study.innerRadius = reader.number("study.inner_radius");
   study.outerRadius = reader.number("study.outer_radius");
   if (!(study.outerRadius > study.innerRadius))
