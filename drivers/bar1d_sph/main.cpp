@@ -39,7 +39,7 @@ SceneSchema barSchema() {
   addUpdatedLagrangianSphKeys(schema);
   useFirstOrderIntegrators(schema);
   schema.add("study", T::Table).describedAs("the convergence study of bar1d-sph");
-  schema.add("study.impact_speed", T::Number).withUnit("m/s").defaultsTo("0.01").positive()
+  schema.add("study.impact_speed", T::Number).withUnit("m/s").defaultsTo("0.001").positive()
       .describedAs("v0: the bar on x < 0 moves with +v0, the bar on x > 0 with -v0");
   schema.add("study.spacings", T::NumberArray).withUnit("m").defaultsToNote("[geometry.spacing]")
       .describedAs("particle spacings of the convergence cases (h scales with them)");
