@@ -20,6 +20,8 @@
 
 #include "PlateCase.hpp"
 
+#include "analysis/RichardsonExtrapolation.hpp"
+
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "io/run/DriverCommandLine.hpp"
@@ -35,6 +37,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 using namespace mfwave;
@@ -121,7 +124,37 @@ SceneSchema plateSchema() {
 struct Plan {
   PlateStudy study;
   std::vector<PlateCaseSettings> cases;
+  Real linearVelocityFactor = 0;  // V_f of the convergence series over resolutions
 };
+
+// The updated-Lagrangian SPH periods of the convergence series (one V_f, several H / dp) and their
+// Richardson extrapolation: the order observed through the three finest resolutions (second order
+// assumed when there are only two, or when the three are not monotone) and the limit from the two
+// finest.
+struct PeriodConvergence {
+  std::size_t resolutions = 0;
+  std::optional<Real> observedOrder;
+  Real orderUsed = 2;
+  Real limit = 0;
+};
+
+std::optional<PeriodConvergence> periodConvergence(const std::vector<PlateCaseResult>& results, Real velocityFactor) {
+  std::vector<ConvergenceSample> samples;
+  for (const PlateCaseResult& r : results)
+    if (r.settings.method == PlateMethod::UpdatedLagrangian && r.settings.velocityFactor == velocityFactor &&
+        std::isfinite(r.tip.period) && r.tip.period > 0)
+      samples.push_back({1 / static_cast<Real>(r.settings.rows), r.tip.period});
+  std::sort(samples.begin(), samples.end(),
+            [](const ConvergenceSample& a, const ConvergenceSample& b) { return a.spacing > b.spacing; });
+  if (samples.size() < 2) return std::nullopt;
+  PeriodConvergence c;
+  c.resolutions = samples.size();
+  const std::size_t n = samples.size();
+  if (n >= 3) c.observedOrder = observedOrder(samples[n - 3], samples[n - 2], samples[n - 1]);
+  c.orderUsed = c.observedOrder.value_or(2);
+  c.limit = richardsonLimit(samples[n - 2], samples[n - 1], c.orderUsed);
+  return c;
+}
 
 std::string caseName(const char* method, Index rows, Real velocityFactor) {
   std::ostringstream s;
@@ -226,6 +259,7 @@ Plan readPlan(SceneReader& reader) {
   const bool largeConvergence = reader.boolean("study.convergence_large_amplitude");
   const bool small = smallFactor > 0 && smallFactor != velocityFactor;
   const Real linearFactor = small ? smallFactor : velocityFactor;
+  plan.linearVelocityFactor = linearFactor;
   const auto add = [&](PlateMethod method, Index rows, Real vf, Real end, bool frames) {
     plan.cases.push_back(
         {caseName(method == PlateMethod::VeryWeak ? "vwsph" : "ulsph", rows, vf), method, rows, vf, end, frames});
@@ -363,6 +397,24 @@ int main(int argc, char** argv) {
       }
       summary.figures.push_back({c + "_particle_steps_per_second", r.particleStepsPerSecond()});
       summary.figures.push_back({c + "_wall [s]", r.setupSeconds + r.runSeconds});
+    }
+    if (const std::optional<PeriodConvergence> c = periodConvergence(results, plan.linearVelocityFactor)) {
+      const Real error = c->limit / main.timoshenkoPeriod - 1;
+      std::cout << std::setprecision(3) << "convergence of the V_f = " << plan.linearVelocityFactor << " period over "
+                << c->resolutions << " resolutions: observed order ";
+      if (c->observedOrder)
+        std::cout << *c->observedOrder;
+      else
+        std::cout << (c->resolutions < 3 ? "(needs 3)" : "(not monotone)");
+      std::cout << ", extrapolated (order " << c->orderUsed << ") " << std::setprecision(5) << c->limit << " s, "
+                << std::setprecision(3) << 100 * error << "% from Timoshenko\n";
+      summary.errors.push_back({"ulsph_extrapolated_period_error_timoshenko", error});
+      summary.figures.push_back({"ulsph_extrapolated_period [s]", c->limit});
+      if (c->observedOrder) summary.figures.push_back({"ulsph_period_order", *c->observedOrder});
+      summary.notes.push_back("extrapolated period: Richardson over H / dp of the V_f = " +
+                              scene::formatNumber(plan.linearVelocityFactor) + " series, order " +
+                              (c->observedOrder ? "observed through the three finest" : "2 assumed") +
+                              ", limit from the two finest");
     }
     summary.notes.push_back("particles, neighbours and mean dt of the main case (" + main.settings.name +
                             "); steps and wall time summed over " + std::to_string(results.size()) + " cases");

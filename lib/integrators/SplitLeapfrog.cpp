@@ -26,6 +26,8 @@ void SplitLeapfrog::start() {
   configurationRate_.resize(nq_);
   pHalf_.resize(np);
   momentumRate_.resize(np);
+  qStart_.resize(nq_);
+  haveConfigurationRate_ = false;  // the first drift evaluates Q at q_0
   split_->momentumRate(time_, y_, momentumRate_);  // P_0
   evaluations_ += 0.5;
 }
@@ -37,8 +39,11 @@ void SplitLeapfrog::advance(Real dt) {
   auto p = y_.tail(np);
   pHalf_ = p + half * momentumRate_;  // kick
   p = pHalf_;
-  split_->configurationRate(time_ + half, y_, configurationRate_);  // at [q_n; p_{n+1/2}]
-  q += dt * configurationRate_;                                      // drift
+  qStart_ = q;
+  if (haveConfigurationRate_) q += half * configurationRate_;       // q* = q_n + dt/2 Q_{n-1/2}
+  split_->configurationRate(time_ + half, y_, configurationRate_);  // at [q*; p_{n+1/2}]
+  q = qStart_ + dt * configurationRate_;                             // drift
+  haveConfigurationRate_ = true;
   p = pHalf_ + half * momentumRate_;                                 // predictor p*
   split_->momentumRate(time_ + dt, y_, momentumRate_);               // P_{n+1} at [q_{n+1}; p*]
   p = pHalf_ + half * momentumRate_;                                 // kick

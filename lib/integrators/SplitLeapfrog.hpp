@@ -3,7 +3,10 @@
 // (SplitFirstOrderSystem: q' = Q(t, y), p' = P(t, y)), the staggered scheme SPH codes use for
 // solids:
 //   p_{n+1/2} = p_n + dt/2 P_n                       (kick; P_n kept from the previous step)
-//   q_{n+1}   = q_n + dt Q(t_n + dt/2, [q_n; p_{n+1/2}])   (drift)
+//   q*        = q_n + dt/2 Q_{n-1/2}                 (the midpoint configuration, extrapolated
+//                                                     with the previous drift's rate; q_0 at the
+//                                                     first step)
+//   q_{n+1}   = q_n + dt Q_{n+1/2},  Q_{n+1/2} = Q(t_n + dt/2, [q*; p_{n+1/2}])   (drift)
 //   p*        = p_{n+1/2} + dt/2 P_n                 (predictor, for a P that depends on p)
 //   P_{n+1}   = P(t_{n+1}, [q_{n+1}; p*])
 //   p_{n+1}   = p_{n+1/2} + dt/2 P_{n+1}             (kick)
@@ -18,10 +21,12 @@
 //    each step uses its own dt on both half kicks, and P_n is the rate at t_n whatever dt the
 //    previous step had, so a step is a one-step map of (y_n, P_n) and the scheme stays second
 //    order (the variable-step map is no longer symplectic);
-//  - a Q that depends on q (the density rate -rho div v, the Jaumann terms of a stress rate) is
-//    drifted with q_n only, a forward-Euler error dt^2/2 (dQ/dq) Q per step: first order in that
-//    coupling. For small-amplitude elastic waves dQ/dq vanishes at the linearisation (it is
-//    proportional to the velocity gradient), so the error is second order in the amplitude.
+//  - a Q that depends on q (the density rate -rho div v, the Jaumann terms of a stress rate, the
+//    positions of moving particles) is evaluated at the midpoint q*, which is O(dt^2) from
+//    q(t_n + dt/2): the drift is then a midpoint rule and the scheme stays second order. (Drifting
+//    with Q at q_n, as the textbook scheme for Q = Q(p) does, would be a forward-Euler error
+//    dt^2/2 (dQ/dq) Q per step: first order.) When Q does not depend on q, q* changes nothing and
+//    the scheme is exactly the Stormer-Verlet method above. The cost is a copy of q per step.
 
 #include "integrators/ExplicitFirstOrderIntegrator.hpp"
 #include "systems/SplitFirstOrderSystem.hpp"
@@ -48,6 +53,8 @@ class SplitLeapfrog : public ExplicitFirstOrderIntegrator {
   Vector momentumRate_;      // P_n
   Vector configurationRate_; // Q (work)
   Vector pHalf_;             // p_{n+1/2} (work)
+  Vector qStart_;            // q_n (work)
+  bool haveConfigurationRate_ = false;  // configurationRate_ holds Q_{n-1/2}
 };
 
 }  // namespace mfwave

@@ -31,6 +31,8 @@ void addUpdatedLagrangianSphKeys(SceneSchema& schema) {
       .describedAs("n in f_ij^n, f_ij = W(r_ij) / W(dp)");
   schema.add("method.artificial_stress_spacing", T::Number).withUnit("m").defaultsTo("0.0").nonNegative().when(when)
       .describedAs("dp in f_ij = W(r_ij) / W(dp); 0: the initial particle spacing (volume^(1/D))");
+  schema.add("method.kernel_gradient_correction", T::Boolean).defaultsTo("false").when(when)
+      .describedAs("correct grad W so linear velocity fields give exact strain rates (also at free surfaces)");
   schema.add("method.xsph", T::Number).withUnit("-").defaultsTo("0.0").between(0, 1).when(when)
       .describedAs("XSPH epsilon: dx/dt = v + epsilon sum_j m_j / rhobar_ij (v_j - v_i) W_ij; 0 is off");
   schema.add("method.neighbour_skin", T::Number).withUnit("-").defaultsTo("0.2").nonNegative().when(when)
@@ -59,6 +61,7 @@ UpdatedLagrangianSphOptions readUpdatedLagrangianSph(SceneReader& reader, const 
   o.artificialStress.epsilon = method.number("artificial_stress_epsilon");
   o.artificialStress.exponent = method.number("artificial_stress_exponent");
   o.artificialStress.referenceSpacing = method.number("artificial_stress_spacing");
+  o.kernelGradientCorrection = method.boolean("kernel_gradient_correction");
   o.xsph = method.number("xsph");
   o.neighbourSkin = method.number("neighbour_skin");
   o.courant = method.number("courant");

@@ -18,6 +18,7 @@ void forceRates(const ParticleView<D>& view, const ForceInputs<D>& inputs, const
   const bool artificialStress = inputs.artificialStress != nullptr;
   const Mat<D>* A = inputs.stressOverRho2;
   const Real* P = inputs.pressureOverRho2;
+  const bool corrected = view.correction != nullptr;
   // Gather form: row i only writes particle i's outputs, so the result does not depend on threads.
 #pragma omp parallel for if (n > kParallelParticles) schedule(static)
   for (Index i = 0; i < n; ++i) {
@@ -45,7 +46,10 @@ void forceRates(const ParticleView<D>& view, const ForceInputs<D>& inputs, const
           largestMu = std::max(largestMu, std::abs(mu));
         }
       }
-      Vec<D> force = (A[i] + A[j]) * gradW - pi * gradW;  // Li eq. (30)
+      // Li eq. (30); corrected: A_i C_i grad W + A_j C_j grad W (ForcePass.hpp).
+      Vec<D> force = corrected ? Vec<D>(A[i] * view.correction[i] * gradW + A[j] * view.correction[j] * gradW)
+                               : Vec<D>((A[i] + A[j]) * gradW);
+      force -= pi * gradW;
       if (artificialStress) {
         const Real weight = artificialStressWeight(kernel.value(r), inputs.inverseReferenceKernel,
                                                    inputs.artificialStressExponent);
@@ -55,16 +59,21 @@ void forceRates(const ParticleView<D>& view, const ForceInputs<D>& inputs, const
       }
       acceleration += mj * force;
       const Real vDotGrad = vij.dot(gradW);
-      velocityMoment.noalias() += mj * vij * gradW.transpose();
+      velocityMoment.noalias() += mj * vij * view.correctedGradient(i, gradW).transpose();
       pressureWork += mj * (P[i] + P[j] + pi) * vDotGrad;
       viscousWork += mj * pi * vDotGrad;
     }
     for (int a = 0; a < D; ++a) outputs.acceleration[i * D + a] = acceleration[a];
-    // s_i / rho_i^2 = A_i + P_i I.
-    Mat<D> deviatorOverRho2 = A[i];
-    deviatorOverRho2.diagonal().array() += P[i];
-    outputs.energyRate[i] =
-        -(deviatorOverRho2.cwiseProduct(velocityMoment)).sum() + 0.5 * pressureWork - 0.5 * artificialWork;  // eq. (29)
+    if (corrected) {
+      outputs.energyRate[i] =
+          -(A[i].cwiseProduct(velocityMoment)).sum() + 0.5 * viscousWork - 0.5 * artificialWork;
+    } else {
+      // s_i / rho_i^2 = A_i + P_i I.
+      Mat<D> deviatorOverRho2 = A[i];
+      deviatorOverRho2.diagonal().array() += P[i];
+      outputs.energyRate[i] =
+          -(deviatorOverRho2.cwiseProduct(velocityMoment)).sum() + 0.5 * pressureWork - 0.5 * artificialWork;  // eq. (29)
+    }
     outputs.viscousPower[i] = 0.5 * view.m[i] * viscousWork;
     outputs.artificialStressPower[i] = 0.5 * view.m[i] * artificialWork;
     outputs.largestMu[i] = largestMu;

@@ -14,6 +14,13 @@
 // halves of the pair powers:
 //   viscous   1/2 m_i sum_j m_j Pi_ij v_ij . grad_i W_ij                (>= 0: Pi_ij > 0 only when approaching)
 //   R work    1/2 m_i sum_j m_j v_ij . f_ij^n (R_i + R_j) grad_i W_ij  (the power of R on the motion)
+// With the kernel-gradient correction C_i (KernelGradientCorrection.hpp) the stress term becomes
+// A_i C_i grad_i W_ij + A_j C_j grad_i W_ij, and the energy equation uses the same corrected
+// velocity gradient as the stress rate:
+//   de_i/dt = -A_i : sum_j m_j v_ij (C_i grad_i W_ij)^T + 1/2 sum_j m_j Pi_ij v_ij . grad_i W_ij - (R work)
+// The pair terms stay antisymmetric (momentum is conserved) and balance the kinetic energy pair by
+// pair; angular momentum is conserved only to the order of the correction (Bonet and Lok 1999).
+// Viscosity and artificial stress keep the plain gradient.
 
 #include "methods/updated_lagrangian_sph/ArtificialViscosity.hpp"
 #include "methods/updated_lagrangian_sph/ParticleView.hpp"

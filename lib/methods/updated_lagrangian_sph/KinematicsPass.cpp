@@ -28,7 +28,7 @@ void kinematicsRates(const ParticleView<D>& view, const KinematicsSettings& sett
       const Vec<D> r = xi - view.position(j);
       const Real r2 = r.squaredNorm();
       if (r2 >= support2) continue;  // listed through the skin but outside the support
-      const Vec<D> gradW = kernel.gradient(r);
+      const Vec<D> gradW = view.correctedGradient(i, kernel.gradient(r));
       const Vec<D> vji = view.velocity(j) - vi;
       gradient.noalias() += (view.m[j] / view.rho[j]) * vji * gradW.transpose();  // Li eq. (22)
       densityRate -= view.m[j] * vji.dot(gradW);                                  // Li eq. (18)

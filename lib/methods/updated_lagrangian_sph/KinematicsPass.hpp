@@ -6,7 +6,8 @@
 //   ds_i/dt = 2G dev(eps'_i) + Omega_i s_i - s_i Omega_i              Li eq. (24)-(26)
 //   drho_i/dt = sum_j m_j (v_i - v_j) . grad_i W_ij                   Li eq. (18), continuity only
 //   dx_i/dt = v_i + xsph sum_j m_j / rhobar_ij (v_j - v_i) W_ij       XSPH (Monaghan 1989)
-// Constraints are applied by the caller.
+// With the kernel-gradient correction (view.correction), grad_i W_ij is C_i grad_i W_ij in the
+// velocity gradient and the continuity equation. Constraints are applied by the caller.
 
 #include "methods/updated_lagrangian_sph/ParticleView.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSphLayout.hpp"

@@ -22,9 +22,15 @@ struct ParticleView {
   const Real* s = nullptr;    // count * stressComponents, Voigt order
   const Real* rho = nullptr;  // count densities
   const Real* m = nullptr;    // count masses
+  // The kernel-gradient correction C_i per particle (KernelGradientCorrection.hpp); null: none.
+  const Mat<D>* correction = nullptr;
 
   Vec<D> position(Index i) const { return Eigen::Map<const Vec<D>>(x + i * D); }
   Vec<D> velocity(Index i) const { return Eigen::Map<const Vec<D>>(v + i * D); }
+  // grad_i W_ij as particle i's rows use it: corrected when the view carries corrections.
+  Vec<D> correctedGradient(Index i, const Vec<D>& gradW) const {
+    return correction != nullptr ? Vec<D>(correction[i] * gradW) : gradW;
+  }
 };
 
 }  // namespace mfwave

@@ -11,6 +11,7 @@
 #include "methods/updated_lagrangian_sph/EquationOfState.hpp"
 #include "methods/updated_lagrangian_sph/ForcePass.hpp"
 #include "methods/updated_lagrangian_sph/HistoryRate.hpp"
+#include "methods/updated_lagrangian_sph/KernelGradientCorrection.hpp"
 #include "methods/updated_lagrangian_sph/KinematicsPass.hpp"
 #include "methods/updated_lagrangian_sph/OptionsValidation.hpp"
 #include "methods/updated_lagrangian_sph/ParallelThreshold.hpp"
@@ -92,6 +93,7 @@ struct UpdatedLagrangianSph<D>::Impl {
     prescribedGroup.assign(static_cast<std::size_t>(n), -1);
     const auto count = static_cast<std::size_t>(n);
     summedDensity.resize(count);
+    correction.resize(owner.options_.kernelGradientCorrection ? count : 0);
     stressOverRho2.resize(count);
     artificialStress.resize(owner.options_.artificialStress.enabled ? count : 0);
     pressureOverRho2.resize(count);
@@ -114,6 +116,10 @@ struct UpdatedLagrangianSph<D>::Impl {
     if (system.options_.density == DensityUpdate::Summation) {
       summationDensity(v, summedDensity.data());  // Li eq. (17); the state's rho entries are not used
       v.rho = summedDensity.data();
+    }
+    if (system.options_.kernelGradientCorrection) {
+      kernelGradientCorrection(v, correction.data());
+      v.correction = correction.data();
     }
     return v;
   }
@@ -267,6 +273,7 @@ struct UpdatedLagrangianSph<D>::Impl {
 
   // Scratch of one evaluation.
   std::vector<Real> summedDensity;  // summation densities of the last evaluation
+  std::vector<Mat<D>> correction;   // kernel-gradient corrections C_i of the last evaluation
   std::vector<Mat<D>> stressOverRho2;
   std::vector<Mat<D>> artificialStress;
   std::vector<Real> pressureOverRho2;

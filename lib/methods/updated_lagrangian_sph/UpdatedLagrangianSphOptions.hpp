@@ -47,6 +47,10 @@ struct UpdatedLagrangianSphOptions {
   DensityUpdate density = DensityUpdate::Continuity;
   ArtificialViscosityOptions viscosity;
   ArtificialStressOptions artificialStress;
+  // The kernel-gradient correction C_i (Randles-Libersky, Bonet-Lok) in the velocity gradient,
+  // continuity, stress divergence and energy equation: linear velocity fields give exact strain
+  // rates, also at free surfaces. Off reproduces the primer's equations as written.
+  bool kernelGradientCorrection = false;
   // XSPH: dx_i/dt = v_i + epsilon sum_j m_j / rhobar_ij (v_j - v_i) W_ij; 0 is off.
   Real xsph = 0;
   // Body force per unit mass g (only the first D entries are used).

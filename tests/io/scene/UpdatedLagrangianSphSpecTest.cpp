@@ -78,6 +78,7 @@ TEST(UpdatedLagrangianSphSpec, DefaultsAreTheOptionsDefaults) {
   EXPECT_EQ(o.artificialStress.exponent, d.artificialStress.exponent);
   EXPECT_EQ(o.artificialStress.referenceSpacing, d.artificialStress.referenceSpacing);
   EXPECT_EQ(o.xsph, d.xsph);
+  EXPECT_EQ(o.kernelGradientCorrection, d.kernelGradientCorrection);
   EXPECT_EQ(o.bodyForce, d.bodyForce);
   EXPECT_EQ(o.neighbourSkin, d.neighbourSkin);
   EXPECT_EQ(o.courant, d.courant);
@@ -106,6 +107,7 @@ artificial_stress_epsilon = 0.2
 artificial_stress_exponent = 3.0
 artificial_stress_spacing = 0.001
 xsph = 0.5
+kernel_gradient_correction = true
 neighbour_skin = 0.3
 courant = 0.4
 force_factor = 0.2
@@ -124,6 +126,7 @@ body_force = [0.0, -9.81]
   EXPECT_EQ(o.artificialStress.exponent, 3.0);
   EXPECT_EQ(o.artificialStress.referenceSpacing, 0.001);
   EXPECT_EQ(o.xsph, 0.5);
+  EXPECT_TRUE(o.kernelGradientCorrection);
   EXPECT_EQ(o.neighbourSkin, 0.3);
   EXPECT_EQ(o.courant, 0.4);
   EXPECT_EQ(o.forceFactor, 0.2);
