@@ -1,14 +1,15 @@
 #!/usr/bin/python3
 """Plot the plate study (the Gray-Monaghan-Swift oscillating cantilever plate): the tip's transverse
 displacement against the thin-plate motion over the first periods, the main case over the whole run,
-its energy ledger, and the measured period against the resolution with the thin-plate and
-Timoshenko periods.
+its energy ledger, and the measured period against (dp / H)^2 with the Richardson limit (from
+summary.json) and the thin-plate and Timoshenko periods.
 
 Usage: /usr/bin/python3 analysis/plot_plate.py OUT_DIR
 Reads OUT_DIR/cases.csv, OUT_DIR/<case>-tip.csv and OUT_DIR/<case>-energy.csv; writes
 OUT_DIR/plate-figures.png.
 """
 import csv
+import json
 import math
 import os
 import sys
@@ -92,19 +93,36 @@ def ledger(ax, out_dir, case):
     ax.set_title(f"{case['case']}: energy ledger")
 
 
-def convergence(ax, cases, thin, timoshenko):
+def extrapolated_period(out_dir):
+    """The Richardson limit the driver wrote to summary.json, or None."""
+    path = os.path.join(out_dir, "summary.json")
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        summary = json.load(f)
+    value = summary.get("figures", {}).get("ulsph_extrapolated_period [s]")
+    return value if isinstance(value, (int, float)) else None
+
+
+def convergence(ax, out_dir, cases, thin, timoshenko):
+    """Period against (dp / H)^2: a second-order method approaches the axis on a straight line."""
     sph = [c for c in cases if c["method"] == "updated_lagrangian_sph"]
     factors = sorted({c["V_f"] for c in sph}, key=float)
     for k, vf in enumerate(factors):
         rows = sorted([c for c in sph if c["V_f"] == vf], key=lambda c: int(c["H_over_dp"]))
-        ax.plot([int(c["H_over_dp"]) for c in rows], [number(c, "period [s]") for c in rows], f"C{k}o-",
-                label=f"UL-SPH, V_f = {vf}")
+        ax.plot([int(c["H_over_dp"]) ** -2 for c in rows], [number(c, "period [s]") for c in rows], f"C{k}o-",
+                label=f"UL-SPH, V_f = {vf} (H/dp = {', '.join(c['H_over_dp'] for c in rows)})")
+    limit = extrapolated_period(out_dir)
+    if limit is not None:
+        ax.plot([0], [limit], "r*", ms=12, label=f"Richardson limit {limit:.4f} s")
     for c in cases:
         if c["method"] == "very_weak_sph":
-            ax.plot([int(c["H_over_dp"])], [number(c, "period [s]")], "ks", label=f"very weak SPH, V_f = {c['V_f']}")
+            ax.plot([int(c["H_over_dp"]) ** -2], [number(c, "period [s]")], "ks",
+                    label=f"very weak SPH, V_f = {c['V_f']}")
     ax.axhline(thin, color="k", ls="--", lw=1, label=f"thin plate {thin:.4f} s")
     ax.axhline(timoshenko, color="gray", ls=":", lw=1.5, label=f"Timoshenko {timoshenko:.4f} s")
-    ax.set_xlabel("particles across the thickness H / dp")
+    ax.set_xlim(left=-0.002)
+    ax.set_xlabel("(dp / H)^2")
     ax.set_ylabel("period [s]")
     ax.set_title("period against resolution")
 
@@ -121,7 +139,7 @@ def main():
     first_periods(axes[0][0], out_dir, cases, thin)
     whole_run(axes[0][1], out_dir, cases[0])
     ledger(axes[1][0], out_dir, cases[0])
-    convergence(axes[1][1], cases, thin, timoshenko)
+    convergence(axes[1][1], out_dir, cases, thin, timoshenko)
     finish_axes([axes[0][0], axes[0][1], axes[1][0], axes[1][1]])
     fig.tight_layout()
     save_atomically(fig, os.path.join(out_dir, "plate-figures.png"))

@@ -1,14 +1,18 @@
 #include "EnergyLedger.hpp"
 
+#include "core/Error.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace mfwave {
 
 template <int D>
-EnergyLedger<D>::EnergyLedger(UpdatedLagrangianSph<D>& system)
+EnergyLedger<D>::EnergyLedger(UpdatedLagrangianSph<D>& system, Real blowUpLimit)
     : system_(system),
+      blowUpLimit_(blowUpLimit),
       series_("t [s]", {"kinetic [J]", "strain [J]", "internal [J]", "load_work [J]", "viscous_dissipation [J]",
                         "artificial_stress_work [J]", "balance [J]", "zigzag [-]", "min_spacing_ratio [-]"}) {}
 
@@ -19,6 +23,36 @@ void EnergyLedger<D>::observe(const StateView& state) {
   const ZeroEnergyModeIndicator z = system_.zeroEnergyModes(y);
   series_.append(state.time, {e.kinetic, e.strain, e.internal, e.loadWork, e.viscousDissipation,
                               e.artificialStressWork, e.balance(), z.zigzag, z.minimumSpacingRatio});
+  const Real initial = series_.column(Kinetic).front() + series_.column(Strain).front();
+  const Real drift = std::abs(e.balance() - series_.column(Balance).front());
+  if (initial > 0 && !(drift <= blowUpLimit_ * initial)) throwBlowUp(state, drift / initial);
+}
+
+template <int D>
+void EnergyLedger<D>::throwBlowUp(const StateView& state, Real drift) const {
+  const Vector& y = state.displacement;
+  const auto& layout = system_.layout();
+  Index fastest = 0;
+  Real largest = -1;  // squared speed; a NaN speed is taken as the fastest
+  for (Index i = 0; i < layout.particles; ++i) {
+    Real v2 = 0;
+    for (int a = 0; a < D; ++a) v2 += y[layout.velocity(i, a)] * y[layout.velocity(i, a)];
+    if (!(v2 <= largest)) {
+      largest = v2;
+      fastest = i;
+      if (std::isnan(v2)) break;
+    }
+  }
+  const Real speed = std::sqrt(largest);
+  std::ostringstream s;
+  s << "updated-Lagrangian SPH blew up at step " << state.step << ", t = " << state.time
+    << ": the energy balance (kinetic + internal - load work) has moved by " << drift
+    << " times the initial energy (limit " << blowUpLimit_ << "); fastest particle " << fastest << " at (";
+  for (int a = 0; a < D; ++a) s << (a > 0 ? ", " : "") << y[layout.position(fastest, a)];
+  s << ") with speed " << speed
+    << ". Usual causes: no artificial viscosity, the tensile instability (artificial stress off), or a fixed "
+       "step above the method's criteria";
+  throw InstabilityError(s.str(), state.step, state.time, static_cast<long>(fastest));
 }
 
 template <int D>

@@ -4,6 +4,12 @@
 // viscosity and work of the artificial stress, the balance kinetic + internal - load work, and the
 // zero-energy-mode indicators (zig-zag, smallest spacing), so a user sees when the tensile
 // instability or hourglass modes start. It observes the integrator directly (the whole state y).
+//
+// It is also the run's blow-up guard: the method conserves kinetic + internal - load work (the
+// ledger's balance) to the time integrator's error, so a balance that has moved by more than
+// `blowUpLimit` times the initial kinetic + strain energy (default 1: all of it) is an instability,
+// not an error to report at the end. observe() then throws InstabilityError with the step, the
+// time and the fastest particle, and the driver stops at once with its outputs unwritten.
 
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
 #include "observers/Observer.hpp"
@@ -20,7 +26,7 @@ class EnergyLedger : public Observer {
     MinimumSpacingRatio
   };
 
-  explicit EnergyLedger(UpdatedLagrangianSph<D>& system);
+  explicit EnergyLedger(UpdatedLagrangianSph<D>& system, Real blowUpLimit = 1);
   void observe(const StateView& state) override;
 
   const TimeSeries& series() const { return series_; }
@@ -31,7 +37,10 @@ class EnergyLedger : public Observer {
   Real firstTimeZigzagAbove(Real threshold) const;
 
  private:
+  [[noreturn]] void throwBlowUp(const StateView& state, Real drift) const;
+
   UpdatedLagrangianSph<D>& system_;
+  Real blowUpLimit_;
   TimeSeries series_;
 };
 
