@@ -12,13 +12,18 @@
 //                        velocity factors, to study.convergence_end_time
 //   vwsph_Hdp<n>_Vf<V>   with study.very_weak_sph: the very weak form SPH (consistent variant) at the
 //                        scene's resolution and the small velocity factor, to integrator.end_time
-// Writes cases.csv (period, errors, energy and cost per case), <case>-tip.csv, <case>-energy.csv,
-// frames of the main case (<case>.pvd, PNG under a display), summary.json, scene.resolved.toml.
+//   (study.linearised_modes) the method linearised about rest at every resolution: its first
+//                        bending period without amplitude, artificial terms or time integration
+// The periods over the resolutions get an observed order and a Richardson limit (runs and
+// linearised separately). Writes cases.csv (period, errors, energy and cost per case),
+// modes.csv, <case>-tip.csv, <case>-energy.csv, frames of the main case (<case>.pvd, PNG under a
+// display), summary.json, scene.resolved.toml.
 // Results: docs/studies/sph-solids.md. Plot: /usr/bin/python3 analysis/plot_plate.py OUT.
 //
-//   plate --scene data/scenes/plate.toml [--set 'study.resolutions=[5, 7, 10, 15]'] [--out DIR]
+//   plate --scene data/scenes/plate.toml [--set 'study.resolutions=[5, 7, 10, 14]'] [--out DIR]
 
 #include "PlateCase.hpp"
+#include "PlateModes.hpp"
 
 #include "analysis/RichardsonExtrapolation.hpp"
 
@@ -95,6 +100,11 @@ SceneSchema plateSchema() {
       .defaultsTo("0.8333333333333334")
       .positive()
       .describedAs("Timoshenko shear coefficient kappa of the reference (5/6 for a rectangle)");
+  schema.add("study.linearised_modes", T::Boolean)
+      .defaultsTo("true")
+      .describedAs("also compute the first bending period of the updated-Lagrangian SPH linearised about rest (no "
+                   "amplitude, no artificial terms, no time integration) at every resolution: seconds up to "
+                   "H / dp = 10, minutes beyond");
   schema.add("study.very_weak_sph", T::Boolean)
       .defaultsTo("true")
       .describedAs("also run the very weak form SPH (consistent variant) at the scene's resolution and small V_f");
@@ -125,6 +135,7 @@ struct Plan {
   PlateStudy study;
   std::vector<PlateCaseSettings> cases;
   Real linearVelocityFactor = 0;  // V_f of the convergence series over resolutions
+  std::vector<Index> modeResolutions;  // H / dp of the linearised modes (empty: none)
 };
 
 // The updated-Lagrangian SPH periods of the convergence series (one V_f, several H / dp) and their
@@ -138,12 +149,7 @@ struct PeriodConvergence {
   Real limit = 0;
 };
 
-std::optional<PeriodConvergence> periodConvergence(const std::vector<PlateCaseResult>& results, Real velocityFactor) {
-  std::vector<ConvergenceSample> samples;
-  for (const PlateCaseResult& r : results)
-    if (r.settings.method == PlateMethod::UpdatedLagrangian && r.settings.velocityFactor == velocityFactor &&
-        std::isfinite(r.tip.period) && r.tip.period > 0)
-      samples.push_back({1 / static_cast<Real>(r.settings.rows), r.tip.period});
+std::optional<PeriodConvergence> periodConvergence(std::vector<ConvergenceSample> samples) {
   std::sort(samples.begin(), samples.end(),
             [](const ConvergenceSample& a, const ConvergenceSample& b) { return a.spacing > b.spacing; });
   if (samples.size() < 2) return std::nullopt;
@@ -231,6 +237,7 @@ Plan readPlan(SceneReader& reader) {
   const Real smallFactor = reader.number("study.small_velocity_factor");
   const Real convergenceEnd = reader.number("study.convergence_end_time");
   const bool veryWeak = reader.boolean("study.very_weak_sph");
+  const bool linearisedModes = reader.boolean("study.linearised_modes");
   study.veryWeakSmoothingLengthRatio = reader.number("study.very_weak_smoothing_length_ratio");
   study.veryWeakSmoothingRate = reader.number("study.very_weak_smoothing_rate");
   study.veryWeakCfl = reader.number("study.very_weak_cfl");
@@ -266,6 +273,11 @@ Plan readPlan(SceneReader& reader) {
   };
   // The main case (30 periods, frames), then the short cases: the small amplitude and the very weak
   // form SPH at the scene's resolution, and the other resolutions.
+  if (linearisedModes) {
+    plan.modeResolutions = others;
+    plan.modeResolutions.push_back(mainRows);
+    std::sort(plan.modeResolutions.begin(), plan.modeResolutions.end());
+  }
   add(PlateMethod::UpdatedLagrangian, mainRows, velocityFactor, endTime, true);
   if (small) add(PlateMethod::UpdatedLagrangian, mainRows, smallFactor, convergenceEnd, false);
   if (veryWeak) add(PlateMethod::VeryWeak, mainRows, linearFactor, convergenceEnd, false);
@@ -305,6 +317,31 @@ void writeCases(const std::string& path, const std::vector<PlateCaseResult>& res
         << r.largestZigzag << ',' << r.largestZigzagEnergy << ',' << r.smallestSpacingRatio << '\n';
   }
   file.commit();
+}
+
+void writeModes(const std::string& path, const std::vector<PlateModesResult>& modes, Real timoshenko) {
+  AtomicFile file(path);
+  std::ostream& out = file.stream();
+  out << "H_over_dp,unknowns,first_period [s],timoshenko_error,second_period [s],largest_growth_rate [1/s],"
+         "zero_modes,seconds\n";
+  out << std::setprecision(8);
+  for (const PlateModesResult& m : modes)
+    out << m.rows << ',' << m.unknowns << ',' << m.firstPeriod << ',' << m.firstPeriod / timoshenko - 1 << ','
+        << m.secondPeriod << ',' << m.largestGrowthRate << ',' << m.zeroModes << ',' << m.seconds << '\n';
+  file.commit();
+}
+
+void printModes(std::ostream& out, const std::vector<PlateModesResult>& modes, Real timoshenko) {
+  out << "linearised about rest (no amplitude, no artificial terms, no time integration):\n";
+  out << std::left << std::setw(8) << "H/dp" << std::right << std::setw(10) << "unknowns" << std::setw(12)
+      << "1st period" << std::setw(9) << "vs Tim." << std::setw(12) << "2nd period" << std::setw(12) << "growth"
+      << std::setw(8) << "zero" << std::setw(9) << "wall[s]" << '\n';
+  for (const PlateModesResult& m : modes)
+    out << std::left << std::setw(8) << m.rows << std::right << std::setw(10) << m.unknowns << std::setw(12)
+        << std::setprecision(5) << m.firstPeriod << std::setw(8) << std::setprecision(3)
+        << 100 * (m.firstPeriod / timoshenko - 1) << '%' << std::setw(12) << std::setprecision(5) << m.secondPeriod
+        << std::setw(12) << std::setprecision(3) << m.largestGrowthRate << std::setw(8) << m.zeroModes << std::setw(9)
+        << m.seconds << '\n';
 }
 
 void printTable(std::ostream& out, const std::vector<PlateCaseResult>& results) {
@@ -398,7 +435,12 @@ int main(int argc, char** argv) {
       summary.figures.push_back({c + "_particle_steps_per_second", r.particleStepsPerSecond()});
       summary.figures.push_back({c + "_wall [s]", r.setupSeconds + r.runSeconds});
     }
-    if (const std::optional<PeriodConvergence> c = periodConvergence(results, plan.linearVelocityFactor)) {
+    std::vector<ConvergenceSample> runSamples;
+    for (const PlateCaseResult& r : results)
+      if (r.settings.method == PlateMethod::UpdatedLagrangian && r.settings.velocityFactor == plan.linearVelocityFactor &&
+          std::isfinite(r.tip.period) && r.tip.period > 0)
+        runSamples.push_back({1 / static_cast<Real>(r.settings.rows), r.tip.period});
+    if (const std::optional<PeriodConvergence> c = periodConvergence(runSamples)) {
       const Real error = c->limit / main.timoshenkoPeriod - 1;
       std::cout << std::setprecision(3) << "convergence of the V_f = " << plan.linearVelocityFactor << " period over "
                 << c->resolutions << " resolutions: observed order ";
@@ -415,6 +457,39 @@ int main(int argc, char** argv) {
                               scene::formatNumber(plan.linearVelocityFactor) + " series, order " +
                               (c->observedOrder ? "observed through the three finest" : "2 assumed") +
                               ", limit from the two finest");
+    }
+    if (!plan.modeResolutions.empty()) {
+      std::vector<PlateModesResult> modes;
+      for (Index rows : plan.modeResolutions) {
+        modes.push_back(linearisedPlateModes(plan.study, rows));
+        if (!cli.options().quiet)
+          std::cerr << "  done linearised modes at H/dp = " << rows << " (" << modes.back().unknowns << " unknowns)\n";
+      }
+      writeModes(folder + "/modes.csv", modes, main.timoshenkoPeriod);
+      printModes(std::cout, modes, main.timoshenkoPeriod);
+      std::vector<ConvergenceSample> modeSamples;
+      for (const PlateModesResult& m : modes) {
+        const std::string c = "linearised_Hdp" + std::to_string(m.rows);
+        summary.figures.push_back({c + "_period [s]", m.firstPeriod});
+        summary.figures.push_back({c + "_growth_rate [1/s]", m.largestGrowthRate});
+        summary.errors.push_back({c + "_period_error_timoshenko", m.firstPeriod / main.timoshenkoPeriod - 1});
+        if (std::isfinite(m.firstPeriod)) modeSamples.push_back({1 / static_cast<Real>(m.rows), m.firstPeriod});
+      }
+      if (const std::optional<PeriodConvergence> c = periodConvergence(modeSamples)) {
+        const Real error = c->limit / main.timoshenkoPeriod - 1;
+        std::cout << std::setprecision(3) << "convergence of the linearised period over " << c->resolutions
+                  << " resolutions: observed order ";
+        if (c->observedOrder)
+          std::cout << *c->observedOrder;
+        else
+          std::cout << (c->resolutions < 3 ? "(needs 3)" : "(not monotone)");
+        std::cout << ", extrapolated (order " << c->orderUsed << ") " << std::setprecision(5) << c->limit << " s, "
+                  << std::setprecision(3) << 100 * error << "% from Timoshenko\n";
+        summary.errors.push_back({"linearised_extrapolated_period_error_timoshenko", error});
+        summary.figures.push_back({"linearised_extrapolated_period [s]", c->limit});
+        if (c->observedOrder) summary.figures.push_back({"linearised_period_order", *c->observedOrder});
+      }
+      summary.files.push_back("modes.csv");
     }
     summary.notes.push_back("particles, neighbours and mean dt of the main case (" + main.settings.name +
                             "); steps and wall time summed over " + std::to_string(results.size()) + " cases");

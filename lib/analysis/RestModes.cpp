@@ -1,0 +1,79 @@
+#include "analysis/RestModes.hpp"
+
+#include "core/Error.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <string>
+
+namespace mfwave {
+
+Eigen::MatrixXd restOperator(SplitFirstOrderSystem& system, Real t, const Vector& restState,
+                             const std::vector<Index>& velocityEntries, Real relativePerturbation) {
+  const Index n = system.size();
+  const Index nq = system.configurationSize();
+  if (restState.size() != n)
+    throw InputError("state", "has " + std::to_string(restState.size()) + " entries, the system " + std::to_string(n));
+  for (Index k : velocityEntries)
+    if (k < nq || k >= n) throw InputError("velocityEntries", "entry " + std::to_string(k) + " is not in p");
+  if (!(relativePerturbation > 0)) throw InputError("relativePerturbation", "must be positive");
+  const auto m = static_cast<Index>(velocityEntries.size());
+  const Real scale = std::max<Real>(1, restState.head(nq).cwiseAbs().maxCoeff());
+
+  Vector qdotRest(nq), qdot(nq), pPlus(n - nq), pMinus(n - nq);
+  system.configurationRate(t, restState, qdotRest);
+  Eigen::MatrixXd A(m, m);
+  Vector y = restState;
+  for (Index k = 0; k < m; ++k) {
+    // dQ/dv e_k: exact, Q being linear in v at rest.
+    y = restState;
+    y[velocityEntries[static_cast<std::size_t>(k)]] += 1;
+    system.configurationRate(t, y, qdot);
+    const Vector dq = qdot - qdotRest;
+    const Real size = dq.cwiseAbs().maxCoeff();
+    if (size == 0) {
+      A.col(k).setZero();
+      continue;
+    }
+    // dP_v/dq dq by a central difference of step eps dq.
+    const Real eps = relativePerturbation * scale / size;
+    y = restState;
+    y.head(nq) += eps * dq;
+    system.momentumRate(t, y, pPlus);
+    y.head(nq) = restState.head(nq) - eps * dq;
+    system.momentumRate(t, y, pMinus);
+    for (Index r = 0; r < m; ++r) {
+      const Index entry = velocityEntries[static_cast<std::size_t>(r)] - nq;
+      A(r, k) = (pPlus[entry] - pMinus[entry]) / (2 * eps);
+    }
+  }
+  return A;
+}
+
+RestModes restModes(const Eigen::MatrixXd& restOperator, Real zeroTolerance) {
+  RestModes modes;
+  if (restOperator.rows() == 0) return modes;
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(restOperator, false);
+  if (solver.info() != Eigen::Success) throw Error("restModes: the eigenvalue solver did not converge");
+  const Eigen::VectorXcd lambda = solver.eigenvalues();
+  const Real largest = lambda.cwiseAbs().maxCoeff();
+  for (Index k = 0; k < lambda.size(); ++k) {
+    const std::complex<Real> l = lambda[k];
+    if (std::abs(l) <= zeroTolerance * largest) {
+      ++modes.zeroModes;
+      continue;
+    }
+    // v'' = lambda v: v ~ exp(s t) with s^2 = lambda; growth is Re s of the root with Re s >= 0.
+    const Real growth = std::abs(std::sqrt(l).real());
+    if (std::abs(l.imag()) > zeroTolerance * largest || l.real() > 0)
+      modes.largestGrowthRate = std::max(modes.largestGrowthRate, growth);
+    if (l.real() < 0) modes.frequencies.push_back(std::sqrt(-l.real()));
+  }
+  std::sort(modes.frequencies.begin(), modes.frequencies.end());
+  return modes;
+}
+
+}  // namespace mfwave

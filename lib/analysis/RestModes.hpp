@@ -1,0 +1,36 @@
+#pragma once
+// Small vibrations of a split first-order system about a rest state: the linearised second-order
+// operator on the velocities and its eigenfrequencies. For q' = Q(t, y), p' = P(t, y) at a state
+// y0 at rest (zero velocities, zero stresses), perturbing the velocities v gives, to first order,
+//   q' = (dQ/dv) v,   v' = (dP_v/dq) q,   so   v'' = A v,   A = (dP_v/dq)(dQ/dv),
+// and the eigenvalues of A are -omega^2 for the oscillation modes. A is built column by column:
+// dQ/dv e_k exactly (Q is linear in v at rest: the strain rate, the continuity rate, dx/dt = v),
+// then dP_v/dq times it by a central difference. This is how the updated-Lagrangian SPH plate's
+// discrete bending period is measured without amplitude, artificial terms or time integration
+// (docs/studies/sph-solids.md); any SplitFirstOrderSystem works.
+
+#include "core/Types.hpp"
+#include "systems/SplitFirstOrderSystem.hpp"
+
+#include <vector>
+
+namespace mfwave {
+
+// A (m x m, m = velocityEntries.size()): entries are indices into y (the velocity components of
+// the moving particles; leave out clamped ones, whose rows would only add zero modes).
+// relativePerturbation scales the central difference in q against max(1, |q0|_inf).
+Eigen::MatrixXd restOperator(SplitFirstOrderSystem& system, Real t, const Vector& restState,
+                             const std::vector<Index>& velocityEntries, Real relativePerturbation = 1e-7);
+
+struct RestModes {
+  std::vector<Real> frequencies;  // omega = sqrt(-Re lambda) of the eigenvalues with Re lambda < 0, ascending
+  Real largestGrowthRate = 0;     // max over eigenvalues of sqrt(Re lambda) (Re > 0) and of the flutter
+                                  // rate Im sqrt(lambda) (complex lambda): 0 for a stable operator
+  Index zeroModes = 0;            // eigenvalues with |lambda| <= zeroTolerance * max |lambda|
+};
+
+// Eigenvalues with |lambda| or |Im lambda| below zeroTolerance * max |lambda| are taken as zero or
+// real: the finite differences of restOperator leave noise of about that size.
+RestModes restModes(const Eigen::MatrixXd& restOperator, Real zeroTolerance = 1e-7);
+
+}  // namespace mfwave
