@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Plot the plate study (the Gray-Monaghan-Swift oscillating cantilever plate): the tip's transverse
 displacement against the thin-plate motion over the first periods, the main case over the whole run,
-its energy ledger, and the measured period against (dp / H)^2 with the Richardson limit (from
-summary.json) and the thin-plate and Timoshenko periods.
+its energy ledger, and the measured and linearised periods (modes.csv) against (dp / H)^2 with their
+Richardson limits (from summary.json) and the thin-plate and Timoshenko periods.
 
 Usage: /usr/bin/python3 analysis/plot_plate.py OUT_DIR
 Reads OUT_DIR/cases.csv, OUT_DIR/<case>-tip.csv and OUT_DIR/<case>-energy.csv; writes
@@ -93,14 +93,14 @@ def ledger(ax, out_dir, case):
     ax.set_title(f"{case['case']}: energy ledger")
 
 
-def extrapolated_period(out_dir):
-    """The Richardson limit the driver wrote to summary.json, or None."""
+def extrapolated_period(out_dir, key):
+    """A Richardson limit the driver wrote to summary.json's figures, or None."""
     path = os.path.join(out_dir, "summary.json")
     if not os.path.exists(path):
         return None
     with open(path) as f:
         summary = json.load(f)
-    value = summary.get("figures", {}).get("ulsph_extrapolated_period [s]")
+    value = summary.get("figures", {}).get(key)
     return value if isinstance(value, (int, float)) else None
 
 
@@ -112,9 +112,18 @@ def convergence(ax, out_dir, cases, thin, timoshenko):
         rows = sorted([c for c in sph if c["V_f"] == vf], key=lambda c: int(c["H_over_dp"]))
         ax.plot([int(c["H_over_dp"]) ** -2 for c in rows], [number(c, "period [s]") for c in rows], f"C{k}o-",
                 label=f"UL-SPH, V_f = {vf} (H/dp = {', '.join(c['H_over_dp'] for c in rows)})")
-    limit = extrapolated_period(out_dir)
+    limit = extrapolated_period(out_dir, "ulsph_extrapolated_period [s]")
     if limit is not None:
-        ax.plot([0], [limit], "r*", ms=12, label=f"Richardson limit {limit:.4f} s")
+        ax.plot([0], [limit], "C0*", ms=12, label=f"runs' Richardson limit {limit:.4f} s")
+    modes_path = os.path.join(out_dir, "modes.csv")
+    if os.path.exists(modes_path):
+        modes = [m for m in read_table(modes_path) if math.isfinite(number(m, "first_period [s]"))]
+        modes.sort(key=lambda m: int(m["H_over_dp"]))
+        ax.plot([int(m["H_over_dp"]) ** -2 for m in modes], [number(m, "first_period [s]") for m in modes], "C2^-",
+                label="linearised about rest (no artificial terms)")
+        linear_limit = extrapolated_period(out_dir, "linearised_extrapolated_period [s]")
+        if linear_limit is not None:
+            ax.plot([0], [linear_limit], "C2*", ms=12, label=f"linearised Richardson limit {linear_limit:.4f} s")
     for c in cases:
         if c["method"] == "very_weak_sph":
             ax.plot([int(c["H_over_dp"]) ** -2], [number(c, "period [s]")], "ks",
