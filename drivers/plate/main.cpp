@@ -319,6 +319,29 @@ void writeCases(const std::string& path, const std::vector<PlateCaseResult>& res
   file.commit();
 }
 
+// Prints and records (summary errors and figures under `prefix`) the observed order and the
+// Richardson limit of a period over resolutions, when there are at least two.
+void reportConvergence(const std::vector<ConvergenceSample>& samples, const std::string& what,
+                       const std::string& prefix, Real timoshenko, RunSummary& summary) {
+  const std::optional<PeriodConvergence> c = periodConvergence(samples);
+  if (!c) return;
+  const Real error = c->limit / timoshenko - 1;
+  std::cout << std::setprecision(3) << "convergence of " << what << " over " << c->resolutions
+            << " resolutions: observed order ";
+  if (c->observedOrder)
+    std::cout << *c->observedOrder;
+  else
+    std::cout << (c->resolutions < 3 ? "(needs 3)" : "(not monotone)");
+  std::cout << ", extrapolated (order " << c->orderUsed << ") " << std::setprecision(5) << c->limit << " s, "
+            << std::setprecision(3) << 100 * error << "% from Timoshenko\n";
+  summary.errors.push_back({prefix + "_extrapolated_period_error_timoshenko", error});
+  summary.figures.push_back({prefix + "_extrapolated_period [s]", c->limit});
+  if (c->observedOrder) summary.figures.push_back({prefix + "_period_order", *c->observedOrder});
+  summary.notes.push_back("extrapolated period (" + prefix + "): Richardson over H / dp of " + what + ", order " +
+                          (c->observedOrder ? "observed through the three finest" : "2 assumed") +
+                          ", limit from the two finest");
+}
+
 void writeModes(const std::string& path, const std::vector<PlateModesResult>& modes, Real timoshenko) {
   AtomicFile file(path);
   std::ostream& out = file.stream();
@@ -440,24 +463,8 @@ int main(int argc, char** argv) {
       if (r.settings.method == PlateMethod::UpdatedLagrangian && r.settings.velocityFactor == plan.linearVelocityFactor &&
           std::isfinite(r.tip.period) && r.tip.period > 0)
         runSamples.push_back({1 / static_cast<Real>(r.settings.rows), r.tip.period});
-    if (const std::optional<PeriodConvergence> c = periodConvergence(runSamples)) {
-      const Real error = c->limit / main.timoshenkoPeriod - 1;
-      std::cout << std::setprecision(3) << "convergence of the V_f = " << plan.linearVelocityFactor << " period over "
-                << c->resolutions << " resolutions: observed order ";
-      if (c->observedOrder)
-        std::cout << *c->observedOrder;
-      else
-        std::cout << (c->resolutions < 3 ? "(needs 3)" : "(not monotone)");
-      std::cout << ", extrapolated (order " << c->orderUsed << ") " << std::setprecision(5) << c->limit << " s, "
-                << std::setprecision(3) << 100 * error << "% from Timoshenko\n";
-      summary.errors.push_back({"ulsph_extrapolated_period_error_timoshenko", error});
-      summary.figures.push_back({"ulsph_extrapolated_period [s]", c->limit});
-      if (c->observedOrder) summary.figures.push_back({"ulsph_period_order", *c->observedOrder});
-      summary.notes.push_back("extrapolated period: Richardson over H / dp of the V_f = " +
-                              scene::formatNumber(plan.linearVelocityFactor) + " series, order " +
-                              (c->observedOrder ? "observed through the three finest" : "2 assumed") +
-                              ", limit from the two finest");
-    }
+    reportConvergence(runSamples, "the V_f = " + scene::formatNumber(plan.linearVelocityFactor) + " period", "ulsph",
+                      main.timoshenkoPeriod, summary);
     if (!plan.modeResolutions.empty()) {
       std::vector<PlateModesResult> modes;
       for (Index rows : plan.modeResolutions) {
@@ -475,20 +482,7 @@ int main(int argc, char** argv) {
         summary.errors.push_back({c + "_period_error_timoshenko", m.firstPeriod / main.timoshenkoPeriod - 1});
         if (std::isfinite(m.firstPeriod)) modeSamples.push_back({1 / static_cast<Real>(m.rows), m.firstPeriod});
       }
-      if (const std::optional<PeriodConvergence> c = periodConvergence(modeSamples)) {
-        const Real error = c->limit / main.timoshenkoPeriod - 1;
-        std::cout << std::setprecision(3) << "convergence of the linearised period over " << c->resolutions
-                  << " resolutions: observed order ";
-        if (c->observedOrder)
-          std::cout << *c->observedOrder;
-        else
-          std::cout << (c->resolutions < 3 ? "(needs 3)" : "(not monotone)");
-        std::cout << ", extrapolated (order " << c->orderUsed << ") " << std::setprecision(5) << c->limit << " s, "
-                  << std::setprecision(3) << 100 * error << "% from Timoshenko\n";
-        summary.errors.push_back({"linearised_extrapolated_period_error_timoshenko", error});
-        summary.figures.push_back({"linearised_extrapolated_period [s]", c->limit});
-        if (c->observedOrder) summary.figures.push_back({"linearised_period_order", *c->observedOrder});
-      }
+      reportConvergence(modeSamples, "the linearised period", "linearised", main.timoshenkoPeriod, summary);
       summary.files.push_back("modes.csv");
     }
     summary.notes.push_back("particles, neighbours and mean dt of the main case (" + main.settings.name +
