@@ -4,6 +4,7 @@
 //  - Rhs:        F(t, y) with the neighbour lists valid (what most stages of a run pay).
 //  - RebuildRhs: the particles are moved by more than half the skin before every evaluation, so each
 //                one also rebuilds the cell list and the neighbour lists: the worst case of a step.
+//  - CorrectedRhs: Rhs with the kernel-gradient correction (one more pass over the pairs).
 // Arguments: particles per side, OpenMP threads.
 // Counters: particle_steps/s (evaluations per second times particles), particle_steps/s/core (divided
 // by the threads), mean_neighbours (self included, list radius (1 + skin) 2h), bytes_per_particle
@@ -29,7 +30,7 @@ ParticleSet<D> cubeLattice(Index perSide) {
 }
 
 template <int D>
-void fullStep(benchmark::State& state, bool rebuildEveryStep) {
+void fullStep(benchmark::State& state, bool rebuildEveryStep, bool corrected = false) {
   const auto perSide = static_cast<Index>(state.range(0));
   const int threads = static_cast<int>(state.range(1));
   omp_set_num_threads(threads);
@@ -37,6 +38,7 @@ void fullStep(benchmark::State& state, bool rebuildEveryStep) {
   UpdatedLagrangianSphOptions options;
   options.material = Material::fromYoung(1e7, 0.3, 1000);
   options.artificialStress.enabled = true;
+  options.kernelGradientCorrection = corrected;
   UpdatedLagrangianSph<D> system(particles, options);
   const Index n = system.particleCount();
   Vector velocity(n * D);
@@ -74,12 +76,16 @@ void Rhs2d(benchmark::State& state) { fullStep<2>(state, false); }
 void RebuildRhs2d(benchmark::State& state) { fullStep<2>(state, true); }
 void Rhs3d(benchmark::State& state) { fullStep<3>(state, false); }
 void RebuildRhs3d(benchmark::State& state) { fullStep<3>(state, true); }
+void CorrectedRhs2d(benchmark::State& state) { fullStep<2>(state, false, true); }
+void CorrectedRhs3d(benchmark::State& state) { fullStep<3>(state, false, true); }
 
 // 2-D: 101^2 = 1.0e4, 317^2 = 1.0e5, 1001^2 = 1.0e6 particles; 3-D: 22^3 = 1.1e4, 47^3 = 1.0e5, 100^3 = 1e6.
 BENCHMARK(Rhs2d)->ArgsProduct({{101, 317, 1001}, {1, 2}})->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(RebuildRhs2d)->ArgsProduct({{101, 317, 1001}, {1, 2}})->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(Rhs3d)->ArgsProduct({{22, 47, 100}, {1, 2}})->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(RebuildRhs3d)->ArgsProduct({{22, 47, 100}, {1, 2}})->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(CorrectedRhs2d)->ArgsProduct({{101, 317, 1001}, {1, 2}})->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(CorrectedRhs3d)->ArgsProduct({{22, 47, 100}, {1, 2}})->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -96,7 +96,7 @@ TEST(PlateStudy, CoarsePlatesConvergeAndKeepTheirEnergyOverThirtyPeriods) {
 TEST(PlateStudy, LinearisedPeriodConvergesToTimoshenkoAtSecondOrder) {
   // The discretisation alone (study.linearised_modes: small vibrations about rest, no amplitude,
   // no artificial terms, no time integration) at 5, 7 and 10 particles across: measured 0.31116,
-  // 0.28489 and 0.27107 s, observed order 2.03, Richardson limit 0.25805 s, +0.62 % from the
+  // 0.28489 and 0.27107 s, observed order 2.03, Richardson limit 0.25808 s, +0.63 % from the
   // Timoshenko period (with 14 across: order 1.89, +0.11 %). The runs are cut to 0.01 s here.
   const fs::path out = fs::temp_directory_path() / "mfwave-plate-modes";
   fs::remove_all(out);
