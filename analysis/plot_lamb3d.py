@@ -8,32 +8,16 @@ Usage: /usr/bin/python3 analysis/plot_lamb3d.py OUT_DIR
 Reads OUT_DIR/cases.csv, OUT_DIR/<case>-probes.csv and OUT_DIR/exact.csv; writes
 OUT_DIR/lamb3d-figures.png and, when there is more than one spacing, OUT_DIR/lamb3d-cost.png.
 """
-import csv
 import math
 import os
 import sys
 
-from plotting import finish_axes, save_atomically  # selects the Agg backend first
+from plotting import finish_axes, read_columns, read_table, save_atomically  # selects the Agg backend first
 
 import matplotlib.pyplot as plt  # noqa: E402
 
 PROBES = ("centre", "receiver")
 TITLES = {"centre": "load centre", "receiver": "receiver 2 units from the centre"}
-
-
-def read_table(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
-def read_columns(path):
-    if not os.path.exists(path):
-        return None
-    with open(path) as f:
-        reader = csv.reader(f)
-        header = next(reader)
-        columns = list(zip(*[[float(x) for x in row] for row in reader]))
-    return {name: list(col) for name, col in zip(header, columns)}
 
 
 def exact_curve(ax, fine, data, probe):

@@ -8,30 +8,14 @@ Usage: /usr/bin/python3 analysis/plot_plate.py OUT_DIR
 Reads OUT_DIR/cases.csv, OUT_DIR/<case>-tip.csv and OUT_DIR/<case>-energy.csv; writes
 OUT_DIR/plate-figures.png.
 """
-import csv
 import json
 import math
 import os
 import sys
 
-from plotting import finish_axes, save_atomically  # selects the Agg backend first
+from plotting import finish_axes, read_columns, read_table, save_atomically  # selects the Agg backend first
 
 import matplotlib.pyplot as plt  # noqa: E402
-
-
-def read_table(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
-def read_columns(path):
-    if not os.path.exists(path):
-        return None
-    with open(path) as f:
-        reader = csv.reader(f)
-        header = next(reader)
-        columns = list(zip(*[[float(x) for x in row] for row in reader]))
-    return {name: list(col) for name, col in zip(header, columns)}
 
 
 def number(row, key):

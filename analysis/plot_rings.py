@@ -8,31 +8,15 @@ Usage: /usr/bin/python3 analysis/plot_rings.py OUT_DIR
 Reads OUT_DIR/cases.csv and, per case, <case>-positions.csv, <case>-energy.csv, <case>-rings.csv;
 writes OUT_DIR/rings-montage.png and OUT_DIR/rings-energy.png.
 """
-import csv
 import os
 import sys
 
-from plotting import finish_axes, save_atomically  # selects the Agg backend first
+from plotting import finish_axes, read_columns, read_table, save_atomically  # selects the Agg backend first
 
 import matplotlib.pyplot as plt  # noqa: E402
 
 RING_COLOURS = ("tab:blue", "tab:orange")
 STRAY_COLOURS = ("tab:red", "tab:green", "tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan", "black")
-
-
-def read_table(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
-def read_columns(path):
-    if not os.path.exists(path):
-        return None
-    with open(path) as f:
-        reader = csv.reader(f)
-        header = next(reader)
-        rows = [[float(x) for x in row] for row in reader]
-    return {name: [row[k] for row in rows] for k, name in enumerate(header)}
 
 
 def snapshots(path):
