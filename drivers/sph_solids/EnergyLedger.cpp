@@ -23,9 +23,12 @@ void EnergyLedger<D>::observe(const StateView& state) {
   const ZeroEnergyModeIndicator z = system_.zeroEnergyModes(y);
   series_.append(state.time, {e.kinetic, e.strain, e.internal, e.loadWork, e.viscousDissipation,
                               e.artificialStressWork, e.balance(), z.zigzag, z.minimumSpacingRatio});
-  const Real initial = series_.column(Kinetic).front() + series_.column(Strain).front();
-  const Real drift = std::abs(e.balance() - series_.column(Balance).front());
-  if (initial > 0 && !(drift <= blowUpLimit_ * initial)) throwBlowUp(state, drift / initial);
+  if (series_.rows() == 1) {
+    initialEnergy_ = e.kinetic + e.strain;
+    initialBalance_ = e.balance();
+  }
+  const Real drift = std::abs(e.balance() - initialBalance_);
+  if (initialEnergy_ > 0 && !(drift <= blowUpLimit_ * initialEnergy_)) throwBlowUp(state, drift / initialEnergy_);
 }
 
 template <int D>

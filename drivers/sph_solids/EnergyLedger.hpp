@@ -41,6 +41,8 @@ class EnergyLedger : public Observer {
 
   UpdatedLagrangianSph<D>& system_;
   Real blowUpLimit_;
+  Real initialEnergy_ = 0;   // kinetic + strain of the first row
+  Real initialBalance_ = 0;  // balance of the first row
   TimeSeries series_;
 };
 

@@ -117,6 +117,13 @@ struct UpdatedLagrangianSph<D>::Impl {
       summationDensity(v, summedDensity.data());  // Li eq. (17); the state's rho entries are not used
       v.rho = summedDensity.data();
     }
+    return v;
+  }
+
+  // view(y) with the kernel-gradient corrections of this evaluation when the options ask for
+  // them: what the rate passes use (the diagnostics do not need the extra pair pass).
+  ParticleView<D> rateView(const Real* y) {
+    ParticleView<D> v = view(y);
     if (system.options_.kernelGradientCorrection) {
       kernelGradientCorrection(v, correction.data());
       v.correction = correction.data();
@@ -386,20 +393,20 @@ Vector UpdatedLagrangianSph<D>::initialState(const Vector& velocity) const {
 
 template <int D>
 void UpdatedLagrangianSph<D>::configurationRate(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> qdot) {
-  const ParticleView<D> view = impl_->view(y.data());
+  const ParticleView<D> view = impl_->rateView(y.data());
   impl_->configurationRate(t, view, qdot.data());
 }
 
 template <int D>
 void UpdatedLagrangianSph<D>::momentumRate(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> pdot) {
-  const ParticleView<D> view = impl_->view(y.data());
+  const ParticleView<D> view = impl_->rateView(y.data());
   impl_->momentumRate(t, view, y.data(), pdot.data());
 }
 
 template <int D>
 void UpdatedLagrangianSph<D>::rhs(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) {
   // One neighbour refresh and one density summation for both parts.
-  const ParticleView<D> view = impl_->view(y.data());
+  const ParticleView<D> view = impl_->rateView(y.data());
   impl_->configurationRate(t, view, ydot.data());
   impl_->momentumRate(t, view, y.data(), ydot.data() + configurationSize());
 }
