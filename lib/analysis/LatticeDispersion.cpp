@@ -98,32 +98,29 @@ Real alignmentOf(const Eigen::VectorXd& v, const Vec<D>& n, int components) {
   return std::abs(dot) / norm;
 }
 
+}  // namespace
+
 template <int D>
-void checkPolarisation(const LatticeStencil<D>& stencil, Polarisation polarisation) {
-  const int c = stencil.components;
-  const bool ok = (polarisation == Polarisation::Scalar && c == 1) ||
-                  (polarisation == Polarisation::P && c == D) ||
-                  (polarisation == Polarisation::S && c == D && D >= 2);
+void checkPolarisationExists(int components, Polarisation polarisation) {
+  const bool ok = (polarisation == Polarisation::Scalar && components == 1) ||
+                  (polarisation == Polarisation::P && components == D) ||
+                  (polarisation == Polarisation::S && components == D && D >= 2);
   if (!ok) {
     std::ostringstream s;
-    s << polarisationName(polarisation) << " does not exist for " << c << " component(s) per particle in " << D
-      << "-D";
+    s << polarisationName(polarisation) << " does not exist for " << components << " component(s) per particle in "
+      << D << "-D";
     throw InputError("polarisation", s.str());
   }
 }
 
-// Index of the branch of `polarisation` among branches sorted by ascending value, from their
-// alignments: P the most aligned, S the slowest of the others.
-std::size_t selectBranch(const std::vector<Real>& alignments, Polarisation polarisation) {
-  if (polarisation == Polarisation::Scalar || alignments.size() == 1) return 0;
+std::size_t polarisationBranch(const std::vector<LatticeMode>& modes, Polarisation polarisation) {
+  if (polarisation == Polarisation::Scalar || modes.size() <= 1) return 0;
   std::size_t p = 0;
-  for (std::size_t j = 1; j < alignments.size(); ++j)
-    if (alignments[j] > alignments[p] + 1e-12) p = j;
+  for (std::size_t j = 1; j < modes.size(); ++j)
+    if (modes[j].alignment > modes[p].alignment + 1e-12) p = j;
   if (polarisation == Polarisation::P) return p;
   return p == 0 ? 1 : 0;  // the slowest branch other than P (ascending order)
 }
-
-}  // namespace
 
 template <int D>
 Eigen::MatrixXd LatticeStencil<D>::rowSum() const {
@@ -289,17 +286,15 @@ template <int D>
 LatticeMode latticeMode(const LatticeStencil<D>& stencil, const Vec<D>& direction, Real wavenumber,
                         Polarisation polarisation, Real imaginaryTolerance) {
   checkStencil(stencil);
-  checkPolarisation(stencil, polarisation);
+  checkPolarisationExists<D>(stencil.components, polarisation);
   const auto modes = latticeModes(stencil, direction, wavenumber, imaginaryTolerance);
-  std::vector<Real> alignments;
-  for (const auto& m : modes) alignments.push_back(m.alignment);
-  return modes[selectBranch(alignments, polarisation)];
+  return modes[polarisationBranch(modes, polarisation)];
 }
 
 template <int D>
 LongWaveLimit longWaveLimit(const LatticeStencil<D>& stencil, const Vec<D>& direction, Polarisation polarisation) {
   checkStencil(stencil);
-  checkPolarisation(stencil, polarisation);
+  checkPolarisationExists<D>(stencil.components, polarisation);
   const Vec<D> n = unitDirection(direction);
   const int c = stencil.components;
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(c, c);
@@ -312,16 +307,16 @@ LongWaveLimit longWaveLimit(const LatticeStencil<D>& stencil, const Vec<D>& dire
   const bool symmetric = (a - a.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * std::max(scale, a.cwiseAbs().maxCoeff());
   // The eigenpairs of A, with v . S0 v riding along as the "derivative" slot.
   const auto pairs = eigenPairs(a, s0, symmetric, a.cwiseAbs().maxCoeff());
-  std::vector<Real> alignments;
-  for (const auto& p : pairs) alignments.push_back(alignmentOf<D>(p.vector, n, c));
-  const std::size_t j = selectBranch(alignments, polarisation);
+  std::vector<LatticeMode> branches(pairs.size());
+  for (std::size_t b = 0; b < pairs.size(); ++b) branches[b].alignment = alignmentOf<D>(pairs[b].vector, n, c);
+  const std::size_t j = polarisationBranch(branches, polarisation);
   LongWaveLimit limit;
   const Real gapSquared = pairs[j].derivative;
   // Round-off in the row sum of an exact row leaves |v . S0 v| ~ 1e-16 scale: a gap of zero.
   if (std::abs(gapSquared) <= 1e-12 * scale) limit.gap = 0;
   else limit.gap = gapSquared > 0 ? std::sqrt(gapSquared) : kNaN;
   limit.speed = (pairs[j].value >= 0 && !pairs[j].complexPair) ? std::sqrt(pairs[j].value) : kNaN;
-  limit.alignment = alignments[j];
+  limit.alignment = branches[j].alignment;
   return limit;
 }
 
@@ -416,6 +411,7 @@ Vec<D> latticeDiagonal() {
   template AccuracyResolution pointsPerWavelength<D>(const LatticeStencil<D>&, const Vec<D>&, Polarisation, Real,  \
                                                      Real, Real, Real, Real, int);                                 \
   template Vec<D> latticeAxis<D>();                                                                                \
+  template void checkPolarisationExists<D>(int, Polarisation);                                                     \
   template Vec<D> latticeDiagonal<D>();
 
 MFWAVE_LATTICE_DISPERSION(1)

@@ -77,6 +77,16 @@ enum class Polarisation {
 };
 const char* polarisationName(Polarisation polarisation);  // "P", "S", "scalar"
 
+// Throws InputError("polarisation") when the polarisation does not exist for `components` unknowns
+// per particle in D dimensions (S in 1-D, P or S for a scalar system, Scalar for a vector one).
+template <int D>
+void checkPolarisationExists(int components, Polarisation polarisation);
+
+struct LatticeMode;
+// Index of the branch of `polarisation` among modes sorted by ascending omega^2, from their
+// alignments: P the most aligned with the direction, S the slowest of the others, Scalar the only one.
+std::size_t polarisationBranch(const std::vector<LatticeMode>& modes, Polarisation polarisation);
+
 struct LatticeMode {
   Real omegaSquared = 0;        // eigenvalue of S(k) (real part)
   Real omega = 0;               // sqrt(omegaSquared); NaN when negative or complex

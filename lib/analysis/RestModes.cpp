@@ -13,6 +13,14 @@ namespace mfwave {
 
 Eigen::MatrixXd restOperator(SplitFirstOrderSystem& system, Real t, const Vector& restState,
                              const std::vector<Index>& velocityEntries, Real relativePerturbation) {
+  std::vector<Index> rows(velocityEntries.size());
+  for (std::size_t r = 0; r < rows.size(); ++r) rows[r] = static_cast<Index>(r);
+  return restOperatorRows(system, t, restState, velocityEntries, rows, relativePerturbation);
+}
+
+Eigen::MatrixXd restOperatorRows(SplitFirstOrderSystem& system, Real t, const Vector& restState,
+                                 const std::vector<Index>& velocityEntries, const std::vector<Index>& rows,
+                                 Real relativePerturbation) {
   const Index n = system.size();
   const Index nq = system.configurationSize();
   if (restState.size() != n)
@@ -21,11 +29,13 @@ Eigen::MatrixXd restOperator(SplitFirstOrderSystem& system, Real t, const Vector
     if (k < nq || k >= n) throw InputError("velocityEntries", "entry " + std::to_string(k) + " is not in p");
   if (!(relativePerturbation > 0)) throw InputError("relativePerturbation", "must be positive");
   const auto m = static_cast<Index>(velocityEntries.size());
+  for (Index r : rows)
+    if (r < 0 || r >= m) throw InputError("rows", "row " + std::to_string(r) + " is not in [0, " + std::to_string(m) + ")");
   const Real scale = std::max<Real>(1, restState.head(nq).cwiseAbs().maxCoeff());
 
   Vector qdotRest(nq), qdot(nq), pPlus(n - nq), pMinus(n - nq);
   system.configurationRate(t, restState, qdotRest);
-  Eigen::MatrixXd A(m, m);
+  Eigen::MatrixXd A(static_cast<Index>(rows.size()), m);
   Vector y = restState;
   for (Index k = 0; k < m; ++k) {
     // dQ/dv e_k: exact, Q being linear in v at rest.
@@ -45,9 +55,9 @@ Eigen::MatrixXd restOperator(SplitFirstOrderSystem& system, Real t, const Vector
     system.momentumRate(t, y, pPlus);
     y.head(nq) = restState.head(nq) - eps * dq;
     system.momentumRate(t, y, pMinus);
-    for (Index r = 0; r < m; ++r) {
-      const Index entry = velocityEntries[static_cast<std::size_t>(r)] - nq;
-      A(r, k) = (pPlus[entry] - pMinus[entry]) / (2 * eps);
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      const Index entry = velocityEntries[static_cast<std::size_t>(rows[r])] - nq;
+      A(static_cast<Index>(r), k) = (pPlus[entry] - pMinus[entry]) / (2 * eps);
     }
   }
   return A;

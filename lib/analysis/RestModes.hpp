@@ -22,6 +22,13 @@ namespace mfwave {
 Eigen::MatrixXd restOperator(SplitFirstOrderSystem& system, Real t, const Vector& restState,
                              const std::vector<Index>& velocityEntries, Real relativePerturbation = 1e-7);
 
+// Only some rows of A: row r of the result is row rows[r] of restOperator (rows index into
+// velocityEntries). The cost is the same number of rate evaluations, the storage rows x m: enough
+// for the interior stencil of a large lattice (MethodLatticeStencils.hpp). Throws InputError("rows").
+Eigen::MatrixXd restOperatorRows(SplitFirstOrderSystem& system, Real t, const Vector& restState,
+                                 const std::vector<Index>& velocityEntries, const std::vector<Index>& rows,
+                                 Real relativePerturbation = 1e-7);
+
 struct RestModes {
   std::vector<Real> frequencies;  // omega = sqrt(-Re lambda) of the eigenvalues with Re lambda < 0, ascending
   Real largestGrowthRate = 0;     // max over eigenvalues of sqrt(Re lambda) (Re > 0) and of the flutter

@@ -1,0 +1,194 @@
+#include "analysis/MethodLatticeStencils.hpp"
+
+#include "analysis/RestModes.hpp"
+#include "core/Error.hpp"
+#include "kernels/KernelFactory.hpp"
+#include "methods/collocation/RadialBasisShapeFunctions.hpp"
+#include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
+#include "methods/finite_difference/FiniteDifferenceWaveOperator.hpp"
+#include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
+#include "neighbours/CellList.hpp"
+#include "neighbours/NeighbourList.hpp"
+#include "particles/BoxFace.hpp"
+#include "particles/Lattice.hpp"
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+namespace mfwave {
+
+namespace {
+
+void checkSpacing(Real spacing) {
+  if (!(spacing > 0) || !std::isfinite(spacing)) throw InputError("spacing", "must be positive and finite");
+}
+
+template <int D>
+ParticleSet<D> block(int halfWidth, Real spacing) {
+  const Vec<D> upper = Vec<D>::Constant(halfWidth * spacing);
+  return makeLattice<D>(-upper, upper, spacing);
+}
+
+template <int D>
+Index particleAt(const ParticleSet<D>& particles, const Vec<D>& x, Real spacing) {
+  for (Index i = 0; i < particles.physicalCount(); ++i)
+    if ((particles.position(i) - x).norm() < 1e-9 * spacing) return i;
+  throw Error("method lattice stencil: no lattice particle at the expected position");
+}
+
+template <int D>
+Vec<D> nextAlongX(Real spacing) {
+  Vec<D> x = Vec<D>::Zero();
+  x(0) = spacing;
+  return x;
+}
+
+// Collocation rows at node `at`: mass psi_b I, acceleration ((lambda + mu) H + mu tr(H) I) / rho.
+template <int D>
+void collocationRow(const ShapeFunctions<D>& shapes, const ParticleSet<D>& nodes, Index at, const Material& material,
+                    LatticeStencil<D>& mass, LatticeStencil<D>& acceleration) {
+  ShapeFunctionValues<D> values;
+  const Vec<D> x = nodes.position(at);
+  shapes.evaluate(x, 2, values);
+  mass = LatticeStencil<D>{};
+  acceleration = LatticeStencil<D>{};
+  mass.components = acceleration.components = D;
+  const Real lambda = material.lambda(), mu = material.mu(), rho = material.density();
+  for (Index k = 0; k < values.size(); ++k) {
+    const Vec<D> r = nodes.position(values.nodes[static_cast<std::size_t>(k)]) - x;
+    const Mat<D>& H = values.hessian[static_cast<std::size_t>(k)];
+    Eigen::MatrixXd g = ((lambda + mu) * H + mu * H.trace() * Mat<D>::Identity()) / rho;
+    mass.offsets.push_back(r);
+    mass.blocks.push_back(values.value[static_cast<std::size_t>(k)] * Eigen::MatrixXd::Identity(D, D));
+    acceleration.offsets.push_back(r);
+    acceleration.blocks.push_back(std::move(g));
+  }
+}
+
+}  // namespace
+
+template <int D>
+MethodLatticeStencil<D> finiteDifferenceInteriorStencil(Real spacing, Real waveSpeed) {
+  checkSpacing(spacing);
+  if (!(waveSpeed > 0) || !std::isfinite(waveSpeed)) throw InputError("wave_speed", "must be positive and finite");
+  MethodLatticeStencil<D> result;
+  result.halfWidth = 3;
+  const ParticleSet<D> particles = block<D>(result.halfWidth, spacing);
+  FiniteDifferenceWaveOptions options;
+  options.spacing = spacing;
+  options.density = 1;
+  options.modulus = waveSpeed * waveSpeed;
+  options.fixedFaces = allFaces(D);  // boundary rows left out; the centre row is interior
+  const LinearSecondOrderSystem system =
+      assembleFiniteDifferenceWave(particles, buildNeighbourList(CellList<D>(particles, 1.2 * spacing)), options);
+  result.acceleration = extractLatticeStencil(system, particles, particleAt<D>(particles, Vec<D>::Zero(), spacing));
+  result.translationDifference = stencilDifference(
+      result.acceleration, extractLatticeStencil(system, particles, particleAt<D>(particles, nextAlongX<D>(spacing), spacing)),
+      1e-9 * spacing);
+  return result;
+}
+
+template <int D>
+MethodLatticeStencil<D> collocationInteriorStencil(CollocationBasis basis, int order, Real ratio,
+                                                   const Material& material, Real spacing, int halfWidth) {
+  checkSpacing(spacing);
+  if (!(ratio > 0) || !std::isfinite(ratio)) throw InputError("support_ratio", "must be positive and finite");
+  if (basis == CollocationBasis::ReproducingKernel && (order < 1 || order > 3))
+    throw InputError("order", "the RK basis order must be 1, 2 or 3, got " + std::to_string(order));
+  MethodLatticeStencil<D> result;
+  result.halfWidth = halfWidth > 0 ? halfWidth
+                     : basis == CollocationBasis::ReproducingKernel ? static_cast<int>(std::ceil(ratio)) + 2
+                                                                    : (D == 1 ? 40 : 10);
+  const ParticleSet<D> nodes = block<D>(result.halfWidth, spacing);
+  std::unique_ptr<ShapeFunctions<D>> shapes;
+  if (basis == CollocationBasis::ReproducingKernel)
+    shapes = std::make_unique<ReproducingKernelShapeFunctions<D>>(nodes, order, ratio * spacing);
+  else
+    shapes = std::make_unique<RadialBasisShapeFunctions<D>>(
+        nodes, RadialBasisFunction(RadialBasisKind::InverseMultiquadric, ratio * spacing));
+  collocationRow<D>(*shapes, nodes, particleAt<D>(nodes, Vec<D>::Zero(), spacing), material, result.mass,
+                    result.acceleration);
+  LatticeStencil<D> nextMass, nextAcceleration;
+  collocationRow<D>(*shapes, nodes, particleAt<D>(nodes, nextAlongX<D>(spacing), spacing), material, nextMass,
+                    nextAcceleration);
+  // Compare on the common offsets only: the neighbour's row reaches one node further on one side
+  // for the global RB functions, and the missing blocks would make the difference infinite.
+  if (basis == CollocationBasis::ReproducingKernel)
+    result.translationDifference = stencilDifference(result.acceleration, nextAcceleration, 1e-9 * spacing);
+  else {
+    Real largest = 0, difference = 0;
+    for (std::size_t a = 0; a < result.acceleration.offsets.size(); ++a) {
+      largest = std::max(largest, result.acceleration.blocks[a].cwiseAbs().maxCoeff());
+      for (std::size_t b = 0; b < nextAcceleration.offsets.size(); ++b)
+        if ((nextAcceleration.offsets[b] - result.acceleration.offsets[a]).norm() < 1e-9 * spacing &&
+            (result.acceleration.offsets[a] + nextAlongX<D>(spacing)).cwiseAbs().maxCoeff() <=
+                result.halfWidth * spacing * (1 + 1e-12))
+          difference =
+              std::max(difference, (nextAcceleration.blocks[b] - result.acceleration.blocks[a]).cwiseAbs().maxCoeff());
+    }
+    result.translationDifference = largest > 0 ? difference / largest : 0;
+  }
+  return result;
+}
+
+template <int D>
+MethodLatticeStencil<D> updatedLagrangianSphInteriorStencil(UpdatedLagrangianSphOptions options, Real spacing) {
+  checkSpacing(spacing);
+  options.viscosity.alpha = 0;
+  options.viscosity.beta = 0;
+  options.artificialStress.enabled = false;
+  const auto kernel = makeKernel(options.kernel, D, options.smoothingLengthRatio * spacing);
+  // Lattice steps inside the (open) support along an axis.
+  const int reach = static_cast<int>(std::ceil(kernel->supportRadius() / spacing - 1e-9)) - 1;
+  MethodLatticeStencil<D> result;
+  // The centre's force reads the stresses of its neighbours, whose rates read their own neighbours:
+  // two supports, plus one spacing for the translation check.
+  result.halfWidth = 2 * reach + 1;
+  const ParticleSet<D> particles = block<D>(result.halfWidth, spacing);
+  UpdatedLagrangianSph<D> system(particles, options);
+  const Vector rest = system.initialState(Vector());
+  std::vector<Index> velocities;
+  for (Index i = 0; i < particles.physicalCount(); ++i)
+    for (int a = 0; a < D; ++a) velocities.push_back(system.layout().velocity(i, a));
+
+  auto rowsOf = [&](Index particle) {
+    std::vector<Index> rows;
+    for (int a = 0; a < D; ++a) rows.push_back(particle * D + a);
+    return rows;
+  };
+  const Index centre = particleAt<D>(particles, Vec<D>::Zero(), spacing);
+  const Index next = particleAt<D>(particles, nextAlongX<D>(spacing), spacing);
+  std::vector<Index> rows = rowsOf(centre);
+  for (Index r : rowsOf(next)) rows.push_back(r);
+  const Eigen::MatrixXd A = restOperatorRows(system, 0, rest, velocities, rows);
+
+  auto stencilOf = [&](Index particle, Index firstRow) {
+    LatticeStencil<D> stencil;
+    stencil.components = D;
+    const Real largest = A.middleRows(firstRow, D).cwiseAbs().maxCoeff();
+    for (Index b = 0; b < particles.physicalCount(); ++b) {
+      Eigen::MatrixXd g = A.block(firstRow, b * D, D, D);
+      // The rest operator is a finite difference: entries below its noise are not couplings.
+      if (g.cwiseAbs().maxCoeff() <= 1e-9 * largest) continue;
+      stencil.offsets.push_back(particles.position(b) - particles.position(particle));
+      stencil.blocks.push_back(std::move(g));
+    }
+    return stencil;
+  };
+  result.acceleration = stencilOf(centre, 0);
+  result.translationDifference = stencilDifference(result.acceleration, stencilOf(next, D), 1e-9 * spacing);
+  return result;
+}
+
+#define MFWAVE_METHOD_LATTICE_STENCILS(D)                                                                       \
+  template MethodLatticeStencil<D> finiteDifferenceInteriorStencil<D>(Real, Real);                              \
+  template MethodLatticeStencil<D> collocationInteriorStencil<D>(CollocationBasis, int, Real, const Material&,  \
+                                                                 Real, int);                                    \
+  template MethodLatticeStencil<D> updatedLagrangianSphInteriorStencil<D>(UpdatedLagrangianSphOptions, Real);
+MFWAVE_METHOD_LATTICE_STENCILS(1)
+MFWAVE_METHOD_LATTICE_STENCILS(2)
+MFWAVE_METHOD_LATTICE_STENCILS(3)
+#undef MFWAVE_METHOD_LATTICE_STENCILS
+
+}  // namespace mfwave
