@@ -98,24 +98,26 @@ void DispersionSpectrum<D>::transform(const LatticeStencil<D>& stencil, Real sig
   const auto n = static_cast<std::size_t>(points_);
   planes.assign(static_cast<std::size_t>(c * c), ComplexVector(n, 0));
   for (auto& axis : derivatives) axis.assign(static_cast<std::size_t>(c * c), ComplexVector(n, 0));
-  const SparseMatrix matrix = periodicMatrix(stencil, spacing_, cells_);
+  // The response to a unit impulse in component q at node 0: row a of the periodic operator reads
+  // G_b at node a + r_b, so the impulse reaches node a = -r_b with block column G_b(:, q). Placing
+  // the blocks there is the same as a column of periodicMatrix without forming N^D rows.
+  const auto steps = latticeSteps(stencil, spacing_);
   const std::complex<Real> i(0, 1);
-  for (int q = 0; q < c; ++q)
-    for (SparseMatrix::InnerIterator it(matrix, q); it; ++it) {
-      const Index row = it.row();
-      const auto node = static_cast<std::size_t>(row / c);
-      const int p = static_cast<int>(row % c);
-      const auto plane = static_cast<std::size_t>(p * c + q);
-      planes[plane][node] += sign * it.value();
-      // The node's offset from the impulse, nearest periodic image (the stencil reaches < N/2).
-      Index rest = static_cast<Index>(node);
-      for (int d = 0; d < D; ++d) {
-        int coordinate = static_cast<int>(rest % cells_);
-        rest /= cells_;
-        if (coordinate > cells_ / 2) coordinate -= cells_;
-        derivatives[static_cast<std::size_t>(d)][plane][node] += -sign * i * (coordinate * spacing_) * it.value();
+  for (std::size_t b = 0; b < steps.size(); ++b) {
+    std::array<int, D> at{};
+    for (int d = 0; d < D; ++d) at[static_cast<std::size_t>(d)] = -steps[b][static_cast<std::size_t>(d)];
+    const auto node = static_cast<std::size_t>(periodicNode<D>(at, cells_));
+    for (int p = 0; p < c; ++p)
+      for (int q = 0; q < c; ++q) {
+        const Real g = stencil.blocks[b](p, q);
+        const auto plane = static_cast<std::size_t>(p * c + q);
+        planes[plane][node] += sign * g;
+        // x = -r_b is the nearest periodic image of the node (the stencil reaches < N/2).
+        for (int d = 0; d < D; ++d)
+          derivatives[static_cast<std::size_t>(d)][plane][node] +=
+              -sign * i * (at[static_cast<std::size_t>(d)] * spacing_) * g;
       }
-    }
+  }
   for (auto& plane : planes) forwardFourierTransform(plane, D, cells_);
   for (auto& axis : derivatives)
     for (auto& plane : axis) forwardFourierTransform(plane, D, cells_);
