@@ -22,9 +22,9 @@ def finish_axes(axes):
 
 
 def read_table(path):
-    """A CSV file with a header as a list of {column: text} rows."""
+    """A CSV file with a header as a list of {column: text} rows; lines starting with # are comments."""
     with open(path) as f:
-        return list(csv.DictReader(f))
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
 
 
 def read_columns(path):
