@@ -188,6 +188,12 @@ void study(const Settings& s, Outputs& out) {
                                                           : std::nan("");
     const bool stable = extremes.smallestOmegaSquared >= -1e-10 * extremes.largestOmegaSquared &&
                         extremes.largestImaginaryRatio < 1e-10;
+    if (!stable) {
+      std::ostringstream where;
+      where << "(" << (extremes.smallestAt * s.spacing).transpose() << ")";
+      std::cout << "  " << method << " " << D << "-D: omega^2 reaches " << num(extremes.smallestOmegaSquared / extremes.largestOmegaSquared, 3)
+                << " of its largest value at k dx = " << where.str() << '\n';
+    }
     const bool scalar = op.components() == 1;
     for (Polarisation pol : polarisations) {
       if (scalar && pol == Polarisation::S) continue;

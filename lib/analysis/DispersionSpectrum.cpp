@@ -232,30 +232,58 @@ std::vector<LatticeMode> DispersionSpectrum<D>::modes(const std::array<int, D>& 
 
 template <int D>
 typename DispersionSpectrum<D>::Extremes DispersionSpectrum<D>::extremes() const {
-  Real largest = -std::numeric_limits<Real>::infinity(), smallest = std::numeric_limits<Real>::infinity();
+  Extremes result;
+  result.largestOmegaSquared = -std::numeric_limits<Real>::infinity();
+  result.smallestOmegaSquared = std::numeric_limits<Real>::infinity();
   Real imaginary = 0, modulus = 0;
+  long smallestAt = 0;
   const auto total = static_cast<long>(points_);
-#pragma omp parallel for reduction(max : largest, imaginary, modulus) reduction(min : smallest) schedule(static)
-  for (long at = 0; at < total; ++at) {
-    std::array<int, D> m{};
-    long rest = at;
-    for (int d = 0; d < D; ++d) {
-      m[static_cast<std::size_t>(d)] = static_cast<int>(rest % cells_);
-      rest /= cells_;
+#pragma omp parallel
+  {
+    Real largest = -std::numeric_limits<Real>::infinity(), smallest = std::numeric_limits<Real>::infinity();
+    Real localImaginary = 0, localModulus = 0;
+    long localAt = 0;
+#pragma omp for schedule(static) nowait
+    for (long at = 0; at < total; ++at) {
+      std::array<int, D> m{};
+      long rest = at;
+      for (int d = 0; d < D; ++d) {
+        m[static_cast<std::size_t>(d)] = static_cast<int>(rest % cells_);
+        rest /= cells_;
+      }
+      Eigen::MatrixXcd T = symbol(m);
+      if (!lumped_) T = massSymbol(m).partialPivLu().solve(T);
+      const Eigen::VectorXcd values = decompose(T).values;
+      for (Index b = 0; b < values.size(); ++b) {
+        largest = std::max(largest, values(b).real());
+        if (values(b).real() < smallest) {
+          smallest = values(b).real();
+          localAt = at;
+        }
+        localImaginary = std::max(localImaginary, std::abs(values(b).imag()));
+        localModulus = std::max(localModulus, std::abs(values(b)));
+      }
     }
-    Eigen::MatrixXcd T = symbol(m);
-    if (!lumped_) T = massSymbol(m).partialPivLu().solve(T);
-    const Eigen::VectorXcd values = decompose(T).values;
-    for (Index b = 0; b < values.size(); ++b) {
-      largest = std::max(largest, values(b).real());
-      smallest = std::min(smallest, values(b).real());
-      imaginary = std::max(imaginary, std::abs(values(b).imag()));
-      modulus = std::max(modulus, std::abs(values(b)));
+#pragma omp critical(mfwave_spectrum_extremes)
+    {
+      result.largestOmegaSquared = std::max(result.largestOmegaSquared, largest);
+      // The first grid point of the smallest value, whatever the thread count.
+      if (smallest < result.smallestOmegaSquared ||
+          (smallest == result.smallestOmegaSquared && localAt < smallestAt)) {
+        result.smallestOmegaSquared = smallest;
+        smallestAt = localAt;
+      }
+      imaginary = std::max(imaginary, localImaginary);
+      modulus = std::max(modulus, localModulus);
     }
   }
-  Extremes result;
-  result.largestOmegaSquared = largest;
-  result.smallestOmegaSquared = smallest;
+  long rest = smallestAt;
+  std::array<int, D> m{};
+  for (int d = 0; d < D; ++d) {
+    m[static_cast<std::size_t>(d)] = static_cast<int>(rest % cells_);
+    rest /= cells_;
+  }
+  result.smallestAt = wavevector(m);
   result.largestImaginaryRatio = modulus > 0 ? imaginary / modulus : 0;
   return result;
 }

@@ -69,6 +69,7 @@ class DispersionSpectrum {
   struct Extremes {
     Real largestOmegaSquared = 0;
     Real smallestOmegaSquared = 0;
+    Vec<D> smallestAt = Vec<D>::Zero();  // the wavevector where omega^2 is smallest (first on ties)
     Real largestImaginaryRatio = 0;
   };
   Extremes extremes() const;
