@@ -2,12 +2,20 @@
 // strong-form collocation needs them) in 2-D and 3-D for orders m = 1..3, on a perturbed lattice
 // with support radius a = (m + 1.5) dx, the radius the unit tests use. One ShapeFunctionValues is
 // reused, as in an assembly loop.
+//
+// ExplicitStep2d: one central-difference step of explicit RK collocation on the unit square
+// (plane strain, order 2, a = 2.5 h, displacement rows on the edge), 1e4 and 1e5 nodes: a sparse
+// LU solve with C and a product with A_I per step (ConstrainedCollocationSystem). The LU solve is
+// serial (UMFPACK), so the thread count is not an argument.
 
 #include <benchmark/benchmark.h>
 
 #include <random>
 #include <vector>
 
+#include "integrators/CentralDifference.hpp"
+#include "methods/collocation/CollocationSystem.hpp"
+#include "methods/collocation/ConstrainedCollocationSystem.hpp"
 #include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
 
 namespace {
@@ -56,8 +64,43 @@ void rkEvaluationWithHessians(benchmark::State& state) {
       neighbours / static_cast<double>(state.iterations() * static_cast<std::int64_t>(points.size())));
 }
 
+void ExplicitStep2d(benchmark::State& state) {
+  const int cells = static_cast<int>(state.range(0));
+  const Real h = 1.0 / cells;
+  Coordinates<2> nodes;
+  mfwave::CollocationPoints<2> points;
+  for (int j = 0; j <= cells; ++j)
+    for (int i = 0; i <= cells; ++i) {
+      const mfwave::Vec2 x(i * h, j * h);
+      nodes[0].push_back(x[0]);
+      nodes[1].push_back(x[1]);
+      const bool edge = i == 0 || j == 0 || i == cells || j == cells;
+      points.add(x, edge ? mfwave::CollocationRowKind::Displacement : mfwave::CollocationRowKind::Interior);
+    }
+  const mfwave::Material material = mfwave::Material::fromLame(1, 1, 1);
+  const mfwave::ReproducingKernelShapeFunctions<2> shapes(nodes, 2, 2.5 * h);
+  mfwave::ConstrainedCollocationSystem system(
+      mfwave::assembleCollocation<2>(shapes, points, material, mfwave::CollocationLoads<2>{}));
+  mfwave::Vector u0 = mfwave::Vector::Random(system.size()) * 1e-3, v0 = mfwave::Vector::Zero(system.size());
+  mfwave::CentralDifference integrator;
+  integrator.initialise(system, 0, u0, v0, 0.1 * h);  // well inside the limit (0.5 h / c_p at this support)
+  for (auto _ : state) {
+    integrator.step();
+    benchmark::DoNotOptimize(integrator.state().displacement.data());
+  }
+  const double n = static_cast<double>(nodes[0].size());
+  state.counters["particles"] = n;
+  state.counters["particle_steps/s"] = benchmark::Counter(n * static_cast<double>(state.iterations()),
+                                                          benchmark::Counter::kIsRate);
+  // The matrices the step streams (12 bytes per stored entry): A_I and C; the LU factors of C,
+  // which the solve also streams, are not visible here and come on top.
+  state.counters["matrix_bytes_per_particle"] =
+      12.0 * static_cast<double>(system.interiorOperator().nonZeros() + system.constraintMatrix().nonZeros()) / n;
+}
+
 }  // namespace
 
+BENCHMARK(ExplicitStep2d)->Arg(100)->Arg(316)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_TEMPLATE(rkEvaluationWithHessians, 2)->DenseRange(1, 3)->ArgName("order");
 BENCHMARK_TEMPLATE(rkEvaluationWithHessians, 3)->DenseRange(1, 3)->ArgName("order");
 

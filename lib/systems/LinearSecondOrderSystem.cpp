@@ -58,12 +58,35 @@ void LinearSecondOrderSystem::acceleration(Real t, Eigen::Ref<const Vector> u, E
   if (inverseMassDiagonal_.size() == 0)
     throw InputError("mass", "explicit integration needs a diagonal (lumped) mass matrix with positive entries");
   force(t, work_);
-  work_.noalias() -= stiffness_ * u;
+  subtractStiffnessProduct(u, work_);
   if (hasDamping()) work_.noalias() -= damping_ * v;
   a.noalias() = inverseMassDiagonal_.cwiseProduct(work_);
 }
 
 Real LinearSecondOrderSystem::kineticEnergy(const Vector& v) const { return 0.5 * v.dot(mass_ * v); }
+void LinearSecondOrderSystem::subtractStiffnessProduct(Eigen::Ref<const Vector> u, Vector& out) {
+  // Row-major rows are independent dot products: one thread per block of rows, each row summed in
+  // the same order whatever the thread count, so the result is bitwise the same on 1 or 16 threads
+  // (a column-major product scatters into shared rows and cannot be split that way). The copy is
+  // made on the first explicit step, so implicit integrators never pay for it.
+  if (stiffnessRows_.rows() != stiffness_.rows() || stiffnessRows_.nonZeros() != stiffness_.nonZeros()) {
+    stiffnessRows_ = stiffness_;
+    stiffnessRows_.makeCompressed();
+  }
+  const auto rows = static_cast<long>(stiffnessRows_.rows());
+  const int* outer = stiffnessRows_.outerIndexPtr();
+  const int* inner = stiffnessRows_.innerIndexPtr();
+  const Real* values = stiffnessRows_.valuePtr();
+  const Real* x = u.data();
+  Real* y = out.data();
+#pragma omp parallel for schedule(static) if (stiffnessRows_.nonZeros() > 100000)
+  for (long r = 0; r < rows; ++r) {
+    Real sum = 0;
+    for (int k = outer[r]; k < outer[r + 1]; ++k) sum += values[k] * x[inner[k]];
+    y[r] -= sum;
+  }
+}
+
 Real LinearSecondOrderSystem::strainEnergy(const Vector& u) const { return 0.5 * u.dot(stiffness_ * u); }
 
 }  // namespace mfwave

@@ -44,10 +44,13 @@ class LinearSecondOrderSystem : public SecondOrderSystem {
  private:
   // Takes the storage of `damping` (left empty) after checking its size.
   void adoptDamping(SparseMatrix& damping);
+  // out -= K u, OpenMP-parallel over rows of a row-major copy of K (bitwise thread-independent).
+  void subtractStiffnessProduct(Eigen::Ref<const Vector> u, Vector& out);
 
   SparseMatrix mass_;
   SparseMatrix damping_;
   SparseMatrix stiffness_;
+  Eigen::SparseMatrix<Real, Eigen::RowMajor, int> stiffnessRows_;  // for explicit steps; built on first use
   ForceFunction force_;
   Vector inverseMassDiagonal_;  // empty when M is not diagonal
   Vector work_;

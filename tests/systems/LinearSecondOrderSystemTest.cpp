@@ -2,6 +2,10 @@
 #include "systems/LinearSecondOrderSystem.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
+
+#include <random>
+#include <vector>
 
 using namespace mfwave;
 
@@ -92,4 +96,29 @@ TEST(LinearSecondOrderSystem, DampingAttachedLaterActsOnTheVelocity) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "damping");
   }
+}
+
+TEST(LinearSecondOrderSystem, AccelerationIsBitwiseTheSameOnOneAndTwoThreads) {
+  // A random sparse K large enough (2e5 entries) for the parallel row loop, against Eigen's product.
+  const Index n = 20000;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<Real> value(-1, 1);
+  std::uniform_int_distribution<Index> column(0, n - 1);
+  std::vector<Eigen::Triplet<Real>> entries;
+  for (Index r = 0; r < n; ++r)
+    for (int k = 0; k < 11; ++k) entries.emplace_back(r, column(random), value(random));
+  SparseMatrix K(n, n), M(n, n);
+  K.setFromTriplets(entries.begin(), entries.end());
+  M.setIdentity();
+  Vector u(n), v = Vector::Zero(n);
+  for (Index i = 0; i < n; ++i) u(i) = value(random);
+  LinearSecondOrderSystem system(M, SparseMatrix(), K);
+  Vector one(n), two(n);
+  omp_set_num_threads(1);
+  system.acceleration(0, u, v, one);
+  omp_set_num_threads(2);
+  system.acceleration(0, u, v, two);
+  EXPECT_EQ((one - two).cwiseAbs().maxCoeff(), 0.0);
+  const Vector reference = -(K * u);
+  EXPECT_LT((one - reference).cwiseAbs().maxCoeff(), 1e-13);
 }
