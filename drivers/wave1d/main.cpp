@@ -65,7 +65,7 @@ struct Study {
 struct CaseResult {
   std::string integrator;
   int cells;
-  Real dx, dt;
+  Real dx, dt, criticalDt;
   long steps;
   Real error;
   Real energyDrift;
@@ -98,7 +98,8 @@ CaseResult runCase(const Study& study, const std::string& integratorName, int ce
   }
   // integrator: the step is integrator.cfl times the stable central-difference step (the
   // Gershgorin bound, exact for this operator: dx / c), shortened to land on the end time.
-  const Real dt = scene.integrator.timeStepFor(centralDifferenceSafeStep(system));
+  const Real criticalDt = centralDifferenceSafeStep(system);
+  const Real dt = scene.integrator.timeStepFor(criticalDt);
   IntegratorOptions options = scene.integrator.options;
   auto integrator = makeSecondOrderIntegrator(integratorName, options);
   integrator->initialise(system, 0, u0, v0, dt);
@@ -127,7 +128,7 @@ CaseResult runCase(const Study& study, const std::string& integratorName, int ce
     probes.series().writeCsv(stem + "-probe.csv");
     energy.series().writeCsv(stem + "-energy.csv");
   }
-  return {integratorName, cellCount, dx, dt, stats.steps, std::sqrt(errorSquared / normSquared),
+  return {integratorName, cellCount, dx, dt, criticalDt, stats.steps, std::sqrt(errorSquared / normSquared),
           energy.maxRelativeDrift(), stats.wallSeconds};
 }
 
@@ -206,6 +207,10 @@ int main(int argc, char** argv) {
       }
     }
     table.commit();
+    // The last case's step and the stable central-difference step it is a fraction of, so that a
+    // one-case run (the tradeoff sweep's) reports both.
+    summary.timeStep = results.back().dt;
+    summary.figures.push_back({"critical_dt_last", results.back().criticalDt});
     summary.simulatedTime = study.scene.integrator.endTime;
     summary.notes.push_back("particles: the finest line; steps and wall time: summed over all cases");
     summary.files = {"scene.resolved.toml", "convergence.csv", "summary.json"};

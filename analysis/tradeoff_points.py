@@ -1,0 +1,177 @@
+"""The configurations of the speed-accuracy sweep (analysis/tradeoff.py).
+
+A Point is one driver process pinned to one configuration: one problem, one resolution, one
+kernel and support, one integrator, one time-step fraction. Everything else in the problem's scene
+keeps the value of its file in data/scenes/, so a point can be rerun by hand from its `command`.
+"""
+from dataclasses import dataclass
+
+# What each problem's error is, as the driver computes it (the CSV's error_measure column).
+ERROR_MEASURES = {
+    "standing_wave_1d": "relative L2 of u at T over the particles (norm of the mode shape)",
+    "bar_fixed_free_1d": "relative L2 of u at T on 2001 points",
+    "manufactured_2d": "relative L2 of u at T on a 4x finer grid",
+    "bar_impact_1d": "relative L1 of v at T over the particles",
+    "lamb_3d": "relative L2 of v_z over 0-6 s, worse of the centre and receiver probes",
+}
+
+
+@dataclass(frozen=True)
+class Point:
+    problem: str          # a key of ERROR_MEASURES
+    method: str           # the legend entry: FD, RKCM, RBCM, UL-SPH, VW-SPH ...
+    driver: str           # executable under <build>/drivers/
+    scene: str            # file under data/scenes/
+    resolution: str       # "cells=64", "nodes=161", "dx=0.0025": the driver's own resolution knob
+    kernel: str           # "-" when the method has none (the finite-difference stencil)
+    support: str          # RK: a/h; RBF: shape a_r/h; SPH: h/dx; "-" when none
+    integrator: str
+    dt_fraction: float    # integrator.cfl: the fraction of the driver's stable step
+    sets: tuple = ()      # --set overrides that pin the configuration
+    drop: tuple = ()      # dotted scene keys removed from the scene file (those --set cannot unset)
+
+    @property
+    def config_id(self):
+        """A stable key: the resume logic finds finished points by it, so never reorder it."""
+        return "|".join([self.problem, self.method, self.resolution, self.kernel, self.support,
+                         self.integrator, f"{self.dt_fraction:g}"])
+
+
+def wave1d(cells, integrator="central_difference", cfl=0.5):
+    return Point("standing_wave_1d", "FD", "wave1d", "wave1d.toml", f"cells={cells}", "-", "-",
+                 integrator, cfl,
+                 (f"study.cells=[{cells}]", f'study.integrators=["{integrator}"]', f"integrator.cfl={cfl}"))
+
+
+def bar1d_rk(nodes, order=2, ratio=3.3, integrator="central_difference", cfl=0.5):
+    return Point("bar_fixed_free_1d", "RKCM", "bar1d", "bar1d.toml", f"nodes={nodes}",
+                 f"cubic_b_spline_m{order}", f"{ratio:g}", integrator, cfl,
+                 (f"study.nodes=[{nodes}]", f"method.order={order}", f"method.support_ratio={ratio}",
+                  f"integrator.name={integrator}", f"integrator.cfl={cfl}"))
+
+
+def bar1d_rb(nodes, basis="inverse_multiquadric", shape=3.0, integrator="central_difference", cfl=0.5):
+    return Point("bar_fixed_free_1d", "RBCM", "bar1d", "bar1d.toml", f"nodes={nodes}", basis, f"{shape:g}",
+                 integrator, cfl,
+                 (f"study.nodes=[{nodes}]", "method.name=radial_basis", f"method.basis={basis}",
+                  f"method.shape_ratio={shape}", f"integrator.name={integrator}", f"integrator.cfl={cfl}"),
+                 drop=("method.order", "method.support_ratio"))
+
+
+def plane2d(cells, order=2, ratio=2.5, integrator="central_difference", cfl=0.5):
+    return Point("manufactured_2d", "RKCM", "plane2d", "plane2d.toml", f"cells={cells}",
+                 f"cubic_b_spline_m{order}", f"{ratio:g}", integrator, cfl,
+                 (f"study.cells=[{cells}]", f"method.order={order}", f"method.support_ratio={ratio}",
+                  f"integrator.name={integrator}", f"integrator.cfl={cfl}"))
+
+
+def bar1d_sph(per_bar, kernel="cubic_spline", ratio=2.0, integrator="leapfrog", cfl=1.0):
+    # dx = 1 / per_bar divides each bar exactly, so the driver does not adjust it.
+    dx = 1.0 / per_bar
+    return Point("bar_impact_1d", "UL-SPH", "bar1d-sph", "bar1d-sph.toml", f"dx={dx:g}", kernel, f"{ratio:g}",
+                 integrator, cfl,
+                 (f"study.spacings=[{dx!r}]", f"geometry.spacing={dx!r}", "output.vtk=false",
+                  f"method.kernel={kernel}", f"method.smoothing_length_ratio={ratio}",
+                  f"integrator.name={integrator}", f"integrator.cfl={cfl}"))
+
+
+def lamb3d(dx, variant="consistent", kernel="cubic_spline", ratio=1.0, cfl=0.5):
+    sets = [f"geometry.spacing={dx}", f"study.spacings=[{dx}]", "output.vtk=false",
+            "study.compare_published=false", "study.strong_smoothing_rate=0", "study.kernel_floor=false",
+            f"method.kernel={kernel}", f"method.smoothing_length_ratio={ratio}", f"integrator.cfl={cfl}"]
+    if variant == "consistent":
+        # The study's filter rate, 0.25 c_s / dx (0.5 at dx = 0.5): given here at this run's spacing.
+        sets.append(f"method.smoothing_rate={0.25 / dx:g}")
+    else:
+        # The scheme as printed with the paper's settings: what the lamb3d driver's published_<dx> cases use.
+        sets += ["method.variant=published", "method.smoothing_rate=0.77", "method.smoothing_order=1",
+                 "method.smoothing_rate_scales_with_spacing=false", "method.deconvolution=true"]
+    return Point("lamb_3d", f"VW-SPH {variant}", "lamb3d", "lamb3d.toml", f"dx={dx:g}", kernel, f"{ratio:g}",
+                 "central_difference", cfl, tuple(sets),
+                 drop=("study.free_block_lower", "study.free_block_upper"))
+
+
+def _dedupe(points):
+    seen, unique = set(), []
+    for p in points:
+        if p.config_id not in seen:
+            seen.add(p.config_id)
+            unique.append(p)
+    return unique
+
+
+def default_sweep():
+    """116 points, about 2 minutes on 2 idle cores (each lamb3d point at dx = 0.125 takes 30-60 s)."""
+    pts = []
+    # Standing wave, finite differences: every integrator over resolutions, then step fractions
+    # (1.0 is the 1-D "magic" step of central differences; 1.05 is above the limit and fails).
+    for integ in ("central_difference", "leapfrog", "newmark", "arkode"):
+        pts += [wave1d(c, integ) for c in (32, 64, 128, 256, 512, 1024, 2048)]
+    pts += [wave1d(c, cfl=f) for f in (0.25, 0.9, 1.0, 1.05) for c in (64, 256, 1024)]
+    # Fixed-free bar, RK collocation: resolutions, supports, order, Newmark, fractions.
+    pts += [bar1d_rk(n) for n in (21, 41, 81, 161, 321, 641, 1281)]
+    pts += [bar1d_rk(n, ratio=r) for r in (2.5, 4.3) for n in (41, 161)]
+    pts += [bar1d_rk(n, order=3) for n in (41, 161)]
+    pts += [bar1d_rk(n, integrator="newmark") for n in (41, 161, 641)]
+    pts += [bar1d_rk(161, cfl=f) for f in (0.25, 0.9, 1.05)]
+    # Manufactured plane-strain solution, RK collocation (a/h = 3.0 is the unstable support).
+    pts += [plane2d(c) for c in (8, 12, 16, 24, 32, 48)]
+    pts += [plane2d(c, ratio=2.2) for c in (16, 32)]
+    pts += [plane2d(c, integrator="newmark") for c in (16, 32)]
+    pts += [plane2d(c, cfl=0.9) for c in (16, 32)]
+    pts += [plane2d(16, ratio=3.0)]
+    # Two bars meeting, updated-Lagrangian SPH: resolutions, kernels, h/dx, integrators, fractions
+    # (a factor on the method's own step criteria, which carry a Courant number of 0.3).
+    pts += [bar1d_sph(n) for n in (25, 50, 100, 200, 400, 800, 1600)]
+    pts += [bar1d_sph(n, kernel=k) for k in ("quintic_spline", "wendland_c2", "wendland_c4", "gaussian")
+            for n in (400, 1600)]
+    pts += [bar1d_sph(n, ratio=r) for r in (1.3, 3.0) for n in (400, 1600)]
+    pts += [bar1d_sph(n, integrator=i) for i in ("forward_euler", "predictor_corrector", "arkode")
+            for n in (400, 1600)]
+    pts += [bar1d_sph(n, cfl=f) for f in (0.5, 3.0, 6.0, 8.0) for n in (400, 1600)]
+    # 3-D Lamb problem, very weak form SPH (the largest first, so it is not the straggler).
+    pts = [lamb3d(0.125), lamb3d(0.125, kernel="wendland_c2"), lamb3d(0.125, variant="published")] + pts
+    pts += [lamb3d(dx) for dx in (0.5, 0.25)]
+    pts += [lamb3d(dx, variant="published") for dx in (0.5, 0.25)]
+    pts += [lamb3d(dx, kernel="wendland_c2") for dx in (0.5, 0.25)]
+    pts += [lamb3d(dx, cfl=0.9) for dx in (0.5, 0.25)]
+    return _dedupe(pts)
+
+
+def full_sweep():
+    """The default points and 160 more: finer resolutions, more kernels and fractions (about 10 minutes on 2 cores)."""
+    pts = default_sweep()
+    for integ in ("central_difference", "leapfrog", "newmark", "arkode"):
+        pts += [wave1d(c, integ) for c in (4096, 8192)]
+    pts += [wave1d(c, cfl=f) for f in (0.1, 0.25, 0.75, 0.9, 1.0) for c in (32, 128, 512, 2048, 8192)]
+    pts += [bar1d_rk(n) for n in (2561,)]
+    pts += [bar1d_rk(n, ratio=r) for r in (2.5, 4.3, 5.3) for n in (21, 81, 321, 641)]
+    pts += [bar1d_rk(n, order=3) for n in (21, 81, 321, 641)]
+    pts += [bar1d_rk(n, integrator="newmark") for n in (21, 81, 321, 1281)]
+    pts += [bar1d_rk(n, cfl=f) for f in (0.25, 0.75, 0.9) for n in (41, 641)]
+    pts += [bar1d_rb(n) for n in (21, 41, 81)]
+    pts += [bar1d_rb(n, shape=s) for s in (1.0, 6.0) for n in (21, 41)]
+    pts += [plane2d(c) for c in (64,)]
+    pts += [plane2d(c, ratio=2.2) for c in (8, 12, 24, 48)]
+    pts += [plane2d(c, order=3, ratio=3.3) for c in (8, 16, 32)]
+    pts += [plane2d(c, integrator="newmark") for c in (8, 24, 48)]
+    pts += [plane2d(c, cfl=f) for f in (0.25, 0.75, 0.9) for c in (8, 24, 48)]
+    pts += [bar1d_sph(n) for n in (3200, 6400)]
+    pts += [bar1d_sph(n, kernel=k) for k in ("quintic_spline", "wendland_c2", "wendland_c4", "gaussian")
+            for n in (100, 200, 800, 3200)]
+    pts += [bar1d_sph(n, ratio=r) for r in (1.3, 1.5, 2.5, 3.0) for n in (100, 200, 800, 3200)]
+    pts += [bar1d_sph(n, integrator=i) for i in ("forward_euler", "predictor_corrector", "arkode")
+            for n in (100, 200, 800, 3200)]
+    pts += [bar1d_sph(n, cfl=f) for f in (0.5, 2.0, 3.0, 4.0, 6.0) for n in (100, 200, 800, 3200)]
+    pts += [lamb3d(0.5, kernel="quintic_spline"), lamb3d(0.5, kernel="wendland_c2", ratio=1.3)]
+    pts += [lamb3d(dx, cfl=f) for f in (0.25, 0.75) for dx in (0.5, 0.25)] + [lamb3d(0.125, cfl=0.9)]
+    return _dedupe(pts)
+
+
+def smoke_sweep():
+    """Four points in well under a second each, for the ctest check of the tool itself: three
+    resolutions of one method (the error must fall) and one step above the stability limit."""
+    return [wave1d(c) for c in (16, 32, 64)] + [wave1d(32, cfl=1.2)]
+
+
+SWEEPS = {"default": default_sweep, "full": full_sweep, "smoke": smoke_sweep}
