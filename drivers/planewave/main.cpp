@@ -1,0 +1,282 @@
+// planewave: a plane P or S wave in a periodic box, for the linear methods (finite differences,
+// very weak SPH published and consistent, RK collocation), against the exact solution
+// u = U e cos(k . x - omega t). The operator is the method's interior row repeated on the periodic
+// lattice (lib/analysis/PeriodicLattice.hpp), assembled once as a sparse matrix, so the box has no
+// boundary and the error is the method's and the integrator's dispersion alone. The step is a
+// fraction of the central-difference limit 2 / omega_max of the whole discrete spectrum (FFT,
+// DispersionSpectrum). One of the speed-accuracy sweep's reference problems
+// (docs/studies/tradeoff.md).
+//
+//   planewave [--scene data/scenes/planewave.toml] [--set study.cells=64] [--out DIR]
+
+#include "analysis/DispersionSpectrum.hpp"
+#include "analysis/MethodLatticeStencils.hpp"
+#include "analysis/VeryWeakSphDispersion.hpp"
+#include "analytic/PlaneWave.hpp"
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "integrators/IntegratorFactory.hpp"
+#include "io/run/DriverCommandLine.hpp"
+#include "io/run/RunDriver.hpp"
+#include "io/run/RunSummary.hpp"
+#include "io/run/SceneDriver.hpp"
+#include "io/scene/LoadScene.hpp"
+#include "kernels/KernelFactory.hpp"
+#include "systems/LinearSecondOrderSystem.hpp"
+
+#include <Eigen/SparseLU>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <string>
+
+using namespace mfwave;
+
+namespace {
+
+const char* kProgram = "planewave";
+constexpr Real kPi = 3.14159265358979323846;
+
+SceneSchema planeWaveSchema() {
+  SceneSchema schema;
+  schema.add("study", ValueType::Table).describedAs("the plane-wave study (every key has a default)");
+  schema.add("study.dimension", ValueType::Integer).withUnit("-").defaultsTo("2").between(1, 3).describedAs(
+      "dimension of the periodic box");
+  schema.add("study.method", ValueType::String).defaultsTo("\"vwsph_consistent\"")
+      .oneOf({"finite_difference", "vwsph_published", "vwsph_consistent", "rkcm"})
+      .describedAs("method (rkcm has a consistent mass: newmark only)");
+  schema.add("study.cells", ValueType::Integer).withUnit("-").defaultsTo("32").atLeast(8).describedAs(
+      "lattice nodes per axis (even); dx = 1 / cells, the box is the unit cube");
+  schema.add("study.wavelengths", ValueType::Integer).withUnit("-").defaultsTo("2").atLeast(1).describedAs(
+      "whole wavelengths across the box along x (and along y, z on the diagonal)");
+  schema.add("study.direction", ValueType::String).defaultsTo("\"axis\"").oneOf({"axis", "diagonal"})
+      .describedAs("propagation along x or along the lattice diagonal");
+  schema.add("study.polarisation", ValueType::String).defaultsTo("\"P\"").oneOf({"P", "S"}).describedAs(
+      "P (along k) or S (normal to k; not in 1-D or for the scalar finite difference)");
+  schema.add("study.periods", ValueType::Number).withUnit("-").defaultsTo("2.0").positive().describedAs(
+      "simulated time in periods of the exact wave");
+  schema.add("study.lambda", ValueType::Number).withUnit("Pa").defaultsTo("1.0").atLeast(0).describedAs("Lame lambda");
+  schema.add("study.mu", ValueType::Number).withUnit("Pa").defaultsTo("1.0").positive().describedAs("shear modulus");
+  schema.add("study.density", ValueType::Number).withUnit("kg/m^3").defaultsTo("1.0").positive().describedAs("density");
+  schema.add("study.kernel", ValueType::String).defaultsTo("\"cubic_spline\"").oneOf(kernelNames()).describedAs(
+      "very weak SPH kernel");
+  schema.add("study.smoothing_length_ratio", ValueType::Number).withUnit("-").defaultsTo("1.3").positive()
+      .describedAs("very weak SPH h / dx");
+  schema.add("study.rk_order", ValueType::Integer).withUnit("-").defaultsTo("2").between(1, 3).describedAs(
+      "RK collocation basis order");
+  schema.add("study.rk_support_ratio", ValueType::Number).withUnit("-").defaultsTo("2.5").positive().describedAs(
+      "RK support a / dx");
+  schema.add("integrator", ValueType::Table).describedAs("time integration");
+  schema.add("integrator.name", ValueType::String).defaultsTo("\"central_difference\"")
+      .oneOf(secondOrderIntegratorNames()).describedAs("time integrator");
+  schema.add("integrator.cfl", ValueType::Number).withUnit("-").defaultsTo("0.5").positive().describedAs(
+      "step over the central-difference limit 2 / omega_max of the discrete spectrum (shortened to land on the end)");
+  schema.add("output", ValueType::Table).describedAs("where results go");
+  schema.add("output.folder", ValueType::String).defaultsTo("\"out/planewave\"").describedAs("output folder");
+  return schema;
+}
+
+struct Settings {
+  int dimension = 2;
+  std::string method, kernel, direction, polarisation, integrator;
+  int cells = 32, wavelengths = 2, rkOrder = 2;
+  Real periods = 2, ratio = 1.3, rkSupport = 2.5, cfl = 0.5;
+  Material material = Material::fromLame(1, 1, 1);
+};
+
+struct Outcome {
+  Index particles = 0;
+  long steps = 0;
+  Real dt = 0, criticalDt = 0, endTime = 0, error = 0, loopSeconds = 0, setupSeconds = 0;
+};
+
+template <int D>
+Outcome run(const Settings& s) {
+  const auto setupStart = std::chrono::steady_clock::now();
+  const Real dx = 1.0 / s.cells;
+  MethodLatticeStencil<D> stencil;
+  if (s.method == "finite_difference") {
+    stencil = finiteDifferenceInteriorStencil<D>(dx, s.material.pWaveSpeed());
+  } else if (s.method == "rkcm") {
+    stencil = collocationInteriorStencil<D>(CollocationBasis::ReproducingKernel, s.rkOrder, s.rkSupport, s.material, dx);
+  } else {
+    const auto variant = s.method == "vwsph_published" ? VeryWeakSphDispersionVariant::Published
+                                                       : VeryWeakSphDispersionVariant::Consistent;
+    stencil.acceleration = veryWeakSphInteriorStencil<D>(variant, s.kernel, s.ratio, s.material, dx).stencil;
+  }
+  const auto op = makePeriodicLatticeOperator<D>(stencil.acceleration, dx, s.cells, stencil.mass);
+  const int c = op.components();
+  if (c == 1 && s.polarisation == "S") throw InputError("study.polarisation", "the scalar finite difference has no S wave");
+  if (D == 1 && s.polarisation == "S") throw InputError("study.polarisation", "there is no S wave in 1-D");
+  if (!op.lumped() && s.integrator != "newmark")
+    throw InputError("integrator.name", "rkcm has a consistent mass; only newmark integrates it here");
+
+  const auto extremes = DispersionSpectrum<D>(op).extremes();
+  if (!(extremes.smallestOmegaSquared >= -1e-10 * extremes.largestOmegaSquared))
+    throw InputError("study.method", "the discrete spectrum has omega^2 < 0 (" +
+                                         std::to_string(extremes.smallestOmegaSquared / extremes.largestOmegaSquared) +
+                                         " of its largest value): unstable at any step; see docs/studies/spectra.md");
+  Outcome out;
+  out.criticalDt = 2 / std::sqrt(extremes.largestOmegaSquared);
+  // The limit is exact here (the whole spectrum is known), so a step beyond it is refused before
+  // any work: round-off would seed the growing modes and a short run could still look accurate.
+  if ((s.integrator == "central_difference" || s.integrator == "leapfrog") && s.cfl > 1)
+    throw InputError("integrator.cfl", std::to_string(s.cfl) + " is beyond the " + s.integrator +
+                                           " limit 2 / omega_max = " + std::to_string(out.criticalDt) +
+                                           " of this spectrum (cfl <= 1)");
+
+  const Vec<D> n = latticeDirectionVector<D>(parseLatticeDirection(s.direction, "study.direction"));
+  const Vec<D> k = (s.direction == "axis" ? 1.0 : std::sqrt(Real(D))) * 2 * kPi * s.wavelengths * n;
+  Vec<D> e = n;
+  if (s.polarisation == "S") {
+    e.setZero();
+    if constexpr (D == 2) e << -n(1), n(0);
+    if constexpr (D == 3) {
+      if (s.direction == "axis") e(1) = 1;
+      else e << 1 / std::sqrt(2.0), -1 / std::sqrt(2.0), 0;
+    }
+  }
+  const Real speed = s.polarisation == "P" ? s.material.pWaveSpeed() : s.material.sWaveSpeed();
+  const PlaneWave<D> wave(k, e, speed);
+  out.endTime = s.periods * wave.period();
+  out.steps = static_cast<long>(std::ceil(out.endTime / (s.cfl * out.criticalDt) - 1e-9));
+  out.dt = out.endTime / static_cast<Real>(out.steps);
+
+  // Nodal values of the exact field; collocation unknowns are coefficients d with M d = u.
+  const Index nodes = op.nodes();
+  out.particles = nodes;
+  auto nodal = [&](Real t, bool velocity) {
+    Vector values(op.size());
+    for (Index node = 0; node < nodes; ++node) {
+      Vec<D> x;
+      Index rest = node;
+      for (int d = 0; d < D; ++d) {
+        x(d) = static_cast<Real>(rest % s.cells) * dx;
+        rest /= s.cells;
+      }
+      const Vec<D> u = velocity ? wave.velocity(x, t) : wave.displacement(x, t);
+      if (c == 1)
+        values(node) = u.dot(e);
+      else
+        values.segment<D>(node * D) = u;
+    }
+    return values;
+  };
+  SparseMatrix mass(op.size(), op.size());
+  if (op.lumped())
+    mass.setIdentity();
+  else
+    mass = periodicMatrix(op.mass, dx, s.cells);
+  Vector u0 = nodal(0, false), v0 = nodal(0, true);
+  if (!op.lumped()) {
+    Eigen::SparseLU<SparseMatrix> lu(mass);
+    if (lu.info() != Eigen::Success) throw Error("planewave: the collocation mass matrix is singular on this lattice");
+    u0 = lu.solve(u0);
+    v0 = lu.solve(v0);
+  }
+  LinearSecondOrderSystem system(mass, SparseMatrix(), -periodicMatrix(op.acceleration, dx, s.cells));
+  auto integrator = makeSecondOrderIntegrator(s.integrator);
+  integrator->initialise(system, 0, u0, v0, out.dt);
+  const auto loopStart = std::chrono::steady_clock::now();
+  out.setupSeconds = std::chrono::duration<double>(loopStart - setupStart).count();
+  // A growing field stops the run at once: every 16 steps, anything non-finite or a thousand times
+  // the initial amplitude (the exact wave keeps its amplitude) is a blow-up.
+  const Real limit = 1e3 * std::max<Real>(u0.cwiseAbs().maxCoeff(), 1e-300);
+  for (long step = 1; step <= out.steps; ++step) {
+    integrator->step();
+    if (step % 16 != 0 && step != out.steps) continue;
+    const Vector& d = integrator->state().displacement;
+    Index worst = 0;
+    const Real largest = d.cwiseAbs().maxCoeff(&worst);
+    if (!std::isfinite(largest) || largest > limit)
+      throw InstabilityError("planewave: the field grew to " + std::to_string(largest) + " (initial amplitude " +
+                                 std::to_string(u0.cwiseAbs().maxCoeff()) + ") by step " + std::to_string(step) +
+                                 ", t = " + std::to_string(integrator->time()) + ", at node " +
+                                 std::to_string(worst / c) + ": the step is beyond the integrator's limit",
+                             step, integrator->time(), static_cast<long>(worst / c));
+  }
+  out.loopSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count();
+  const Vector& d = integrator->state().displacement;
+  const Vector u = op.lumped() ? Vector(d) : Vector(mass * d);
+  const Vector exact = nodal(out.endTime, false);
+  out.error = (u - exact).norm() / exact.norm();
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const SceneSchema schema = planeWaveSchema();
+  DriverCommandLine cli(kProgram,
+                        "planewave: a plane P or S wave in a periodic box by a linear method, against the exact "
+                        "solution. The scene is optional.",
+                        schema.describe(), false);
+  if (const auto exit = cli.parse(argc, argv)) return *exit;
+  return runDriver(kProgram, [&]() -> int {
+    const auto& opt = cli.options();
+    SceneReader reader = loadDriverScene(opt, schema);
+    Settings s;
+    s.dimension = static_cast<int>(reader.integer("study.dimension"));
+    s.method = reader.string("study.method");
+    s.cells = static_cast<int>(reader.integer("study.cells"));
+    if (s.cells % 2 != 0) reader.fail("study.cells", "must be even");
+    s.wavelengths = static_cast<int>(reader.integer("study.wavelengths"));
+    if (2 * s.wavelengths >= s.cells) reader.fail("study.wavelengths", "needs more than 2 nodes per wavelength");
+    s.direction = reader.string("study.direction");
+    s.polarisation = reader.string("study.polarisation");
+    s.periods = reader.number("study.periods");
+    s.material = Material::fromLame(reader.number("study.lambda"), reader.number("study.mu"),
+                                    reader.number("study.density"));
+    s.kernel = reader.string("study.kernel");
+    s.ratio = reader.number("study.smoothing_length_ratio");
+    s.rkOrder = static_cast<int>(reader.integer("study.rk_order"));
+    s.rkSupport = reader.number("study.rk_support_ratio");
+    s.integrator = reader.string("integrator.name");
+    s.cfl = reader.number("integrator.cfl");
+    const std::string sceneFolder = reader.string("output.folder");
+    reader.checkAllKeysRead();
+    const std::string folder = prepareOutputFolder(opt, sceneFolder, reader);
+    const auto wallStart = std::chrono::steady_clock::now();
+
+    Outcome out;
+    if (s.dimension == 1) out = run<1>(s);
+    else if (s.dimension == 2) out = run<2>(s);
+    else out = run<3>(s);
+
+    AtomicFile table(folder + "/planewave.csv");
+    table.stream() << std::setprecision(10)
+                   << "method,dimension,cells,particles,direction,polarisation,integrator,cfl,dt,critical_dt,steps,"
+                      "end_time,relative_l2_u,setup_s,loop_s\n"
+                   << s.method << ',' << s.dimension << ',' << s.cells << ',' << out.particles << ',' << s.direction
+                   << ',' << s.polarisation << ',' << s.integrator << ',' << s.cfl << ',' << out.dt << ','
+                   << out.criticalDt << ',' << out.steps << ',' << out.endTime << ',' << out.error << ','
+                   << out.setupSeconds << ',' << out.loopSeconds << '\n';
+    table.commit();
+    if (!opt.quiet)
+      std::cout << s.method << " " << s.dimension << "-D, " << s.cells << " cells, " << s.wavelengths
+              << " wavelengths along the " << s.direction << ", " << s.polarisation << ": " << s.integrator << " at "
+              << s.cfl << " of the limit (" << out.steps << " steps): relative L2 error of u " << out.error << '\n';
+
+    RunSummary summary;
+    summary.program = kProgram;
+    summary.scene = opt.scenePath.empty() ? "(defaults)" : opt.scenePath;
+    summary.method = s.method;
+    summary.integrator = s.integrator;
+    summary.particles = out.particles;
+    summary.steps = out.steps;
+    summary.timeStep = out.dt;
+    summary.simulatedTime = out.endTime;
+    summary.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
+    summary.errors.push_back({"relative_l2_u", out.error});
+    summary.figures.push_back({"critical_dt", out.criticalDt});
+    summary.figures.push_back({"time_step", out.dt});
+    summary.figures.push_back({"loop_seconds", out.loopSeconds});
+    summary.files = {"scene.resolved.toml", "planewave.csv", "summary.json"};
+    summary.finish();
+    summary.writeJson(folder + "/summary.json");
+    if (!opt.quiet) summary.print(std::cout);
+    return 0;
+  });
+}
