@@ -13,6 +13,7 @@ ERROR_MEASURES = {
     "manufactured_2d": "relative L2 of u at T on a 4x finer grid",
     "bar_impact_1d": "relative L1 of v at T over the particles",
     "lamb_3d": "relative L2 of v_z over 0-6 s, worse of the centre and receiver probes",
+    "plane_wave_2d": "relative L2 of u at T (2 periods) over the lattice nodes",
 }
 
 
@@ -91,6 +92,28 @@ def lamb3d(dx, variant="consistent", kernel="cubic_spline", ratio=1.0, cfl=0.5):
                  drop=("study.free_block_lower", "study.free_block_upper"))
 
 
+PLANE_WAVE_METHODS = {"finite_difference": "FD", "vwsph_consistent": "VW-SPH consistent",
+                      "vwsph_published": "VW-SPH published", "rkcm": "RKCM"}
+
+
+def planewave(cells, method="vwsph_consistent", kernel="cubic_spline", ratio=1.3, integrator="central_difference",
+              cfl=0.5):
+    """A P wave, two wavelengths across the periodic unit square, over two periods (planewave driver)."""
+    if method == "rkcm":
+        kernel_name, support = "cubic_b_spline_m2", ratio
+        sets = [f"study.rk_support_ratio={ratio}"]
+    elif method == "finite_difference":
+        kernel_name, support, sets = "-", "-", []
+    else:
+        kernel_name, support = kernel, ratio
+        sets = [f"study.kernel={kernel}", f"study.smoothing_length_ratio={ratio}"]
+    support_text = support if support == "-" else f"{support:g}"
+    return Point("plane_wave_2d", PLANE_WAVE_METHODS[method], "planewave", "planewave.toml", f"cells={cells}",
+                 kernel_name, support_text, integrator, cfl,
+                 tuple([f"study.method={method}", f"study.cells={cells}", f"integrator.name={integrator}",
+                        f"integrator.cfl={cfl}"] + sets))
+
+
 def _dedupe(points):
     seen, unique = set(), []
     for p in points:
@@ -135,6 +158,16 @@ def default_sweep():
     pts += [lamb3d(dx, variant="published") for dx in (0.5, 0.25)]
     pts += [lamb3d(dx, kernel="wendland_c2") for dx in (0.5, 0.25)]
     pts += [lamb3d(dx, cfl=0.9) for dx in (0.5, 0.25)]
+    # Plane wave in a periodic box: every linear method on the same problem.
+    pts += [planewave(c, m) for m in ("finite_difference", "vwsph_consistent", "vwsph_published")
+            for c in (16, 32, 64, 128, 256)]
+    pts += [planewave(c, "vwsph_consistent", kernel=k, ratio=r) for k, r in (("wendland_c2", 1.3), ("cubic_spline", 1.5))
+            for c in (32, 128)]
+    pts += [planewave(c, "rkcm", ratio=2.5, integrator="newmark") for c in (16, 32, 64, 128)]
+    pts += [planewave(c, m, cfl=f) for m in ("finite_difference", "vwsph_consistent") for f in (0.9, 1.0)
+            for c in (32, 128)]
+    pts += [planewave(c, m, integrator=i) for m in ("finite_difference", "vwsph_consistent")
+            for i in ("newmark", "arkode") for c in (32, 128)]
     return _dedupe(pts)
 
 
@@ -165,6 +198,13 @@ def full_sweep():
     pts += [bar1d_sph(n, cfl=f) for f in (0.5, 2.0, 3.0, 4.0, 6.0) for n in (100, 200, 800, 3200)]
     pts += [lamb3d(0.5, kernel="quintic_spline"), lamb3d(0.5, kernel="wendland_c2", ratio=1.3)]
     pts += [lamb3d(dx, cfl=f) for f in (0.25, 0.75) for dx in (0.5, 0.25)] + [lamb3d(0.125, cfl=0.9)]
+    pts += [planewave(c, m) for m in ("finite_difference", "vwsph_consistent") for c in (512,)]
+    pts += [planewave(c, "vwsph_consistent", kernel=k, ratio=r) for k, r in (("wendland_c2", 1.3), ("cubic_spline", 1.5),
+                                                                             ("quintic_spline", 1.0))
+            for c in (16, 64, 256)]
+    pts += [planewave(c, "rkcm", ratio=r, integrator="newmark") for r in (2.2, 2.5) for c in (256,)]
+    pts += [planewave(c, m, cfl=f) for m in ("finite_difference", "vwsph_consistent") for f in (0.25, 0.75)
+            for c in (32, 128, 512)]
     return _dedupe(pts)
 
 

@@ -113,6 +113,10 @@ def read_results(point, out_dir):
         r.update(particles=int(row["particles"]), steps=int(row["steps"]), dt=_number(row["dt [s]"]),
                  dt_stable=_number(row["stable_step_estimate [s]"]), error=max(errors),
                  loop_s=_number(row["run [s]"]))
+    elif point.driver == "planewave":
+        row = _rows(os.path.join(out_dir, "planewave.csv"))[-1]
+        r.update(dt=_number(row["dt"]), dt_stable=_number(row["critical_dt"]), error=_number(row["relative_l2_u"]),
+                 loop_s=_number(row["loop_s"]))
     else:
         raise ValueError(f"no reader for driver {point.driver}")
     return r

@@ -30,6 +30,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 using namespace mfwave;
@@ -114,10 +115,17 @@ Outcome run(const Settings& s) {
     throw InputError("integrator.name", "rkcm has a consistent mass; only newmark integrates it here");
 
   const auto extremes = DispersionSpectrum<D>(op).extremes();
-  if (!(extremes.smallestOmegaSquared >= -1e-10 * extremes.largestOmegaSquared))
-    throw InputError("study.method", "the discrete spectrum has omega^2 < 0 (" +
-                                         std::to_string(extremes.smallestOmegaSquared / extremes.largestOmegaSquared) +
-                                         " of its largest value): unstable at any step; see docs/studies/spectra.md");
+  // omega^2 < 0 anywhere on the lattice grows at any step: stop before any work, as an instability
+  // (exit 3), naming where in k it sits.
+  if (!(extremes.smallestOmegaSquared >= -1e-10 * extremes.largestOmegaSquared)) {
+    std::ostringstream where;
+    where << (extremes.smallestAt * dx).transpose();
+    throw InstabilityError("planewave: study.method " + s.method + ": the discrete spectrum has omega^2 < 0 (" +
+                               std::to_string(extremes.smallestOmegaSquared / extremes.largestOmegaSquared) +
+                               " of its largest value, at k dx = (" + where.str() +
+                               ")): unstable at any step; see docs/studies/spectra.md",
+                           0, 0, -1);
+  }
   Outcome out;
   out.criticalDt = 2 / std::sqrt(extremes.largestOmegaSquared);
   // The limit is exact here (the whole spectrum is known), so a step beyond it is refused before

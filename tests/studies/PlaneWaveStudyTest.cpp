@@ -71,9 +71,10 @@ TEST(PlaneWaveStudy, BadInputIsRefusedBeforeAnyWork) {
   const PlaneWaveRun mass = run("--set study.method=rkcm", "mass");
   EXPECT_EQ(mass.outcome.exitCode, 2) << mass.outcome.log;
   EXPECT_NE(mass.outcome.log.find("integrator.name"), std::string::npos) << mass.outcome.log;
-  // The 3-D consistent very weak SPH has omega^2 < 0 on the periodic lattice (docs/studies/spectra.md).
+  // The 3-D consistent very weak SPH has omega^2 < 0 on the periodic lattice (docs/studies/spectra.md):
+  // an instability (exit 3), stopped before any step.
   const PlaneWaveRun unstable = run("--set study.dimension=3 --set study.cells=16", "3d");
-  EXPECT_EQ(unstable.outcome.exitCode, 2) << unstable.outcome.log;
+  EXPECT_EQ(unstable.outcome.exitCode, 3) << unstable.outcome.log;
   EXPECT_NE(unstable.outcome.log.find("omega^2 < 0"), std::string::npos) << unstable.outcome.log;
   const PlaneWaveRun odd = run("--set study.cells=33", "odd");
   EXPECT_EQ(odd.outcome.exitCode, 2) << odd.outcome.log;
