@@ -12,9 +12,8 @@
 // summary.json; plot with analysis/plot_spectra.py.
 
 #include "analysis/DispersionSpectrum.hpp"
-#include "analysis/MethodLatticeStencils.hpp"
+#include "analysis/LatticeMethods.hpp"
 #include "analysis/SimulatedDispersion.hpp"
-#include "analysis/VeryWeakSphDispersion.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Material.hpp"
 #include "io/run/DriverCommandLine.hpp"
@@ -39,19 +38,13 @@ namespace {
 const char* kProgram = "spectra";
 constexpr Real kPi = 3.14159265358979323846;
 
-const std::vector<std::string>& methodNames() {
-  static const std::vector<std::string> names = {"finite_difference", "vwsph_published", "vwsph_consistent",
-                                                 "rkcm", "rbcm", "ulsph", "ulsph_corrected"};
-  return names;
-}
-
 SceneSchema spectraSchema() {
   SceneSchema schema;
   schema.add("study", ValueType::Table).describedAs("the spectra study (every key has a default)");
   schema.add("study.methods", ValueType::StringArray).withUnit("-")
       .defaultsTo("[\"finite_difference\", \"vwsph_published\", \"vwsph_consistent\", \"rkcm\", \"rbcm\", \"ulsph\", "
                   "\"ulsph_corrected\"]")
-      .oneOf(methodNames()).describedAs("methods (rbcm in 1-D only: its global functions make 2-D/3-D rows costly)");
+      .oneOf(latticeMethodNames()).describedAs("methods (rbcm in 1-D only: its global functions make 2-D/3-D rows costly)");
   schema.add("study.dimensions", ValueType::NumberArray).withUnit("-").defaultsTo("[1.0, 2.0, 3.0]").between(1, 3)
       .describedAs("lattice dimensions");
   schema.add("study.cells_1d", ValueType::Integer).withUnit("-").defaultsTo("512").atLeast(16).describedAs(
@@ -98,11 +91,7 @@ struct Settings {
   std::vector<int> dimensions;
   int cells[4] = {0, 512, 128, 64};
   Real spacing = 1;
-  Material material = Material::fromLame(1, 1, 1);
-  std::string kernel = "cubic_spline";
-  Real smoothingLengthRatio = 1.3;
-  int rkOrder = 2;
-  Real rkSupport = 2.5, rbShape = 3;
+  LatticeMethodSettings lattice;
   Real accuracy = 0.01;
   bool simulate = true;
   int simulationCells = 32, simulationSteps = 1024;
@@ -126,36 +115,6 @@ std::string num(Real x, int digits = 6) {
   return s.str();
 }
 
-// The method's interior stencil(s) on the lattice; false when the method is not offered in D.
-template <int D>
-bool methodStencil(const std::string& method, const Settings& s, MethodLatticeStencil<D>& out) {
-  if (method == "finite_difference") {
-    out = finiteDifferenceInteriorStencil<D>(s.spacing, s.material.pWaveSpeed());
-  } else if (method == "vwsph_published" || method == "vwsph_consistent") {
-    const auto variant = method == "vwsph_published" ? VeryWeakSphDispersionVariant::Published
-                                                     : VeryWeakSphDispersionVariant::Consistent;
-    const auto lattice = veryWeakSphInteriorStencil<D>(variant, s.kernel, s.smoothingLengthRatio, s.material, s.spacing);
-    out = MethodLatticeStencil<D>{};
-    out.acceleration = lattice.stencil;
-    out.translationDifference = lattice.translationDifference;
-    out.halfWidth = lattice.halfWidth;
-  } else if (method == "rkcm") {
-    out = collocationInteriorStencil<D>(CollocationBasis::ReproducingKernel, s.rkOrder, s.rkSupport, s.material,
-                                        s.spacing);
-  } else if (method == "rbcm") {
-    if (D != 1) return false;
-    out = collocationInteriorStencil<D>(CollocationBasis::RadialBasis, 0, s.rbShape, s.material, s.spacing);
-  } else {
-    UpdatedLagrangianSphOptions options;
-    options.material = s.material;
-    options.kernel = s.kernel;
-    options.smoothingLengthRatio = s.smoothingLengthRatio;
-    options.kernelGradientCorrection = method == "ulsph_corrected";
-    out = updatedLagrangianSphInteriorStencil<D>(options, s.spacing);
-  }
-  return true;
-}
-
 template <int D>
 void study(const Settings& s, Outputs& out) {
   const int cells = s.cells[D];
@@ -164,14 +123,12 @@ void study(const Settings& s, Outputs& out) {
   std::vector<LatticeDirection> directions = {LatticeDirection::Axis};
   if (D > 1) directions.push_back(LatticeDirection::Diagonal);
   for (const std::string& method : s.methods) {
-    MethodLatticeStencil<D> stencil;
-    if (method == "finite_difference") {
-      // Scalar: reported as P, the one wave it has.
-    }
-    if (!methodStencil<D>(method, s, stencil)) {
+    if (!latticeMethodAvailable(method, D)) {
       std::cout << "  " << method << " " << D << "-D: skipped (1-D only)\n";
       continue;
     }
+    // The scalar finite difference is reported as P, the one wave it has.
+    const MethodLatticeStencil<D> stencil = latticeMethodStencil<D>(method, s.lattice, s.spacing, "study.methods");
     // A block of a global method (RB) can reach further than half the lattice: widen it.
     int lattice = cells;
     const int reach = std::max(stencilReach(stencil.acceleration, s.spacing),
@@ -182,7 +139,7 @@ void study(const Settings& s, Outputs& out) {
     const DispersionSpectrum<D> spectrum(op);
     const auto extremes = spectrum.extremes();
     const Real seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const Real cp = s.material.pWaveSpeed();
+    const Real cp = s.lattice.material.pWaveSpeed();
     // The central-difference limit of the whole spectrum, as a Courant number c_p dt / dx.
     const Real courant = extremes.largestOmegaSquared > 0 ? 2 / std::sqrt(extremes.largestOmegaSquared) * cp / s.spacing
                                                           : std::nan("");
@@ -198,7 +155,7 @@ void study(const Settings& s, Outputs& out) {
     for (Polarisation pol : polarisations) {
       if (scalar && pol == Polarisation::S) continue;
       const Polarisation asked = scalar ? Polarisation::Scalar : pol;
-      const Real c = pol == Polarisation::P ? cp : s.material.sWaveSpeed();
+      const Real c = pol == Polarisation::P ? cp : s.lattice.material.sWaveSpeed();
       std::vector<std::vector<DispersionSample>> lines;
       for (LatticeDirection direction : directions) {
         lines.push_back(spectrumLine(spectrum, direction, asked, c));
@@ -287,12 +244,12 @@ int main(int argc, char** argv) {
     s.spacing = reader.number("study.spacing");
     const Real lambda = reader.number("study.lambda"), mu = reader.number("study.mu");
     const Real rho = reader.number("study.density");
-    s.material = Material::fromLame(lambda, mu, rho);
-    s.kernel = reader.string("study.kernel");
-    s.smoothingLengthRatio = reader.number("study.smoothing_length_ratio");
-    s.rkOrder = static_cast<int>(reader.integer("study.rk_order"));
-    s.rkSupport = reader.number("study.rk_support_ratio");
-    s.rbShape = reader.number("study.rb_shape_ratio");
+    s.lattice.material = Material::fromLame(lambda, mu, rho);
+    s.lattice.kernel = reader.string("study.kernel");
+    s.lattice.smoothingLengthRatio = reader.number("study.smoothing_length_ratio");
+    s.lattice.rkOrder = static_cast<int>(reader.integer("study.rk_order"));
+    s.lattice.rkSupportRatio = reader.number("study.rk_support_ratio");
+    s.lattice.rbShapeRatio = reader.number("study.rb_shape_ratio");
     s.accuracy = reader.number("study.accuracy");
     s.simulate = reader.boolean("simulation.enabled");
     s.simulationCells = static_cast<int>(reader.integer("simulation.cells"));
@@ -313,9 +270,9 @@ int main(int argc, char** argv) {
     RunSummary summary;
     Outputs out{curvesFile.stream(), accuracyFile.stream(), anisotropyFile.stream(), simulationFile.stream(), summary};
     const std::string setting = "lambda = " + num(lambda) + ", mu = " + num(mu) + ", rho = " + num(rho) +
-                                ", dx = " + num(s.spacing) + ", " + s.kernel + " h/dx = " + num(s.smoothingLengthRatio) +
-                                ", RK m = " + std::to_string(s.rkOrder) + " a/dx = " + num(s.rkSupport) +
-                                ", RB a_r/dx = " + num(s.rbShape);
+                                ", dx = " + num(s.spacing) + ", " + s.lattice.kernel + " h/dx = " + num(s.lattice.smoothingLengthRatio) +
+                                ", RK m = " + std::to_string(s.lattice.rkOrder) + " a/dx = " + num(s.lattice.rkSupportRatio) +
+                                ", RB a_r/dx = " + num(s.lattice.rbShapeRatio);
     out.curves << "# FFT dispersion spectra (" << setting << "); phase_speed = omega / (|k| c), group_speed = "
                << "(d omega / d|k|) / c, c = c_p for P (and the scalar finite-difference wave), c_s for S\n"
                << "method,dimension,direction,polarisation,kdx,phase_speed,group_speed,alignment\n"

@@ -10,8 +10,7 @@
 //   planewave [--scene data/scenes/planewave.toml] [--set study.cells=64] [--out DIR]
 
 #include "analysis/DispersionSpectrum.hpp"
-#include "analysis/MethodLatticeStencils.hpp"
-#include "analysis/VeryWeakSphDispersion.hpp"
+#include "analysis/LatticeMethods.hpp"
 #include "analytic/PlaneWave.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
@@ -81,10 +80,10 @@ SceneSchema planeWaveSchema() {
 
 struct Settings {
   int dimension = 2;
-  std::string method, kernel, direction, polarisation, integrator;
-  int cells = 32, wavelengths = 2, rkOrder = 2;
-  Real periods = 2, ratio = 1.3, rkSupport = 2.5, cfl = 0.5;
-  Material material = Material::fromLame(1, 1, 1);
+  std::string method, direction, polarisation, integrator;
+  int cells = 32, wavelengths = 2;
+  Real periods = 2, cfl = 0.5;
+  LatticeMethodSettings lattice;
 };
 
 struct Outcome {
@@ -97,16 +96,7 @@ template <int D>
 Outcome run(const Settings& s) {
   const auto setupStart = std::chrono::steady_clock::now();
   const Real dx = 1.0 / s.cells;
-  MethodLatticeStencil<D> stencil;
-  if (s.method == "finite_difference") {
-    stencil = finiteDifferenceInteriorStencil<D>(dx, s.material.pWaveSpeed());
-  } else if (s.method == "rkcm") {
-    stencil = collocationInteriorStencil<D>(CollocationBasis::ReproducingKernel, s.rkOrder, s.rkSupport, s.material, dx);
-  } else {
-    const auto variant = s.method == "vwsph_published" ? VeryWeakSphDispersionVariant::Published
-                                                       : VeryWeakSphDispersionVariant::Consistent;
-    stencil.acceleration = veryWeakSphInteriorStencil<D>(variant, s.kernel, s.ratio, s.material, dx).stencil;
-  }
+  const MethodLatticeStencil<D> stencil = latticeMethodStencil<D>(s.method, s.lattice, dx, "study.method");
   const auto op = makePeriodicLatticeOperator<D>(stencil.acceleration, dx, s.cells, stencil.mass);
   const int c = op.components();
   if (c == 1 && s.polarisation == "S") throw InputError("study.polarisation", "the scalar finite difference has no S wave");
@@ -146,7 +136,7 @@ Outcome run(const Settings& s) {
       else e << 1 / std::sqrt(2.0), -1 / std::sqrt(2.0), 0;
     }
   }
-  const Real speed = s.polarisation == "P" ? s.material.pWaveSpeed() : s.material.sWaveSpeed();
+  const Real speed = s.polarisation == "P" ? s.lattice.material.pWaveSpeed() : s.lattice.material.sWaveSpeed();
   const PlaneWave<D> wave(k, e, speed);
   out.endTime = s.periods * wave.period();
   out.steps = static_cast<long>(std::ceil(out.endTime / (s.cfl * out.criticalDt) - 1e-9));
@@ -235,12 +225,12 @@ int main(int argc, char** argv) {
     s.direction = reader.string("study.direction");
     s.polarisation = reader.string("study.polarisation");
     s.periods = reader.number("study.periods");
-    s.material = Material::fromLame(reader.number("study.lambda"), reader.number("study.mu"),
+    s.lattice.material = Material::fromLame(reader.number("study.lambda"), reader.number("study.mu"),
                                     reader.number("study.density"));
-    s.kernel = reader.string("study.kernel");
-    s.ratio = reader.number("study.smoothing_length_ratio");
-    s.rkOrder = static_cast<int>(reader.integer("study.rk_order"));
-    s.rkSupport = reader.number("study.rk_support_ratio");
+    s.lattice.kernel = reader.string("study.kernel");
+    s.lattice.smoothingLengthRatio = reader.number("study.smoothing_length_ratio");
+    s.lattice.rkOrder = static_cast<int>(reader.integer("study.rk_order"));
+    s.lattice.rkSupportRatio = reader.number("study.rk_support_ratio");
     s.integrator = reader.string("integrator.name");
     s.cfl = reader.number("integrator.cfl");
     const std::string sceneFolder = reader.string("output.folder");
