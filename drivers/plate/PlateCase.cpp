@@ -121,7 +121,7 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
   result.energyDrift = ledger.largestBalanceDrift();
   result.largestZigzag = ledger.largestZigzag();
   const TimeSeries& energy = ledger.series();
-  const Real initial = energy.column(EnergyLedger<D>::Kinetic).front() + energy.column(EnergyLedger<D>::Strain).front();
+  const Real initial = ledger.initialEnergy();
   result.viscousFraction = energy.column(EnergyLedger<D>::ViscousDissipation).back() / initial;
   result.artificialStressFraction = energy.column(EnergyLedger<D>::ArtificialStressWork).back() / initial;
   const std::vector<Real> kinetic = energy.column(EnergyLedger<D>::Kinetic);

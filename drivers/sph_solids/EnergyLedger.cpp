@@ -61,11 +61,9 @@ void EnergyLedger<D>::throwBlowUp(const StateView& state, Real drift) const {
 template <int D>
 Real EnergyLedger<D>::largestBalanceDrift() const {
   if (series_.rows() == 0) return 0;
-  const std::vector<Real> balance = series_.column(Balance);
-  const Real scale = std::max(series_.column(Kinetic).front() + series_.column(Strain).front(),
-                              std::numeric_limits<Real>::min());
+  const Real scale = std::max(initialEnergy_, std::numeric_limits<Real>::min());
   Real drift = 0;
-  for (Real b : balance) drift = std::max(drift, std::abs(b - balance.front()));
+  for (Real b : series_.column(Balance)) drift = std::max(drift, std::abs(b - initialBalance_));
   return drift / scale;
 }
 

@@ -30,6 +30,8 @@ class EnergyLedger : public Observer {
   void observe(const StateView& state) override;
 
   const TimeSeries& series() const { return series_; }
+  // Kinetic + strain energy of the first row (0 before it): the scale of every fraction reported.
+  Real initialEnergy() const { return initialEnergy_; }
   // Largest |balance(t) - balance(0)| / max(kinetic + strain at t = 0, tiny), over the rows so far.
   Real largestBalanceDrift() const;
   // Largest zig-zag indicator and the time it was first above `threshold` (-1 if never).
