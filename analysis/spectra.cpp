@@ -188,12 +188,12 @@ void study(const Settings& s, Outputs& out) {
     }
 
     if (D == 2 && s.simulate && op.lumped()) {
-      const auto simOp = makePeriodicLatticeOperator<D>(stencil.acceleration, s.spacing, s.simulationCells);
-      const DispersionSpectrum<D> simSpectrum(simOp);
       if (!stable) {
         std::cout << "  " << method << " 2-D simulation: skipped (the spectrum is unstable)\n";
         continue;
       }
+      const auto simOp = makePeriodicLatticeOperator<D>(stencil.acceleration, s.spacing, s.simulationCells);
+      const DispersionSpectrum<D> simSpectrum(simOp);
       for (LatticeDirection direction : directions) {
         SimulatedDispersionOptions options;
         options.direction = direction;

@@ -148,12 +148,9 @@ Outcome run(const Settings& s) {
   auto nodal = [&](Real t, bool velocity) {
     Vector values(op.size());
     for (Index node = 0; node < nodes; ++node) {
+      const std::array<int, D> at = latticeCoordinates<D>(node, s.cells);
       Vec<D> x;
-      Index rest = node;
-      for (int d = 0; d < D; ++d) {
-        x(d) = static_cast<Real>(rest % s.cells) * dx;
-        rest /= s.cells;
-      }
+      for (int d = 0; d < D; ++d) x(d) = at[static_cast<std::size_t>(d)] * dx;
       const Vec<D> u = velocity ? wave.velocity(x, t) : wave.displacement(x, t);
       if (c == 1)
         values(node) = u.dot(e);

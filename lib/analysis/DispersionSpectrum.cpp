@@ -125,14 +125,10 @@ void DispersionSpectrum<D>::transform(const LatticeStencil<D>& stencil, Real sig
 
 template <int D>
 std::size_t DispersionSpectrum<D>::index(const std::array<int, D>& m) const {
-  std::size_t at = 0;
-  for (int d = D - 1; d >= 0; --d) {
-    const int v = m[static_cast<std::size_t>(d)];
+  for (int v : m)
     if (v < 0 || v >= cells_)
       throw InputError("wavenumber_index", std::to_string(v) + " is outside [0, " + std::to_string(cells_) + ")");
-    at = at * static_cast<std::size_t>(cells_) + static_cast<std::size_t>(v);
-  }
-  return at;
+  return static_cast<std::size_t>(periodicNode<D>(m, cells_));
 }
 
 template <int D>
@@ -245,12 +241,7 @@ typename DispersionSpectrum<D>::Extremes DispersionSpectrum<D>::extremes() const
     long localAt = 0;
 #pragma omp for schedule(static) nowait
     for (long at = 0; at < total; ++at) {
-      std::array<int, D> m{};
-      long rest = at;
-      for (int d = 0; d < D; ++d) {
-        m[static_cast<std::size_t>(d)] = static_cast<int>(rest % cells_);
-        rest /= cells_;
-      }
+      const std::array<int, D> m = latticeCoordinates<D>(at, cells_);
       Eigen::MatrixXcd T = symbol(m);
       if (!lumped_) T = massSymbol(m).partialPivLu().solve(T);
       const Eigen::VectorXcd values = decompose(T).values;
@@ -277,13 +268,7 @@ typename DispersionSpectrum<D>::Extremes DispersionSpectrum<D>::extremes() const
       modulus = std::max(modulus, localModulus);
     }
   }
-  long rest = smallestAt;
-  std::array<int, D> m{};
-  for (int d = 0; d < D; ++d) {
-    m[static_cast<std::size_t>(d)] = static_cast<int>(rest % cells_);
-    rest /= cells_;
-  }
-  result.smallestAt = wavevector(m);
+  result.smallestAt = wavevector(latticeCoordinates<D>(smallestAt, cells_));
   result.largestImaginaryRatio = modulus > 0 ? imaginary / modulus : 0;
   return result;
 }

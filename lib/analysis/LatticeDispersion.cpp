@@ -198,8 +198,10 @@ LatticeStencil<D> extractLatticeStencil(const LinearSecondOrderSystem& system, c
 }
 
 template <int D>
-Real stencilDifference(const LatticeStencil<D>& first, const LatticeStencil<D>& second, Real offsetTolerance) {
-  if (first.components != second.components || first.size() != second.size()) return kInf;
+Real stencilDifference(const LatticeStencil<D>& first, const LatticeStencil<D>& second, Real offsetTolerance,
+                       bool commonOffsetsOnly) {
+  if (first.components != second.components) return kInf;
+  if (!commonOffsetsOnly && first.size() != second.size()) return kInf;
   Real largest = 0, difference = 0;
   for (std::size_t b = 0; b < first.offsets.size(); ++b) {
     largest = std::max(largest, first.blocks[b].cwiseAbs().maxCoeff());
@@ -209,7 +211,10 @@ Real stencilDifference(const LatticeStencil<D>& first, const LatticeStencil<D>& 
         match = q;
         break;
       }
-    if (match == second.offsets.size()) return kInf;
+    if (match == second.offsets.size()) {
+      if (commonOffsetsOnly) continue;
+      return kInf;
+    }
     difference = std::max(difference, (first.blocks[b] - second.blocks[match]).cwiseAbs().maxCoeff());
   }
   return largest > 0 ? difference / largest : difference;
@@ -401,7 +406,7 @@ Vec<D> latticeDiagonal() {
   template struct LatticeStencil<D>;                                                                               \
   template LatticeStencil<D> extractLatticeStencil<D>(const LinearSecondOrderSystem&, const ParticleSet<D>&, Index, \
                                                       Real);                                                       \
-  template Real stencilDifference<D>(const LatticeStencil<D>&, const LatticeStencil<D>&, Real);                    \
+  template Real stencilDifference<D>(const LatticeStencil<D>&, const LatticeStencil<D>&, Real, bool);              \
   template StencilSymbol stencilSymbol<D>(const LatticeStencil<D>&, const Vec<D>&);                                \
   template std::vector<LatticeMode> latticeModes<D>(const LatticeStencil<D>&, const Vec<D>&, Real, Real);          \
   template LatticeMode latticeMode<D>(const LatticeStencil<D>&, const Vec<D>&, Real, Polarisation, Real);          \

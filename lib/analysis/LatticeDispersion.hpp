@@ -58,7 +58,10 @@ LatticeStencil<D> extractLatticeStencil(const LinearSecondOrderSystem& system, c
 // divided by the largest |G_b|: ~1e-16 for two interior rows of a translation-invariant lattice.
 // Infinity when the offsets or the component counts differ.
 template <int D>
-Real stencilDifference(const LatticeStencil<D>& first, const LatticeStencil<D>& second, Real offsetTolerance = 1e-9);
+// With commonOffsetsOnly, blocks of `first` without a partner in `second` are skipped instead (rows
+// of a global method, whose reach is the lattice block and so shifts with the row).
+Real stencilDifference(const LatticeStencil<D>& first, const LatticeStencil<D>& second, Real offsetTolerance = 1e-9,
+                       bool commonOffsetsOnly = false);
 
 struct StencilSymbol {
   Eigen::MatrixXd real;       // Re S(k)

@@ -112,23 +112,10 @@ MethodLatticeStencil<D> collocationInteriorStencil(CollocationBasis basis, int o
   LatticeStencil<D> nextMass, nextAcceleration;
   collocationRow<D>(*shapes, nodes, particleAt<D>(nodes, nextAlongX<D>(spacing), spacing), material, nextMass,
                     nextAcceleration);
-  // Compare on the common offsets only: the neighbour's row reaches one node further on one side
-  // for the global RB functions, and the missing blocks would make the difference infinite.
-  if (basis == CollocationBasis::ReproducingKernel)
-    result.translationDifference = stencilDifference(result.acceleration, nextAcceleration, 1e-9 * spacing);
-  else {
-    Real largest = 0, difference = 0;
-    for (std::size_t a = 0; a < result.acceleration.offsets.size(); ++a) {
-      largest = std::max(largest, result.acceleration.blocks[a].cwiseAbs().maxCoeff());
-      for (std::size_t b = 0; b < nextAcceleration.offsets.size(); ++b)
-        if ((nextAcceleration.offsets[b] - result.acceleration.offsets[a]).norm() < 1e-9 * spacing &&
-            (result.acceleration.offsets[a] + nextAlongX<D>(spacing)).cwiseAbs().maxCoeff() <=
-                result.halfWidth * spacing * (1 + 1e-12))
-          difference =
-              std::max(difference, (nextAcceleration.blocks[b] - result.acceleration.blocks[a]).cwiseAbs().maxCoeff());
-    }
-    result.translationDifference = largest > 0 ? difference / largest : 0;
-  }
+  // A global (RB) row reaches the block's edge, so the neighbour's row covers other offsets on
+  // either side: compare on the offsets both have.
+  result.translationDifference = stencilDifference(result.acceleration, nextAcceleration, 1e-9 * spacing,
+                                                   basis == CollocationBasis::RadialBasis);
   return result;
 }
 

@@ -53,6 +53,16 @@ Index periodicNode(const std::array<int, D>& coordinates, int cells) {
 }
 
 template <int D>
+std::array<int, D> latticeCoordinates(Index node, int cells) {
+  std::array<int, D> coordinates{};
+  for (int d = 0; d < D; ++d) {
+    coordinates[static_cast<std::size_t>(d)] = static_cast<int>(node % cells);
+    node /= cells;
+  }
+  return coordinates;
+}
+
+template <int D>
 PeriodicLatticeOperator<D> makePeriodicLatticeOperator(LatticeStencil<D> acceleration, Real spacing, int cells,
                                                        LatticeStencil<D> mass) {
   if (!(spacing > 0) || !std::isfinite(spacing)) throw InputError("spacing", "must be positive and finite");
@@ -83,13 +93,8 @@ SparseMatrix periodicMatrix(const LatticeStencil<D>& stencil, Real spacing, int 
   for (int d = 0; d < D; ++d) nodes *= cells;
   std::vector<Eigen::Triplet<Real>> triplets;
   triplets.reserve(static_cast<std::size_t>(nodes) * steps.size() * static_cast<std::size_t>(c * c));
-  std::array<int, D> at{};
   for (Index node = 0; node < nodes; ++node) {
-    Index rest = node;
-    for (int d = 0; d < D; ++d) {
-      at[static_cast<std::size_t>(d)] = static_cast<int>(rest % cells);
-      rest /= cells;
-    }
+    const std::array<int, D> at = latticeCoordinates<D>(node, cells);
     for (std::size_t b = 0; b < steps.size(); ++b) {
       std::array<int, D> to = at;
       for (int d = 0; d < D; ++d) to[static_cast<std::size_t>(d)] += steps[b][static_cast<std::size_t>(d)];
@@ -112,6 +117,7 @@ SparseMatrix periodicMatrix(const LatticeStencil<D>& stencil, Real spacing, int 
   template std::vector<std::array<int, D>> latticeSteps<D>(const LatticeStencil<D>&, Real);                     \
   template SparseMatrix periodicMatrix<D>(const LatticeStencil<D>&, Real, int);                                 \
   template Index periodicNode<D>(const std::array<int, D>&, int);                                               \
+  template std::array<int, D> latticeCoordinates<D>(Index, int);                                                \
   template int stencilReach<D>(const LatticeStencil<D>&, Real);
 MFWAVE_PERIODIC_LATTICE(1)
 MFWAVE_PERIODIC_LATTICE(2)

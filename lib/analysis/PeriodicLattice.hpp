@@ -45,9 +45,12 @@ std::vector<std::array<int, D>> latticeSteps(const LatticeStencil<D>& stencil, R
 template <int D>
 SparseMatrix periodicMatrix(const LatticeStencil<D>& stencil, Real spacing, int cells);
 
-// Node index of lattice coordinates (each taken modulo N).
+// Node index of lattice coordinates (each taken modulo N), and the coordinates in [0, N) of a node:
+// the numbering of every lattice array here, the FFT grids included (x fastest).
 template <int D>
 Index periodicNode(const std::array<int, D>& coordinates, int cells);
+template <int D>
+std::array<int, D> latticeCoordinates(Index node, int cells);
 
 // The largest |offset| along any axis, in lattice steps.
 template <int D>

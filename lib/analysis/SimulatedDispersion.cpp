@@ -145,12 +145,9 @@ SimulatedDispersionResult simulateDispersion(const PeriodicLatticeOperator<D>& o
                                                        ComplexVector(static_cast<std::size_t>(options.steps))));
   std::vector<ComplexVector> planes(static_cast<std::size_t>(c), ComplexVector(static_cast<std::size_t>(op.nodes())));
   std::vector<std::size_t> lineAt(static_cast<std::size_t>(samples));
-  for (int j = 1; j <= samples; ++j) {
-    const std::array<int, D> m = lineIndex<D>(options.direction, j);
-    std::size_t at = 0;
-    for (int d = D - 1; d >= 0; --d) at = at * static_cast<std::size_t>(op.cells) + static_cast<std::size_t>(m[static_cast<std::size_t>(d)]);
-    lineAt[static_cast<std::size_t>(j - 1)] = at;
-  }
+  for (int j = 1; j <= samples; ++j)
+    lineAt[static_cast<std::size_t>(j - 1)] =
+        static_cast<std::size_t>(periodicNode<D>(lineIndex<D>(options.direction, j), op.cells));
   for (int step = 0; step < options.steps; ++step) {
     if (step > 0) integrator->step();
     const Vector& u = integrator->state().displacement;
