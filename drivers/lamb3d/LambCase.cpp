@@ -21,6 +21,7 @@
 #include "methods/very_weak_sph/TransmittingBoundary.hpp"
 #include "methods/very_weak_sph/VeryWeakSph.hpp"
 #include "neighbours/NeighbourList.hpp"
+#include "observers/LinearEnergyLedger.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
 
@@ -29,6 +30,7 @@
 #include <cmath>
 #include <iomanip>
 #include <memory>
+#include <limits>
 #include <optional>
 
 namespace mfwave::lamb3d {
@@ -211,6 +213,27 @@ std::vector<Real> kernelSmoothedExact(const LambSquareLoad& exact, const Kernel&
   return smoothed;
 }
 
+// The time after which no load, traction face or prescribed displacement acts any more.
+Real loadsQuietAfter(const Scene& scene) {
+  Real quiet = -std::numeric_limits<Real>::infinity();
+  for (const LoadSpec& load : scene.loads) quiet = std::max(quiet, load.timeFunction.quietAfter());
+  for (const BoundarySpec& b : scene.boundaries)
+    if (b.type == BoundaryType::Traction || b.type == BoundaryType::Displacement)
+      quiet = std::max(quiet, b.timeFunction.quietAfter());
+  return quiet;
+}
+
+// What makes this variant's energy grow, for the stop message (docs/theory/very-weak-sph.md).
+std::string likelyGrowthCause(const VeryWeakSphSpec& spec) {
+  if (spec.variant == "consistent")
+    return "the consistent variant's corrected boundary rows are not symmetric and feed slowly growing modes, "
+           "faster as the spacing falls (docs/theory/very-weak-sph.md); method.smoothing_rate only delays it. "
+           "stability.allow_growth = true runs on to show it";
+  return "the published operator has growing modes (indefinite interior Hessian stencil, non-symmetric boundary "
+         "terms) that only its filter (method.smoothing_rate) holds down (docs/theory/very-weak-sph.md). "
+         "stability.allow_growth = true runs on to show it";
+}
+
 void checkSupported(const Scene& scene) {
   for (std::size_t i = 0; i < scene.loads.size(); ++i)
     if (scene.loads[i].type != LoadType::SurfacePatch)
@@ -305,8 +328,24 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   const Real dt = scene.integrator.timeStepFor(stableStep);
   result.timeStep = dt;
 
-  // integrator, with the smoothing (eq. 33) as its velocity filter and eq. (30) for prescribed faces
+  // the energy ledger, which also stops growth after the loads (LinearEnergyLedger)
   const Prescribed prescribed = prescribedDisplacements(caseScene, particles);
+  LinearEnergyLedgerOptions ledgerOptions;
+  ledgerOptions.quietAfter = loadsQuietAfter(caseScene);
+  // Half the slowest shear period of the block, 4 L / c_s, bounds the envelope's window.
+  Real side = 0;
+  for (std::size_t a = 0; a < D; ++a) side = std::max(side, settings.geometry.upper[a] - settings.geometry.lower[a]);
+  ledgerOptions.envelopeWindow = 2 * side / options.material.sWaveSpeed();
+  ledgerOptions.growthFactor = scene.stability.energyGrowthFactor;
+  // Prescribed displacements do work through reactions the ledger does not see.
+  const bool movingFaces = facesWith(caseScene.boundaries, BoundaryType::Displacement) != 0;
+  ledgerOptions.balanceLimit = movingFaces ? 0 : scene.stability.energyBalanceLimit;
+  ledgerOptions.components = D;
+  ledgerOptions.likelyCause = likelyGrowthCause(spec);
+  ledgerOptions.stop = !scene.stability.allowGrowth;
+  LinearEnergyLedger ledger(system, ledgerOptions);
+
+  // integrator, with the smoothing (eq. 33) as its velocity filter and eq. (30) for prescribed faces
   std::optional<ConservativeSmoothing> smoothing;
   std::unique_ptr<SecondOrderIntegrator> integrator;
   if (scene.integrator.name == "central_difference") {
@@ -314,7 +353,11 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     if (spec.smoothingRate > 0) {
       smoothing.emplace(smoothingMatrix<D>(particles, neighbours, *kernel, method.data.volume), D,
                         spec.smoothingRate, spec.smoothingOrder);
-      central->setVelocityFilter([&smoothing](Real step, Vector& v) { smoothing->apply(step, v); });
+      central->setVelocityFilter([&smoothing, &ledger](Real step, Vector& v) {
+        const Real before = ledger.kineticEnergy(v);
+        smoothing->apply(step, v);
+        ledger.addFilterLoss(before - ledger.kineticEnergy(v));
+      });
     }
     if (!prescribed.dofs.empty())
       central->setPrescribedDisplacement(prescribed.dofs,
@@ -348,6 +391,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   std::optional<PngFrameRenderer<D>> images;
   TimeLoop loop;
   loop.add(monitor);
+  loop.add(ledger);
   loop.add(reporter);
   loop.add(recorder, scene.output.probeEvery);
   if (settings.writeFrames && scene.output.vtk) {
@@ -367,9 +411,29 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     images.emplace(particles, folder, settings.name, D, png);
     loop.add(*images, scene.output.every);
   }
-  const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
+  const std::string energyFile = settings.name + "-energy.csv";
+  RunStatistics stats;
+  try {
+    stats = loop.run(*integrator, scene.integrator.endTime);
+  } catch (const InstabilityError&) {
+    // What was recorded up to the stop stays readable: the probes (without the exact columns) and
+    // the energy ledger.
+    writeProbes(folder + "/" + settings.name + "-probes.csv", probes, recorder,
+                std::vector<std::vector<Real>>(probes.size()));
+    if (scene.output.energy) ledger.series().writeCsv(folder + "/" + energyFile);
+    throw;
+  }
   result.steps = stats.steps;
   result.runSeconds = stats.wallSeconds;
+  result.energyFinalFraction = ledger.finalEnergyFraction();
+  result.energyBalanceDrift = ledger.largestBalanceDrift();
+  result.energyGrowth = ledger.growthMessage();
+  if (!result.energyGrowth.empty())
+    result.notes.push_back(settings.name + ": stability.allow_growth let the run go on through: " + result.energyGrowth);
+  if (scene.output.energy) {
+    ledger.series().writeCsv(folder + "/" + energyFile);
+    result.files.push_back(energyFile);
+  }
 
   // errors against the exact half-space response, for probes on the loaded face along its normal
   const std::string problem = exactReferenceProblem(scene);

@@ -44,6 +44,10 @@ struct CaseResult {
   Real timeStep = 0;
   long steps = 0;
   double assemblySeconds = 0, runSeconds = 0;
+  // The energy ledger: kinetic + |strain| at the end over its largest value, the largest balance
+  // drift over the largest energy, and the growth the run went on through (stability.allow_growth).
+  Real energyFinalFraction = 0, energyBalanceDrift = 0;
+  std::string energyGrowth;
   double peakMemoryMiB = 0;         // of the process when the case ended (cases run smallest first)
   std::vector<ProbeResult> probes;
   std::vector<std::string> files;   // written, relative to the output folder

@@ -166,7 +166,7 @@ void writeCases(const std::string& path, const std::vector<CaseResult>& results)
   std::ostream& out = file.stream();
   out << "case,variant,smoothing_rate [1/s],spacing [m],h [m],particles,ghosts,mean_neighbours,operator_nonzeros,operator [MiB],"
          "stable_step_estimate [s],stable_step_gershgorin [s],dt [s],steps,assembly [s],run [s],wall [s],"
-         "peak_memory [MiB],particle_steps_per_second";
+         "peak_memory [MiB],particle_steps_per_second,energy_final_fraction,energy_balance_drift";
   for (const ProbeResult& p : results.front().probes)
     for (const char* kind : {"raw", "reported"})
       out << ',' << p.name << '_' << kind << "_relative_l2," << p.name << '_' << kind << "_peak_error,"
@@ -179,7 +179,8 @@ void writeCases(const std::string& path, const std::vector<CaseResult>& results)
         << ',' << r.ghosts << ',' << r.meanNeighbours << ',' << r.operatorNonZeros << ',' << r.operatorMiB << ','
         << r.stableStepEstimate << ',' << r.stableStepGershgorin << ',' << r.timeStep << ',' << r.steps << ','
         << r.assemblySeconds << ',' << r.runSeconds << ',' << r.assemblySeconds + r.runSeconds << ','
-        << r.peakMemoryMiB << ',' << r.particleStepsPerSecond();
+        << r.peakMemoryMiB << ',' << r.particleStepsPerSecond() << ',' << r.energyFinalFraction << ','
+        << r.energyBalanceDrift;
     for (const ProbeResult& p : r.probes)
       for (const SignalErrors* e : {&p.raw, &p.reported}) {
         if (p.hasExact)
@@ -263,6 +264,8 @@ int main(int argc, char** argv) {
     for (const CaseResult& r : results) {
       summary.figures.push_back({r.settings.name + "_stable_step_estimate", r.stableStepEstimate});
       summary.figures.push_back({r.settings.name + "_particle_steps_per_second", r.particleStepsPerSecond()});
+      summary.figures.push_back({r.settings.name + "_energy_final_fraction", r.energyFinalFraction});
+      summary.figures.push_back({r.settings.name + "_energy_balance_drift", r.energyBalanceDrift});
     }
     summary.notes.push_back("particles, neighbours and dt of the first case (" + paper.settings.name +
                             "); steps and wall time summed over " + std::to_string(results.size()) + " cases");

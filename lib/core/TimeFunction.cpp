@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace mfwave {
@@ -151,6 +152,28 @@ bool TimeFunction::piecewiseLinear(std::vector<Real>& times, std::vector<Real>& 
     default:
       return false;
   }
+}
+
+Real TimeFunction::quietAfter() const {
+  constexpr Real never = std::numeric_limits<Real>::infinity();
+  switch (kind_) {
+    case Kind::Constant:
+      return p_[0] == 0 ? -never : never;
+    case Kind::Ramp:
+      return p_[2] == 0 ? -never : never;
+    case Kind::Triangle:
+      return p_[3] == 0 ? -never : p_[0] + p_[1] + p_[2];
+    case Kind::Ricker:
+      // |f| / amplitude = |1 - 2a| e^{-a} < 1e-30 once a = (pi f tau)^2 > 73, i.e. tau > 2.72 / f.
+      return p_[2] == 0 ? -never : p_[1] + 3 / p_[0];
+    case Kind::Tabulated: {
+      if (values_.back() != 0) return never;
+      std::size_t last = values_.size() - 1;  // the first breakpoint of the trailing run of zeros
+      while (last > 0 && values_[last - 1] == 0) --last;
+      return last == 0 ? -never : times_[last];
+    }
+  }
+  return never;
 }
 
 std::string TimeFunction::describe() const {

@@ -39,6 +39,10 @@ class TimeFunction {
   // with a start), when the arguments are left unchanged. Exact references that convolve a step
   // response with the load history (LambSquareLoad) take these.
   bool piecewiseLinear(std::vector<Real>& times, std::vector<Real>& values) const;
+  // The time after which f is zero for good (a Ricker wavelet: below 1e-30 of its peak, 3 / f
+  // after its delay); +infinity when f never ends (a constant, a ramp, a table ending non-zero).
+  // Energy checks use it: after every load is quiet, a passive system's energy cannot grow.
+  Real quietAfter() const;
   // One line for logs and run summaries, e.g. "ricker(peak_frequency=5, delay=0.3, amplitude=1)".
   std::string describe() const;
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 using namespace mfwave;
 using mfwave::testing::inputErrorKey;
@@ -93,4 +94,18 @@ TEST(TimeFunction, PiecewiseLinearBreakpointsReproduceTheFunction) {
   EXPECT_FALSE(TimeFunction::ricker(2, 1).piecewiseLinear(times, values));
   EXPECT_FALSE(TimeFunction::constant(1).piecewiseLinear(times, values));
   EXPECT_EQ(times, std::vector<Real>{7});  // left unchanged
+}
+
+TEST(TimeFunction, QuietAfterIsWhereTheFunctionEndsForGood) {
+  const Real never = std::numeric_limits<Real>::infinity();
+  EXPECT_EQ(TimeFunction::triangle(0, 1, 1).quietAfter(), 2);
+  EXPECT_EQ(TimeFunction::tabulated({0, 1, 3, 4}, {0, 2, 0, 0}).quietAfter(), 3);
+  EXPECT_EQ(TimeFunction::tabulated({0, 1}, {0, 2}).quietAfter(), never);
+  EXPECT_EQ(TimeFunction::ramp(0, 1).quietAfter(), never);
+  EXPECT_EQ(TimeFunction::constant(1).quietAfter(), never);
+  EXPECT_EQ(TimeFunction::constant(0).quietAfter(), -never);
+  const TimeFunction ricker = TimeFunction::ricker(2, 1);
+  ASSERT_EQ(ricker.quietAfter(), 2.5);
+  for (Real t = 2.5; t < 4; t += 0.01) EXPECT_LT(std::abs(ricker(t)), 1e-30) << t;
+  for (Real t = 2.01; t < 4; t += 0.01) EXPECT_EQ(TimeFunction::triangle(0, 1, 1)(t), 0) << t;
 }

@@ -174,6 +174,12 @@ SceneSchema SceneSchema::common() {
       .describedAs("observations over which growth is measured");
   s.add("stability.absolute_limit", T::Number).withUnit("m, m/s").defaultsTo("inf").positive().allowInfinity()
       .describedAs("stop at once when the largest displacement or velocity exceeds this");
+  s.add("stability.energy_growth_factor", T::Number).withUnit("-").defaultsTo("100.0").above(1)
+      .describedAs("linear systems: stop when kinetic + |strain| energy exceeds this multiple of its minimum after every load ended");
+  s.add("stability.energy_balance_limit", T::Number).withUnit("-").defaultsTo("1.0").nonNegative()
+      .describedAs("linear systems: stop when the energy balance moves by this multiple of the largest energy (0: off)");
+  s.add("stability.allow_growth", T::Boolean).defaultsTo("false")
+      .describedAs("run on through energy growth (to show a blow-up on purpose); the summary reports it");
   return s;
 }
 

@@ -7,6 +7,9 @@ StabilitySpec readStability(SceneReader& reader) {
   s.growthFactor = reader.number("stability.growth_factor");
   s.window = static_cast<long>(reader.integer("stability.window"));
   s.absoluteLimit = reader.number("stability.absolute_limit");
+  s.energyGrowthFactor = reader.number("stability.energy_growth_factor");
+  s.energyBalanceLimit = reader.number("stability.energy_balance_limit");
+  s.allowGrowth = reader.boolean("stability.allow_growth");
   return s;
 }
 
