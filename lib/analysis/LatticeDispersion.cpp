@@ -402,6 +402,34 @@ Vec<D> latticeDiagonal() {
   return Vec<D>::Constant(1 / std::sqrt(static_cast<Real>(D)));
 }
 
+template <int D>
+SymbolExtremes<D> symbolExtremes(const LatticeStencil<D>& stencil, Real spacing, int samplesPerAxis) {
+  if (samplesPerAxis < 1) throw InputError("samples_per_axis", "must be at least 1");
+  SymbolExtremes<D> e;
+  e.smallest = std::numeric_limits<Real>::infinity();
+  e.largest = -std::numeric_limits<Real>::infinity();
+  const long points = static_cast<long>(std::pow(samplesPerAxis + 1, D));
+  for (long p = 0; p < points; ++p) {
+    Vec<D> kdx;
+    long rest = p;
+    for (int a = 0; a < D; ++a) {
+      kdx(a) = M_PI * static_cast<Real>(rest % (samplesPerAxis + 1)) / samplesPerAxis;
+      rest /= samplesPerAxis + 1;
+    }
+    const StencilSymbol symbol = stencilSymbol(stencil, Vec<D>(kdx / spacing));
+    const Eigen::MatrixXd symmetric = 0.5 * (symbol.real + symbol.real.transpose());
+    const Eigen::VectorXd omega2 = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(symmetric).eigenvalues();
+    if (omega2.minCoeff() < e.smallest) {
+      e.smallest = omega2.minCoeff();
+      e.smallestAt = kdx;
+    }
+    e.largest = std::max(e.largest, omega2.maxCoeff());
+    e.largestImaginaryRatio = std::max(e.largestImaginaryRatio, symbol.imaginaryRatio);
+    e.largestAsymmetryRatio = std::max(e.largestAsymmetryRatio, symbol.asymmetryRatio);
+  }
+  return e;
+}
+
 #define MFWAVE_LATTICE_DISPERSION(D)                                                                               \
   template struct LatticeStencil<D>;                                                                               \
   template LatticeStencil<D> extractLatticeStencil<D>(const LinearSecondOrderSystem&, const ParticleSet<D>&, Index, \
@@ -417,7 +445,9 @@ Vec<D> latticeDiagonal() {
                                                      Real, Real, Real, Real, int);                                 \
   template Vec<D> latticeAxis<D>();                                                                                \
   template void checkPolarisationExists<D>(int, Polarisation);                                                     \
-  template Vec<D> latticeDiagonal<D>();
+  template Vec<D> latticeDiagonal<D>();                                                                             \
+  template struct SymbolExtremes<D>;                                                                               \
+  template SymbolExtremes<D> symbolExtremes<D>(const LatticeStencil<D>&, Real, int);
 
 MFWAVE_LATTICE_DISPERSION(1)
 MFWAVE_LATTICE_DISPERSION(2)

@@ -159,6 +159,20 @@ AccuracyResolution pointsPerWavelength(const LatticeStencil<D>& stencil, const V
                                        Real tolerance = 0.01, Real kdxMin = 1e-3, Real kdxMax = 3.14159265358979323846,
                                        int samples = 4000);
 
+// The extremes of omega^2 (the eigenvalues of Re S(k)) over the Brillouin zone, sampled at
+// k dx = pi j / n, j = 0..n, on every axis (k and -k give the same values for the lattice's
+// reflection-symmetric stencils, so [0, pi]^D covers the zone). A stencil is stable for central
+// difference only when smallest >= 0 (to round-off) and the symbol is real (imaginaryRatio ~ 0).
+template <int D>
+struct SymbolExtremes {
+  Real smallest = 0, largest = 0;  // of omega^2
+  Vec<D> smallestAt = Vec<D>::Zero();  // k dx where omega^2 is smallest
+  Real largestImaginaryRatio = 0;
+  Real largestAsymmetryRatio = 0;
+};
+template <int D>
+SymbolExtremes<D> symbolExtremes(const LatticeStencil<D>& stencil, Real spacing, int samplesPerAxis);
+
 // Unit directions of the lattice: [1, 0, 0] and [1, 1, 1] / sqrt(D) ([1] for both in 1-D).
 template <int D>
 Vec<D> latticeAxis();

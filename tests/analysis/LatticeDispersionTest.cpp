@@ -243,3 +243,34 @@ TEST(VeryWeakSphDispersion, ConsistentVariantHasExactLongWaves) {
                   1e-10 * c);
     }
 }
+
+// Issue 15, "why": the interior row of the very weak SPH is a sampled kernel Hessian, whose symbol
+// is by Poisson summation sum_m (k + g_m)(k + g_m)^T W^(k + g_m) plus the like shear terms: positive
+// semi-definite whenever the kernel's Fourier transform W^ is non-negative. Wendland kernels are
+// positive definite functions in 1-3 D, so their consistent interior rows are stable at every
+// h / dx; the radial cubic spline's 3-D transform changes sign, and at h / dx = 1.5 a grid-scale
+// mode has omega^2 < 0 (docs/theory/very-weak-sph.md, table from vwsph_interior_spectrum).
+TEST(SymbolExtremes, ConsistentInteriorRowsArePositiveWithWendlandAndNotWithTheCubicSpline) {
+  const Material material = Material::fromLame(1, 1, 1);
+  for (const Real ratio : {1.0, 1.5, 2.0}) {
+    const auto wendland = veryWeakSphInteriorStencil<2>(VeryWeakSphDispersionVariant::Consistent, "wendland_c2", ratio,
+                                                        material);
+    const SymbolExtremes<2> e = symbolExtremes(wendland.stencil, wendland.spacing, 24);
+    EXPECT_GE(e.smallest, -1e-12 * e.largest) << "h/dx = " << ratio;
+    EXPECT_LT(e.largestImaginaryRatio, 1e-12);
+  }
+  const auto cubic2 = veryWeakSphInteriorStencil<2>(VeryWeakSphDispersionVariant::Consistent, "cubic_spline", 2.0,
+                                                    material);
+  const SymbolExtremes<2> c2 = symbolExtremes(cubic2.stencil, cubic2.spacing, 24);
+  EXPECT_NEAR(c2.smallest / c2.largest, -0.01273, 2e-4);
+  const auto cubic3 = veryWeakSphInteriorStencil<3>(VeryWeakSphDispersionVariant::Consistent, "cubic_spline", 1.5,
+                                                    material);
+  const SymbolExtremes<3> c3 = symbolExtremes(cubic3.stencil, cubic3.spacing, 4);
+  EXPECT_NEAR(c3.smallest / c3.largest, -0.06568, 1e-3);
+  EXPECT_NEAR(c3.smallestAt.minCoeff(), M_PI, 1e-12);  // the zone corner (pi, pi, pi)
+  const auto wendland3 = veryWeakSphInteriorStencil<3>(VeryWeakSphDispersionVariant::Consistent, "wendland_c2", 1.5,
+                                                       material);
+  const SymbolExtremes<3> w3 = symbolExtremes(wendland3.stencil, wendland3.spacing, 8);
+  EXPECT_GE(w3.smallest, -1e-12 * w3.largest);
+  EXPECT_THROW(symbolExtremes(cubic2.stencil, cubic2.spacing, 0), InputError);
+}
