@@ -95,8 +95,8 @@ TEST(Lamb3dStudy, AnUnfilteredPublishedRunThatGrowsIsStoppedWithExitThree) {
   const fs::path out = fs::temp_directory_path() / "mfwave-lamb3d-grows";
   fs::remove_all(out);
   const std::string common = "--set 'study.spacings=[0.5]' --set method.variant=published --set method.smoothing_rate=0 "
-                             "--set output.vtk=false --set output.png=false --set integrator.end_time=300 ";
-  Outcome run = runLamb3d(common + "--out " + out.string(), "grows");
+                             "--set output.vtk=false --set output.png=false ";
+  Outcome run = runLamb3d(common + "--set integrator.end_time=300 --out " + out.string(), "grows");
   ASSERT_TRUE(run.exited);
   EXPECT_EQ(run.exitCode, 3) << run.log;
   for (const char* part : {"energy growth at step ", ", t = ", "particle", "published operator has growing modes"})
@@ -115,8 +115,11 @@ TEST(Lamb3dStudy, AnUnfilteredPublishedRunThatGrowsIsStoppedWithExitThree) {
 
   // On purpose: stability.allow_growth runs on and says so in the summary.
   fs::remove_all(out);
-  run = runLamb3d(common + "--set stability.allow_growth=true --set study.strong_smoothing_rate=0 --out " +
-                      out.string(), "grows-allowed");
+  // (to t = 120, past the stop above; the free-faces case on the scene's own box, not the wide one)
+  run = runLamb3d(common + "--set integrator.end_time=120 --set stability.allow_growth=true "
+                           "--set study.strong_smoothing_rate=0 --set 'study.free_block_lower=[-3.5,-3.5,-7.0]' "
+                           "--set 'study.free_block_upper=[3.5,3.5,0.0]' --out " + out.string(),
+                  "grows-allowed");
   EXPECT_EQ(run.exitCode, 0) << run.log;
   const nlohmann::json summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
   EXPECT_NE(summary.dump().find("allow_growth let the run go on through"), std::string::npos);
