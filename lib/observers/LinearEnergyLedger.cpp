@@ -55,7 +55,8 @@ void LinearEnergyLedger::integrate(const StateView& state) {
     dashpotLoss_ += 0.5 * dt * (previousDashpotPower_ + power);
     previousDashpotPower_ = power;
   }
-  previousDisplacement_ = state.displacement;
+  // The next step needs this displacement only while the loads still act.
+  if (state.time <= options_.quietAfter) previousDisplacement_ = state.displacement;
   previousTime_ = state.time;
 }
 

@@ -34,8 +34,8 @@ namespace mfwave {
 class LinearSecondOrderSystem;
 
 struct LinearEnergyLedgerOptions {
-  // Every load is zero after this time (TimeFunction::quietAfter); +infinity: never quiet, only
-  // the balance is judged.
+  // Every load is zero after this time (TimeFunction::quietAfter). Both stops are judged only
+  // after it: +infinity (a load that never ends) records the ledger and stops nothing.
   Real quietAfter = std::numeric_limits<Real>::infinity();
   Real growthFactor = 100;
   // Seconds over which the envelope is taken: at least half the slowest period that matters
