@@ -14,12 +14,18 @@ namespace {
 // Length of [lo1, hi1] intersect [lo2, hi2] (0 when they do not overlap).
 Real overlap(Real lo1, Real hi1, Real lo2, Real hi2) { return std::max(Real(0), std::min(hi1, hi2) - std::max(lo1, lo2)); }
 
-}  // namespace
+// int of the tent of half-width s centred at 0 from -infinity to t.
+Real tentIntegralBelow(Real t, Real s) {
+  t = std::clamp(t, -s, s);
+  return t < 0 ? (t + s) * (t + s) / (2 * s) : s - (s - t) * (s - t) / (2 * s);
+}
+
+enum class PatchWeight { CellFraction, Tent };
 
 template <int D>
-std::vector<Real> patchLoadWeights(const ParticleSet<D>& particles, int face, const Vec<D>& centre,
-                                   const Vec<D>& halfWidths, Real spacing, const Vec<D>& boxLower,
-                                   const Vec<D>& boxUpper) {
+std::vector<Real> patchWeights(const ParticleSet<D>& particles, int face, const Vec<D>& centre,
+                               const Vec<D>& halfWidths, Real spacing, const Vec<D>& boxLower,
+                               const Vec<D>& boxUpper, PatchWeight kind) {
   if (face < 0 || face >= 2 * D)
     throw InputError("patch.face", "face " + std::to_string(face) + " does not exist on a " + std::to_string(D) +
                                        "-D box");
@@ -36,17 +42,48 @@ std::vector<Real> patchLoadWeights(const ParticleSet<D>& particles, int face, co
   for (Index a = 0; a < n; ++a) {
     if ((particles.faceMask[static_cast<std::size_t>(a)] & faceBit(face)) == 0) continue;
     const Vec<D> x = particles.position(a);
-    // Ding-Long-Wu eq. (37) integrated over the particle's cell, clipped to the face.
+    // Ding-Long-Wu eq. (37) integrated over the particle's cell (or against its tent), clipped to the face.
     Real fraction = 1;
     for (int j = 0; j < D; ++j) {
       if (j == normalAxis) continue;
-      const Real cellLo = std::max(x[j] - spacing / 2, boxLower[j]);
-      const Real cellHi = std::min(x[j] + spacing / 2, boxUpper[j]);
-      fraction *= overlap(cellLo, cellHi, centre[j] - halfWidths[j], centre[j] + halfWidths[j]) / spacing;
+      const Real lo = std::max(centre[j] - halfWidths[j], boxLower[j]) - x[j];
+      const Real hi = std::min(centre[j] + halfWidths[j], boxUpper[j]) - x[j];
+      if (kind == PatchWeight::Tent) {
+        fraction *= hi > lo ? (tentIntegralBelow(hi, spacing) - tentIntegralBelow(lo, spacing)) / spacing : 0;
+      } else {
+        const Real cellLo = std::max(x[j] - spacing / 2, boxLower[j]);
+        const Real cellHi = std::min(x[j] + spacing / 2, boxUpper[j]);
+        fraction *= overlap(cellLo, cellHi, centre[j] - halfWidths[j], centre[j] + halfWidths[j]) / spacing;
+      }
     }
     weight[static_cast<std::size_t>(a)] = fraction;
   }
   return weight;
+}
+
+}  // namespace
+
+template <int D>
+std::vector<Real> patchLoadWeights(const ParticleSet<D>& particles, int face, const Vec<D>& centre,
+                                   const Vec<D>& halfWidths, Real spacing, const Vec<D>& boxLower,
+                                   const Vec<D>& boxUpper) {
+  return patchWeights(particles, face, centre, halfWidths, spacing, boxLower, boxUpper, PatchWeight::CellFraction);
+}
+
+template <int D>
+std::vector<Real> patchTentWeights(const ParticleSet<D>& particles, int face, const Vec<D>& centre,
+                                   const Vec<D>& halfWidths, Real spacing, const Vec<D>& boxLower,
+                                   const Vec<D>& boxUpper) {
+  return patchWeights(particles, face, centre, halfWidths, spacing, boxLower, boxUpper, PatchWeight::Tent);
+}
+
+template <int D>
+Vector patchNodalForce(const std::vector<Real>& weights, Real spacing, const Vec<D>& traction) {
+  Vector f = Vector::Zero(static_cast<Index>(D * weights.size()));
+  const Real area = std::pow(spacing, D - 1);
+  for (std::size_t a = 0; a < weights.size(); ++a)
+    f.template segment<D>(static_cast<Index>(D * a)) = weights[a] * area * traction;
+  return f;
 }
 
 template <int D>
@@ -67,6 +104,9 @@ Vector patchFacetTractions(const BoundaryFacets<D>& facets, int face, const std:
 #define MFWAVE_INSTANTIATE(D)                                                                               \
   template std::vector<Real> patchLoadWeights<D>(const ParticleSet<D>&, int, const Vec<D>&, const Vec<D>&, \
                                                  Real, const Vec<D>&, const Vec<D>&);                      \
+  template std::vector<Real> patchTentWeights<D>(const ParticleSet<D>&, int, const Vec<D>&, const Vec<D>&, \
+                                                 Real, const Vec<D>&, const Vec<D>&);                      \
+  template Vector patchNodalForce<D>(const std::vector<Real>&, Real, const Vec<D>&);                        \
   template Vector patchFacetTractions<D>(const BoundaryFacets<D>&, int, const std::vector<Real>&, const Vec<D>&);
 MFWAVE_INSTANTIATE(1)
 MFWAVE_INSTANTIATE(2)

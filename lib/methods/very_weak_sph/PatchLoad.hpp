@@ -41,4 +41,19 @@ template <int D>
 Vector patchFacetTractions(const BoundaryFacets<D>& facets, int face, const std::vector<Real>& weights,
                            const Vec<D>& traction);
 
+// The Galerkin variant's load (GalerkinLattice.hpp) is the exact int_patch W_a t of the tent kernel
+// W_a (the tensor product of 1-D tents of half-width `spacing`, cut at the box): the weight of
+// particle a is int_{rectangle intersect face} W_a / spacing^(D-1), so that, like the cell
+// fractions, sum_a weight_a spacing^(D-1) = |rectangle intersect face|. Same arguments and errors
+// as patchLoadWeights.
+template <int D>
+std::vector<Real> patchTentWeights(const ParticleSet<D>& particles, int face, const Vec<D>& centre,
+                                   const Vec<D>& halfWidths, Real spacing, const Vec<D>& boxLower,
+                                   const Vec<D>& boxUpper);
+
+// The nodal force weight_a spacing^(D-1) traction on every physical particle (dof a * D + i), for
+// weights from patchTentWeights: the Galerkin load without a traction matrix.
+template <int D>
+Vector patchNodalForce(const std::vector<Real>& weights, Real spacing, const Vec<D>& traction);
+
 }  // namespace mfwave

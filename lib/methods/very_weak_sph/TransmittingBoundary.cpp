@@ -134,12 +134,35 @@ SparseMatrix dashpotsThroughTractionMatrix(const SparseMatrix& tractionMatrix, c
   return damping;
 }
 
+template <int D>
+SparseMatrix lumpedFacetDashpots(const BoundaryFacets<D>& facets, const Material& material,
+                                 std::uint8_t transmittingFaces) {
+  if ((transmittingFaces & ~allFaces(D)) != 0)
+    throw InputError("transmitting_faces", "mask " + std::to_string(transmittingFaces) + " has faces that a " +
+                                               std::to_string(D) + "-D box does not have");
+  const Index n = static_cast<Index>(facets.offsets.size()) - 1;
+  std::vector<Eigen::Triplet<Real, int>> triplets;
+  for (Index f = 0; f < facets.count(); ++f) {
+    const auto fi = static_cast<std::size_t>(f);
+    if (!onTransmittingFace(transmittingFaces, facets.face[fi])) continue;
+    const Mat<D> z = material.density() * facets.area[fi] * dashpotImpedance<D>(material, facets.normal[fi]);
+    const Index a = facets.particle[fi];
+    for (int l = 0; l < D; ++l)
+      for (int k = 0; k < D; ++k)
+        if (z(l, k) != 0) triplets.emplace_back(static_cast<int>(D * a + l), static_cast<int>(D * a + k), z(l, k));
+  }
+  SparseMatrix damping(static_cast<int>(D * n), static_cast<int>(D * n));
+  damping.setFromTriplets(triplets.begin(), triplets.end());
+  return damping;
+}
+
 #define MFWAVE_INSTANTIATE(D)                                                                               \
   template SparseMatrix assembleTransmittingDamping<D>(const ParticleSet<D>&, const NeighbourList&,         \
                                                        const Kernel&, const BoundaryFacets<D>&,              \
                                                        const Material&, std::uint8_t, DashpotLumping);        \
   template SparseMatrix dashpotsThroughTractionMatrix<D>(const SparseMatrix&, const BoundaryFacets<D>&,     \
-                                                         const Material&, std::uint8_t);
+                                                         const Material&, std::uint8_t);                   \
+  template SparseMatrix lumpedFacetDashpots<D>(const BoundaryFacets<D>&, const Material&, std::uint8_t);
 MFWAVE_INSTANTIATE(1)
 MFWAVE_INSTANTIATE(2)
 MFWAVE_INSTANTIATE(3)

@@ -70,4 +70,12 @@ template <int D>
 SparseMatrix dashpotsThroughTractionMatrix(const SparseMatrix& tractionMatrix, const BoundaryFacets<D>& facets,
                                            const Material& material, std::uint8_t transmittingFaces);
 
+// The Galerkin variant's dashpots (GalerkinLattice.hpp), lumped on each particle's own dofs:
+// C_aa = sum over the facets f of a on transmitting faces of rho A_f Z_f, A_f = int_face W_a the
+// facet's area. Block diagonal, symmetric positive semi-definite: they can only remove energy.
+// Throws InputError("transmitting_faces") for bits of faces a D-dimensional box does not have.
+template <int D>
+SparseMatrix lumpedFacetDashpots(const BoundaryFacets<D>& facets, const Material& material,
+                                 std::uint8_t transmittingFaces);
+
 }  // namespace mfwave

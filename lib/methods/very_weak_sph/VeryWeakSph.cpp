@@ -1,6 +1,7 @@
 #include "methods/very_weak_sph/VeryWeakSph.hpp"
 
 #include "methods/very_weak_sph/ConsistentCorrection.hpp"
+#include "methods/very_weak_sph/GalerkinLattice.hpp"
 #include "methods/very_weak_sph/KernelCorrection.hpp"
 #include "methods/very_weak_sph/StatisticalVolume.hpp"
 #include "methods/very_weak_sph/TractionLoad.hpp"
@@ -9,10 +10,36 @@
 #include <utility>
 
 namespace mfwave {
+namespace {
+
+// The Galerkin variant (GalerkinLattice.hpp): the kernel is the lattice's tensor-product tent, so
+// the kernel and neighbour list of the other variants are not used.
+template <int D>
+VeryWeakSph<D> assembleGalerkinVariant(const ParticleSet<D>& particles, const Material& material) {
+  GalerkinLattice<D> galerkin = assembleGalerkinLattice(particles, material);
+  VeryWeakSphData<D> data;
+  const Index n = particles.physicalCount();
+  data.volumeFraction.assign(static_cast<std::size_t>(n), 1.0);
+  data.alpha.assign(static_cast<std::size_t>(n), 1.0);
+  data.volume.resize(static_cast<std::size_t>(n));
+  for (Index a = 0; a < n; ++a)
+    data.volume[static_cast<std::size_t>(a)] = galerkin.mass.coeff(static_cast<int>(D * a), static_cast<int>(D * a)) /
+                                               material.density();
+  data.facets = std::move(galerkin.facets);
+  data.tractionMatrix.swap(galerkin.tractionMatrix);
+  VeryWeakSph<D> result{std::move(data), LinearSecondOrderSystem(std::move(galerkin.mass.markAsRValue()), SparseMatrix(),
+                                                                 std::move(galerkin.stiffness.markAsRValue()))};
+  result.data.operatorMatrix = result.system.stiffness();
+  result.data.operatorMatrix.coeffs() *= -1;
+  return result;
+}
+
+}  // namespace
 
 template <int D>
 VeryWeakSph<D> assembleVeryWeakSph(const ParticleSet<D>& particles, const NeighbourList& neighbours,
                                    const Kernel& kernel, const VeryWeakSphOptions& options) {
+  if (options.variant == VeryWeakSphVariant::Galerkin) return assembleGalerkinVariant(particles, options.material);
   checkVeryWeakInputs(particles, neighbours, kernel);
   const Index n = particles.physicalCount();
   VeryWeakSphData<D> data;

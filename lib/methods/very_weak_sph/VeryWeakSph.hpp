@@ -10,6 +10,10 @@
 // nodal displacement, M = rho I, alpha = 1 and K_sys = -K_corrected. Loads and dashpots must go
 // through the corrected data.tractionMatrix (dashpotsThroughTractionMatrix).
 //
+// With options.variant = Galerkin (GalerkinLattice.hpp) M = diag(rho int W_a), K_sys is the
+// symmetric positive semi-definite Galerkin stiffness, data.facets carry the face weights int W_a
+// and data.tractionMatrix the face's consistent mass; volume = int W_a, alpha = 1.
+//
 // The rest of the method plugs in around this system: transmitting dashpots (eqs. (31)-(32),
 // TransmittingBoundary: system.setDamping), traction and patch loads (eq. (19), TractionLoad and
 // PatchLoad: system.setForce), displacement conditions (eq. (30): the integrator's prescribed
@@ -36,7 +40,8 @@ struct VeryWeakSphData {
   std::vector<Real> volume;           // V_a, eq. (25)
   std::vector<Real> alpha;            // alpha_a, eq. (29) (1 with the correction off)
   BoundaryFacets<D> facets;           // normals and areas A, eq. (27)
-  SparseMatrix operatorMatrix;        // K: rho u'' = K u + f (eq. (23), before alpha); corrected if Consistent
+  SparseMatrix operatorMatrix;        // K: rho u'' = K u + f (eq. (23), before alpha); corrected if Consistent;
+                                      // Galerkin: M u'' = K u + f with M = diag(rho int W_a)
   SparseMatrix tractionMatrix;        // T: f = T t for facet tractions t (eq. (19)); corrected if Consistent
   // Consistent variant only (ConsistentCorrection.hpp): the largest relative residual of the
   // quadratic patch conditions over all rows, the number of particle rows corrected (0 if Published)

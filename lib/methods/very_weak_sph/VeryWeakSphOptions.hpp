@@ -9,7 +9,10 @@ namespace mfwave {
 // Published: the scheme as printed (state u^h, lumped mass rho / alpha). Consistent: every row of
 // the operator and of the traction matrix corrected to reproduce div sigma of quadratic fields
 // (ConsistentCorrection.hpp); the state is the nodal displacement with mass rho (no alpha).
-enum class VeryWeakSphVariant { Published, Consistent };
+// Galerkin: the weak form with the lattice's tensor-product tent kernel as test and trial function
+// (GalerkinLattice.hpp): symmetric positive semi-definite stiffness, lumped mass int rho W_a, stable
+// without any filter; needs a full box lattice and ignores the kernel and the boundary options.
+enum class VeryWeakSphVariant { Published, Consistent, Galerkin };
 
 struct VeryWeakSphOptions {
   VeryWeakSphVariant variant = VeryWeakSphVariant::Published;
