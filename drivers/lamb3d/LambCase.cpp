@@ -153,8 +153,9 @@ struct TractionTerm {
   const TimeFunction* timeFunction;
 };
 
+// The Galerkin variant takes the patch loads as the exact integrals of its tent kernel.
 std::vector<TractionTerm> tractionTerms(const Scene& scene, const ParticleSet<D>& particles,
-                                        const VeryWeakSph<D>& method, const GeometrySpec& geometry) {
+                                        const VeryWeakSph<D>& method, const GeometrySpec& geometry, bool galerkin) {
   std::vector<TractionTerm> terms;
   const BoundaryFacets<D>& facets = method.data.facets;
   const Vec<D> lower(geometry.lower.data()), upper(geometry.upper.data());
@@ -168,6 +169,12 @@ std::vector<TractionTerm> tractionTerms(const Scene& scene, const ParticleSet<D>
   }
   for (const LoadSpec& load : scene.loads) {
     const Vec<D> centre(load.centre.data()), halfWidths(load.halfWidth.data()), traction(load.traction.data());
+    if (galerkin) {  // the exact int_patch W_a t of the tent kernel (GalerkinLattice.hpp)
+      const std::vector<Real> weights =
+          patchTentWeights<D>(particles, load.face, centre, halfWidths, geometry.spacing, lower, upper);
+      terms.push_back({patchNodalForce<D>(weights, geometry.spacing, traction), &load.timeFunction});
+      continue;
+    }
     const std::vector<Real> weights =
         patchLoadWeights<D>(particles, load.face, centre, halfWidths, geometry.spacing, lower, upper);
     const Vector t = patchFacetTractions<D>(facets, load.face, weights, traction);
@@ -225,6 +232,9 @@ Real loadsQuietAfter(const Scene& scene) {
 
 // What makes this variant's energy grow, for the stop message (docs/theory/very-weak-sph.md).
 std::string likelyGrowthCause(const VeryWeakSphSpec& spec) {
+  if (spec.variant == "galerkin")
+    return "the galerkin variant's operator is symmetric positive semi-definite and its dashpots dissipative, so its "
+           "energy cannot grow at a stable step: look for a step above the stable limit (integrator.cfl) or a defect";
   if (spec.variant == "consistent")
     return "the consistent variant's corrected boundary rows are not symmetric and feed slowly growing modes, "
            "faster as the spacing falls (docs/theory/very-weak-sph.md); method.smoothing_rate only delays it. "
@@ -286,13 +296,24 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   // discretisation: the operator (eqs. 21-22, corrected rows for the consistent variant), the mass
   // (rho / alpha, eqs. 28-29, for the published one), dashpots (eqs. 31-32)
   VeryWeakSphOptions options = spec.options;
-  const bool consistent = spec.variant == "consistent";
-  options.variant = consistent ? VeryWeakSphVariant::Consistent : VeryWeakSphVariant::Published;
+  const bool consistent = spec.variant == "consistent", galerkin = spec.variant == "galerkin";
+  options.variant = galerkin     ? VeryWeakSphVariant::Galerkin
+                    : consistent ? VeryWeakSphVariant::Consistent
+                                 : VeryWeakSphVariant::Published;
+  if (galerkin && spec.deconvolution)
+    throw InputError("method.deconvolution", "the galerkin variant's state is the nodal displacement; there is no "
+                                             "kernel estimate to deconvolve (set it to false)");
+  if (galerkin && spec.smoothingRate > 0)
+    throw InputError("method.smoothing_rate", "the galerkin variant is stable without a filter and its kernel is not "
+                                              "the smoothing's; set it to 0");
   VeryWeakSph<D> method = assembleVeryWeakSph<D>(particles, neighbours, *kernel, options);
   SparseMatrix().swap(method.data.operatorMatrix);  // the system holds -K; one copy is enough (swap frees)
   LinearSecondOrderSystem& system = method.system;
   const std::uint8_t transmitting = settings.freeFaces ? 0 : facesWith(scene.boundaries, BoundaryType::Transmitting);
-  if (transmitting != 0 && consistent)
+  if (transmitting != 0 && galerkin)
+    // int_face W_a rho Z v on the particle's own dofs: symmetric positive semi-definite.
+    system.setDamping(lumpedFacetDashpots<D>(method.data.facets, options.material, transmitting));
+  else if (transmitting != 0 && consistent)
     // The dashpot tractions go through the corrected facet blocks, like every traction.
     system.setDamping(dashpotsThroughTractionMatrix<D>(method.data.tractionMatrix, method.data.facets,
                                                        options.material, transmitting));
@@ -307,7 +328,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     if (settings.freeFaces) s.boundaries.clear();
     return s;
   }();
-  std::vector<TractionTerm> terms = tractionTerms(caseScene, particles, method, settings.geometry);
+  std::vector<TractionTerm> terms = tractionTerms(caseScene, particles, method, settings.geometry, galerkin);
   system.setForce([terms = std::move(terms)](Real t, Vector& f) {
     for (const TractionTerm& term : terms) {
       const Real scale = (*term.timeFunction)(t);
