@@ -160,7 +160,11 @@ GalerkinLattice<D> assembleGalerkinLattice(const ParticleSet<D>& particles, cons
   // row D a + i: each particle fills its own columns, in parallel, into precomputed slots.
   std::vector<int> columnStart(static_cast<std::size_t>(dofs) + 1, 0);
   for (Index a = 0; a < n; ++a) {
-    const auto count = static_cast<int>(latticeNeighbours<D>(lattice, lattice.node[static_cast<std::size_t>(a)]).size());
+    int count = 1;  // lattice neighbours within one node per axis, the particle itself included
+    for (int ax = 0; ax < D; ++ax) {
+      const Index p = lattice.node[static_cast<std::size_t>(a)][static_cast<std::size_t>(ax)];
+      count *= 1 + (p > 0 ? 1 : 0) + (p < lattice.intervals[static_cast<std::size_t>(ax)] ? 1 : 0);
+    }
     for (int i = 0; i < D; ++i) columnStart[static_cast<std::size_t>(D * a + i) + 1] = D * count;
   }
   for (std::size_t c = 0; c < static_cast<std::size_t>(dofs); ++c) columnStart[c + 1] += columnStart[c];

@@ -11,9 +11,11 @@
 //   M_a  = rho int W_a                   (row-sum lumped mass, positive),
 //   f_a  = int_boundary W_a t            (the consistent load of facet tractions),
 // and dashpots rho Z_f int_face W_a on the particle's own dofs are symmetric positive semi-definite.
-// So every frequency is real and dashpots can only remove energy. Because the weak form is exact
-// for polynomial fields, the rows pass the quadratic patch test at interior, face, edge and corner
-// particles: for u quadratic, -(K u)_a + f_a = int W_a div sigma = M_a / rho div sigma exactly.
+// So every frequency is real and dashpots can only remove energy. K acts on the tent interpolant of
+// u, which is exact for linear fields: the rows pass the translation and uniform-strain patch tests
+// at every particle. For quadratic fields they are exact in 1-D and at interior and face particles,
+// but at 2-D corners and 3-D edges and corners the mixed terms see the interpolant's bubble error
+// and miss by 0.177 of the cancelling terms (GalerkinLatticeTest, docs/theory/very-weak-sph.md).
 //
 // On a lattice the integrals factor axis by axis (the kernel is a tensor product), so every entry
 // is a product of 1-D entries: int W_p' W_q', int W_p W_q', int W_p W_q over one axis. Derivation

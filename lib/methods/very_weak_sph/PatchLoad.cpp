@@ -46,9 +46,9 @@ std::vector<Real> patchWeights(const ParticleSet<D>& particles, int face, const 
     Real fraction = 1;
     for (int j = 0; j < D; ++j) {
       if (j == normalAxis) continue;
-      const Real lo = std::max(centre[j] - halfWidths[j], boxLower[j]) - x[j];
-      const Real hi = std::min(centre[j] + halfWidths[j], boxUpper[j]) - x[j];
-      if (kind == PatchWeight::Tent) {
+      if (kind == PatchWeight::Tent) {  // the rectangle clipped to the face, relative to the particle
+        const Real lo = std::max(centre[j] - halfWidths[j], boxLower[j]) - x[j];
+        const Real hi = std::min(centre[j] + halfWidths[j], boxUpper[j]) - x[j];
         fraction *= hi > lo ? (tentIntegralBelow(hi, spacing) - tentIntegralBelow(lo, spacing)) / spacing : 0;
       } else {
         const Real cellLo = std::max(x[j] - spacing / 2, boxLower[j]);

@@ -16,6 +16,14 @@ using BlockRow = std::vector<std::pair<Index, Mat<D>>>;  // (column particle, D 
 
 bool onTransmittingFace(std::uint8_t mask, int face) { return (mask & faceBit(face)) != 0; }
 
+// Throws InputError("transmitting_faces") for bits of faces a D-dimensional box does not have.
+template <int D>
+void checkTransmittingMask(std::uint8_t transmittingFaces) {
+  if ((transmittingFaces & ~allFaces(D)) != 0)
+    throw InputError("transmitting_faces", "mask " + std::to_string(transmittingFaces) + " has faces that a " +
+                                               std::to_string(D) + "-D box does not have");
+}
+
 // Ding-Long-Wu eq. (32): rho Z_k (sum_b W_ab A_b) on particle a, for each of its facets on a
 // transmitting face k; the sum runs over the neighbours' facets on the same face k.
 template <int D>
@@ -75,9 +83,7 @@ SparseMatrix assembleTransmittingDamping(const ParticleSet<D>& particles, const 
                                          const Material& material, std::uint8_t transmittingFaces,
                                          DashpotLumping lumping) {
   checkVeryWeakInputs(particles, neighbours, kernel);
-  if ((transmittingFaces & ~allFaces(D)) != 0)
-    throw InputError("transmitting_faces", "mask " + std::to_string(transmittingFaces) + " has faces that a " +
-                                               std::to_string(D) + "-D box does not have");
+  checkTransmittingMask<D>(transmittingFaces);
   const Index n = particles.physicalCount();
   if (static_cast<Index>(facets.offsets.size()) != n + 1 ||
       facets.face.size() != facets.particle.size() || facets.area.size() != facets.particle.size() ||
@@ -109,9 +115,7 @@ SparseMatrix assembleTransmittingDamping(const ParticleSet<D>& particles, const 
 template <int D>
 SparseMatrix dashpotsThroughTractionMatrix(const SparseMatrix& tractionMatrix, const BoundaryFacets<D>& facets,
                                            const Material& material, std::uint8_t transmittingFaces) {
-  if ((transmittingFaces & ~allFaces(D)) != 0)
-    throw InputError("transmitting_faces", "mask " + std::to_string(transmittingFaces) + " has faces that a " +
-                                               std::to_string(D) + "-D box does not have");
+  checkTransmittingMask<D>(transmittingFaces);
   const Index n = static_cast<Index>(facets.offsets.size()) - 1;
   if (n < 0 || tractionMatrix.cols() != D * facets.count() || tractionMatrix.rows() != D * n ||
       facets.face.size() != facets.particle.size() || facets.normal.size() != facets.particle.size())
@@ -137,9 +141,7 @@ SparseMatrix dashpotsThroughTractionMatrix(const SparseMatrix& tractionMatrix, c
 template <int D>
 SparseMatrix lumpedFacetDashpots(const BoundaryFacets<D>& facets, const Material& material,
                                  std::uint8_t transmittingFaces) {
-  if ((transmittingFaces & ~allFaces(D)) != 0)
-    throw InputError("transmitting_faces", "mask " + std::to_string(transmittingFaces) + " has faces that a " +
-                                               std::to_string(D) + "-D box does not have");
+  checkTransmittingMask<D>(transmittingFaces);
   const Index n = static_cast<Index>(facets.offsets.size()) - 1;
   std::vector<Eigen::Triplet<Real, int>> triplets;
   for (Index f = 0; f < facets.count(); ++f) {
