@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The README's main-study command: installs what is missing, builds the release preset, runs the
 # main study end to end and plots it: lamb3d, the Ding-Long-Wu 3-D Lamb problem by very weak form
-# SPH (docs/studies/lamb3d.md). About two minutes on 2 cores and 1.3 GiB of memory (the finest case
+# SPH (docs/studies/lamb3d.md). About 95 s on 2 cores and 2.1 GiB of memory (the finest case
 # has 185,193 particles). Writes CSV, PNG and VTK files and prints errors and cost.
 set -euo pipefail
 cd "$(dirname "$0")/.."

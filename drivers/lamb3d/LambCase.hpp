@@ -15,7 +15,7 @@ namespace mfwave::lamb3d {
 
 // What distinguishes one run from the scene's own set-up.
 struct CaseSettings {
-  std::string name;                 // "consistent_0.5", "published_0.25", "strong_filter", "free_block", ...
+  std::string name;                 // "galerkin_0.5", "published_0.25", "strong_filter", "free_block", ...
   GeometrySpec geometry;            // box and spacing of this run
   bool freeFaces = false;           // every face free (the large-block comparison)
   VeryWeakSphSpec method;           // variant, corrections, smoothing (rate at this spacing), deconvolution

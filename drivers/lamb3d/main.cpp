@@ -5,7 +5,7 @@
 // response of the half-space (Pekeris, integrated over the square and convolved with the pulse).
 //
 // Cases, each one run of the same scene:
-//   <variant>_<dx>   the scene's variant (method.variant: consistent by default) at geometry.spacing
+//   <variant>_<dx>   the scene's variant (method.variant: galerkin by default) at geometry.spacing
 //                    (with frames) and at every other entry of study.spacings
 //   published_<dx>   with study.compare_published: the scheme as printed, with the paper's filter and
 //                    deconvolution, at every spacing (at the scene's spacing: the paper's Fig. 1-3)

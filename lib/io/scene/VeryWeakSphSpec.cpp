@@ -8,9 +8,10 @@ void addVeryWeakSphKeys(SceneSchema& schema) {
   using T = ValueType;
   const std::string when = "name = very_weak_sph";
   schema.addChoice("method.name", "very_weak_sph");
-  schema.add("method.variant", T::String).defaultsTo("\"consistent\"").oneOf({"consistent", "published", "galerkin"}).when(when)
-      .describedAs("consistent: rows corrected to reproduce quadratic fields (converges); published: Ding-Long-Wu as "
-                   "printed; galerkin: symmetric weak form with the lattice's tent kernel, stable without a filter");
+  schema.add("method.variant", T::String).defaultsTo("\"galerkin\"").oneOf({"galerkin", "consistent", "published"}).when(when)
+      .describedAs("galerkin: symmetric weak form with the lattice's tent kernel, stable without a filter (lattices "
+                   "only; ignores method.kernel); consistent: rows corrected to reproduce quadratic fields, not "
+                   "symmetric, grows in long 3-D runs without a filter; published: Ding-Long-Wu as printed");
   schema.add("method.kernel", T::String).defaultsTo("\"cubic_spline\"").oneOf(kernelNames()).when(when)
       .describedAs("SPH kernel W (Ding-Long-Wu use the cubic spline, eq. 38)");
   schema.add("method.smoothing_length_ratio", T::Number).withUnit("-").defaultsTo("1.0").positive().when(when)

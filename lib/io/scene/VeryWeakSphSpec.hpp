@@ -13,7 +13,7 @@
 namespace mfwave {
 
 struct VeryWeakSphSpec {
-  std::string variant = "consistent";    // "consistent" (patch-test exact) or "published"
+  std::string variant = "galerkin";      // "galerkin" (symmetric, stable by construction), "consistent" or "published"
   std::string kernel = "cubic_spline";   // kernelNames()
   Real smoothingLengthRatio = 1;         // h / dx
   VeryWeakSphOptions options;            // material and the four correction switches

@@ -1,8 +1,8 @@
 // The Galerkin variant (GalerkinLattice.hpp) is stable by construction: K symmetric positive
 // semi-definite with exactly the rigid-body null space, the interior symbol non-negative at every
 // wavenumber, the central-difference energy conserved on a free block and never raised by the
-// dashpots, and every row exact for quadratic fields (patch tests) at interior, face, edge and
-// corner particles.
+// dashpots. Its rows are exact for linear fields everywhere and for quadratic ones at interior and
+// face particles (not at 2-D corners and 3-D edges and corners: 0.177 of the cancelling terms).
 
 #include "core/Error.hpp"
 #include "integrators/CentralDifference.hpp"
