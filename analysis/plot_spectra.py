@@ -19,6 +19,7 @@ from plotting import finish_axes, read_table, save_atomically  # selects the Agg
 import matplotlib.pyplot as plt  # noqa: E402
 
 COLOURS = {"finite_difference": "black", "vwsph_published": "tab:red", "vwsph_consistent": "tab:blue",
+           "vwsph_galerkin": "tab:cyan",
            "rkcm": "tab:green", "rbcm": "tab:olive", "ulsph": "tab:orange", "ulsph_corrected": "tab:purple"}
 STYLES = {"axis": "-", "diagonal": "--"}
 

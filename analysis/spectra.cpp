@@ -42,8 +42,8 @@ SceneSchema spectraSchema() {
   SceneSchema schema;
   schema.add("study", ValueType::Table).describedAs("the spectra study (every key has a default)");
   schema.add("study.methods", ValueType::StringArray).withUnit("-")
-      .defaultsTo("[\"finite_difference\", \"vwsph_published\", \"vwsph_consistent\", \"rkcm\", \"rbcm\", \"ulsph\", "
-                  "\"ulsph_corrected\"]")
+      .defaultsTo("[\"finite_difference\", \"vwsph_published\", \"vwsph_consistent\", \"vwsph_galerkin\", \"rkcm\", "
+                  "\"rbcm\", \"ulsph\", \"ulsph_corrected\"]")
       .oneOf(latticeMethodNames()).describedAs("methods (rbcm in 1-D only: its global functions make 2-D/3-D rows costly)");
   schema.add("study.dimensions", ValueType::NumberArray).withUnit("-").defaultsTo("[1.0, 2.0, 3.0]").between(1, 3)
       .describedAs("lattice dimensions");

@@ -201,12 +201,7 @@ int main(int argc, char** argv) {
     settings.quiet = opt.quiet;
     RunSummary summary;
     for (const auto& name : variantNames) {
-      const auto variant = parseVeryWeakSphDispersionVariant(name, "study.variants");
-      if (variant == VeryWeakSphDispersionVariant::Consistent && !veryWeakSphConsistentVariantAvailable()) {
-        summary.notes.push_back("consistent variant: not in this build of the method, skipped");
-        continue;
-      }
-      settings.variants.push_back(variant);
+      settings.variants.push_back(parseVeryWeakSphDispersionVariant(name, "study.variants"));
     }
     reader.checkAllKeysRead();
     const std::string folder = prepareOutputFolder(opt, sceneFolder, reader);

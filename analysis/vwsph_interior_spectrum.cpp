@@ -1,6 +1,6 @@
 // vwsph_interior_spectrum: is the very weak form SPH's interior row stable for central difference?
 // For each dimension (1, 2, 3), variant (published, consistent), kernel and smoothing length ratio
-// h / dx, the smallest and largest omega^2 of the interior stencil's symbol over the whole
+// h / dx (and once per dimension the Galerkin variant, whose tent kernel has no such choices), the smallest and largest omega^2 of the interior stencil's symbol over the whole
 // Brillouin zone (LatticeDispersion symbolExtremes, k dx = pi j / n on each axis) and where the
 // smallest sits. omega^2 < 0 is a mode that grows like exp(sqrt(-omega^2) t) whatever the step:
 // no time integrator or step can hold it. Results: docs/theory/very-weak-sph.md, "Why the 3-D
@@ -91,25 +91,32 @@ Options parse(int argc, char** argv) {
 }
 
 template <int D>
-void rowsFor(const Options& o, std::ostream& csv) {
+void row(VeryWeakSphDispersionVariant variant, const std::string& kernel, Real ratio, int samples, std::ostream& csv) {
   const Material material = Material::fromLame(1, 1, 1);
+  const VeryWeakSphLatticeStencil<D> s = veryWeakSphInteriorStencil<D>(variant, kernel, ratio, material);
+  const SymbolExtremes<D> e = symbolExtremes(s.stencil, s.spacing, samples);
+  const bool galerkin = variant == VeryWeakSphDispersionVariant::Galerkin;
+  const std::string kernelName = galerkin ? "tent" : kernel;
+  std::ostringstream at;
+  for (int a = 0; a < D; ++a) at << (a ? " " : "") << std::setprecision(4) << e.smallestAt(a);
+  const Real relative = e.smallest / e.largest;
+  csv << D << ',' << veryWeakSphDispersionVariantName(variant) << ',' << kernelName << ',' << ratio << ','
+      << std::setprecision(10) << e.smallest << ',' << e.largest << ',' << relative << ',' << at.str() << ','
+      << e.largestImaginaryRatio << ',' << e.largestAsymmetryRatio << '\n';
+  std::cout << "  " << D << "-D " << std::left << std::setw(11) << veryWeakSphDispersionVariantName(variant)
+            << std::setw(15) << kernelName << std::right << " h/dx " << std::setw(5) << ratio
+            << "  min omega^2 / max " << std::setw(12) << std::setprecision(4) << relative << "  at k dx = ("
+            << at.str() << ")" << (relative < -1e-12 ? "  GROWS" : "") << '\n';
+}
+
+template <int D>
+void rowsFor(const Options& o, std::ostream& csv) {
   for (const VeryWeakSphDispersionVariant variant :
        {VeryWeakSphDispersionVariant::Published, VeryWeakSphDispersionVariant::Consistent})
     for (const std::string& kernel : o.kernels)
-      for (const Real ratio : o.ratios) {
-        const VeryWeakSphLatticeStencil<D> s = veryWeakSphInteriorStencil<D>(variant, kernel, ratio, material);
-        const SymbolExtremes<D> e = symbolExtremes(s.stencil, s.spacing, o.samples);
-        std::ostringstream at;
-        for (int a = 0; a < D; ++a) at << (a ? " " : "") << std::setprecision(4) << e.smallestAt(a);
-        const Real relative = e.smallest / e.largest;
-        csv << D << ',' << veryWeakSphDispersionVariantName(variant) << ',' << kernel << ',' << ratio << ','
-            << std::setprecision(10) << e.smallest << ',' << e.largest << ',' << relative << ',' << at.str() << ','
-            << e.largestImaginaryRatio << ',' << e.largestAsymmetryRatio << '\n';
-        std::cout << "  " << D << "-D " << std::left << std::setw(11) << veryWeakSphDispersionVariantName(variant)
-                  << std::setw(15) << kernel << std::right << " h/dx " << std::setw(5) << ratio
-                  << "  min omega^2 / max " << std::setw(12) << std::setprecision(4) << relative << "  at k dx = ("
-                  << at.str() << ")" << (relative < -1e-12 ? "  GROWS" : "") << '\n';
-      }
+      for (const Real ratio : o.ratios) row<D>(variant, kernel, ratio, o.samples, csv);
+  // the tent of half-width dx: kernel and h / dx do not enter
+  row<D>(VeryWeakSphDispersionVariant::Galerkin, "cubic_spline", 1, o.samples, csv);
 }
 
 }  // namespace

@@ -9,7 +9,7 @@ namespace mfwave {
 
 const std::vector<std::string>& latticeMethodNames() {
   static const std::vector<std::string> names = {"finite_difference", "vwsph_published", "vwsph_consistent",
-                                                 "rkcm", "rbcm", "ulsph", "ulsph_corrected"};
+                                                 "vwsph_galerkin", "rkcm", "rbcm", "ulsph", "ulsph_corrected"};
   return names;
 }
 
@@ -24,17 +24,16 @@ MethodLatticeStencil<D> latticeMethodStencil(const std::string& method, const La
                                              const std::string& key) {
   if (!latticeMethodAvailable(method, D))
     throw InputError(key, "'" + method + "' is not a lattice method in " + std::to_string(D) +
-                              "-D (finite_difference, vwsph_published, vwsph_consistent, rkcm, rbcm (1-D), ulsph, "
-                              "ulsph_corrected)");
+                              "-D (finite_difference, vwsph_published, vwsph_consistent, vwsph_galerkin, rkcm, rbcm (1-D), "
+                              "ulsph, ulsph_corrected)");
   if (method == "finite_difference") return finiteDifferenceInteriorStencil<D>(spacing, s.material.pWaveSpeed());
   if (method == "rkcm")
     return collocationInteriorStencil<D>(CollocationBasis::ReproducingKernel, s.rkOrder, s.rkSupportRatio, s.material,
                                          spacing);
   if (method == "rbcm")
     return collocationInteriorStencil<D>(CollocationBasis::RadialBasis, 0, s.rbShapeRatio, s.material, spacing);
-  if (method == "vwsph_published" || method == "vwsph_consistent") {
-    const auto variant = method == "vwsph_published" ? VeryWeakSphDispersionVariant::Published
-                                                     : VeryWeakSphDispersionVariant::Consistent;
+  if (method.rfind("vwsph_", 0) == 0) {
+    const auto variant = parseVeryWeakSphDispersionVariant(method.substr(6), key);
     const auto lattice =
         veryWeakSphInteriorStencil<D>(variant, s.kernel, s.smoothingLengthRatio, s.material, spacing);
     MethodLatticeStencil<D> result;

@@ -19,8 +19,8 @@ struct LatticeMethodSettings {
   Real rbShapeRatio = 3;                // RB a_r / dx
 };
 
-// "finite_difference", "vwsph_published", "vwsph_consistent", "rkcm", "rbcm", "ulsph",
-// "ulsph_corrected".
+// "finite_difference", "vwsph_published", "vwsph_consistent", "vwsph_galerkin", "rkcm", "rbcm",
+// "ulsph", "ulsph_corrected".
 const std::vector<std::string>& latticeMethodNames();
 
 // Whether the method is offered in D dimensions (rbcm: 1-D only, its global functions make a 2-D

@@ -10,31 +10,10 @@
 #include "particles/Lattice.hpp"
 
 #include <cmath>
-#include <type_traits>
-#include <utility>
 
 namespace mfwave {
 
 namespace {
-
-// Whether the options carry a `variant` member (the consistent variant of the method), detected
-// at compile time so that this file builds with and without it.
-template <class Options, class = void>
-struct HasVariant : std::false_type {};
-template <class Options>
-struct HasVariant<Options, std::void_t<decltype(std::declval<Options&>().variant)>> : std::true_type {};
-
-template <class Options>
-bool selectConsistent(Options& options) {
-  if constexpr (HasVariant<Options>::value) {
-    using Variant = std::decay_t<decltype(options.variant)>;
-    options.variant = Variant::Consistent;
-    return true;
-  } else {
-    (void)options;
-    return false;
-  }
-}
 
 template <int D>
 Index findParticle(const ParticleSet<D>& particles, const Vec<D>& x, Real tolerance) {
@@ -46,7 +25,7 @@ Index findParticle(const ParticleSet<D>& particles, const Vec<D>& x, Real tolera
 }  // namespace
 
 const std::vector<std::string>& veryWeakSphDispersionVariantNames() {
-  static const std::vector<std::string> names = {"published", "published_row_sum", "consistent"};
+  static const std::vector<std::string> names = {"published", "published_row_sum", "consistent", "galerkin"};
   return names;
 }
 
@@ -55,6 +34,7 @@ const char* veryWeakSphDispersionVariantName(VeryWeakSphDispersionVariant varian
     case VeryWeakSphDispersionVariant::Published: return "published";
     case VeryWeakSphDispersionVariant::PublishedRowSumCorrected: return "published_row_sum";
     case VeryWeakSphDispersionVariant::Consistent: return "consistent";
+    case VeryWeakSphDispersionVariant::Galerkin: return "galerkin";
   }
   return "?";
 }
@@ -63,10 +43,9 @@ VeryWeakSphDispersionVariant parseVeryWeakSphDispersionVariant(const std::string
   if (name == "published") return VeryWeakSphDispersionVariant::Published;
   if (name == "published_row_sum") return VeryWeakSphDispersionVariant::PublishedRowSumCorrected;
   if (name == "consistent") return VeryWeakSphDispersionVariant::Consistent;
-  throw InputError(key, "unknown variant '" + name + "' (published, published_row_sum, consistent)");
+  if (name == "galerkin") return VeryWeakSphDispersionVariant::Galerkin;
+  throw InputError(key, "unknown variant '" + name + "' (published, published_row_sum, consistent, galerkin)");
 }
-
-bool veryWeakSphConsistentVariantAvailable() { return HasVariant<VeryWeakSphOptions>::value; }
 
 template <int D>
 VeryWeakSphLatticeStencil<D> veryWeakSphInteriorStencil(VeryWeakSphDispersionVariant variant,
@@ -77,8 +56,8 @@ VeryWeakSphLatticeStencil<D> veryWeakSphInteriorStencil(VeryWeakSphDispersionVar
   if (!(spacing > 0) || !std::isfinite(spacing)) throw InputError("spacing", "must be positive and finite");
   VeryWeakSphOptions options;
   options.material = material;
-  if (variant == VeryWeakSphDispersionVariant::Consistent && !selectConsistent(options))
-    throw InputError("variant", "the consistent variant of the very weak form SPH is not in this build");
+  if (variant == VeryWeakSphDispersionVariant::Consistent) options.variant = VeryWeakSphVariant::Consistent;
+  if (variant == VeryWeakSphDispersionVariant::Galerkin) options.variant = VeryWeakSphVariant::Galerkin;
 
   const auto kernel = makeKernel(kernelName, D, smoothingLengthRatio * spacing);
   // Support in lattice spacings (the support is open: W = 0 at its radius).

@@ -16,19 +16,16 @@ namespace mfwave {
 enum class VeryWeakSphDispersionVariant {
   Published,                 // the scheme as published (VeryWeakSphOptions defaults)
   PublishedRowSumCorrected,  // the published row with its self block corrected to sum to zero
-  Consistent,                // VeryWeakSphVariant::Consistent, when the method has it
+  Consistent,                // VeryWeakSphVariant::Consistent
+  Galerkin,                  // VeryWeakSphVariant::Galerkin (tent kernel; kernel and h / dx do not enter)
 };
 
-// "published", "published_row_sum", "consistent".
+// "published", "published_row_sum", "consistent", "galerkin".
 const std::vector<std::string>& veryWeakSphDispersionVariantNames();
 const char* veryWeakSphDispersionVariantName(VeryWeakSphDispersionVariant variant);
 // Throws InputError(key) for an unknown name.
 VeryWeakSphDispersionVariant parseVeryWeakSphDispersionVariant(const std::string& name,
                                                                const std::string& key = "variant");
-
-// True when VeryWeakSphOptions has the member `variant` (enum VeryWeakSphVariant with an
-// enumerator Consistent) in this tree.
-bool veryWeakSphConsistentVariantAvailable();
 
 template <int D>
 struct VeryWeakSphLatticeStencil {
@@ -45,8 +42,9 @@ struct VeryWeakSphLatticeStencil {
 };
 
 // The centre stencil of a lattice block at spacing dx with smoothing length ratio * dx (kernel by
-// name, kernelNames()). Throws InputError("variant") for Consistent when it is not available,
-// InputError("smoothing_length_ratio") for ratio <= 0, InputError("spacing") for spacing <= 0.
+// name, kernelNames(); the Galerkin variant's tent kernel ignores both, but the block is sized by
+// them). Throws InputError("smoothing_length_ratio") for ratio <= 0, InputError("spacing") for
+// spacing <= 0.
 template <int D>
 VeryWeakSphLatticeStencil<D> veryWeakSphInteriorStencil(VeryWeakSphDispersionVariant variant,
                                                         const std::string& kernelName, Real smoothingLengthRatio,
