@@ -6,6 +6,8 @@
 //
 //   plane2d --scene data/scenes/plane2d.toml [--set 'study.cells=[8,16]'] [--out DIR]
 
+#include "analysis/InteriorStability.hpp"
+#include "analysis/MethodLatticeStencils.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "integrators/CentralDifference.hpp"
@@ -27,6 +29,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -41,8 +44,9 @@ SceneSchema plane2dSchema() {
   schema.addChoice("method.name", "reproducing_kernel");
   schema.add("method.order", ValueType::Integer).withUnit("-").defaultsTo("2").between(2, 3)
       .describedAs("RK basis order m (collocation needs second derivatives: m >= 2)");
-  schema.add("method.support_ratio", ValueType::Number).withUnit("-").defaultsTo("3.3").positive()
-      .describedAs("cubic B-spline support radius a / h");
+  schema.add("method.support_ratio", ValueType::Number).withUnit("-").defaultsTo("2.5").positive()
+      .describedAs("cubic B-spline support radius a / h (above about 2.7 the 2-D interior rows have growing modes: "
+                   "refused)");
   schema.add("study", ValueType::Table).describedAs("the convergence study of plane2d");
   schema.add("study.cells", ValueType::NumberArray).withUnit("-").required()
       .describedAs("resolutions: cells per side (h = side / cells); geometry.spacing is ignored");
@@ -161,6 +165,27 @@ CaseResult runCase(const Scene& scene, int order, Real ratio, Real w, int cells)
   return {cells, h, dt, criticalDt, stats.steps, std::sqrt(eu / nu), std::sqrt(ev / nv), stats.wallSeconds};
 }
 
+// Before any step: the exact spectrum of the interior rows on a periodic lattice (at h = 1: with a / h
+// fixed the rows scale as 1 / h^2, so one spectrum serves every resolution). omega^2 < 0 grows at
+// every time step, whatever the integrator: RK collocation at a / h >= 3 in 2-D, where the mass
+// symbol changes sign (docs/studies/spectra.md). Refused with exit 3 unless stability.allow_growth,
+// which runs on and says so in the summary (the returned notes).
+std::vector<std::string> checkInteriorStability(const Scene& scene, int order, Real ratio) {
+  const MethodLatticeStencil<2> rows = collocationInteriorStencil<2>(CollocationBasis::ReproducingKernel, order, ratio,
+                                                                     scene.material.material(), 1.0);
+  const InteriorStability<2> verdict = interiorStability<2>(rows.acceleration, rows.mass, 1.0, 32);
+  if (!verdict.growing()) return {};
+  std::ostringstream what;
+  what << "the RK collocation operator (method.order = " << order << ", method.support_ratio = " << ratio
+       << ") has growing modes: its interior " << verdict.describe()
+       << "; such a mode grows at every time step";
+  if (!scene.stability.allowGrowth)
+    throw InstabilityError(what.str() + ", so the run is refused before stepping (a smaller method.support_ratio, "
+                                        "e.g. 2.5, is stable in 2-D; stability.allow_growth = true runs it anyway)",
+                           0, 0.0, -1);
+  return {"stability.allow_growth: ran although " + what.str()};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -185,6 +210,7 @@ int main(int argc, char** argv) {
       cells.push_back(static_cast<int>(c));
     }
     reader.checkAllKeysRead();
+    const std::vector<std::string> stabilityNotes = checkInteriorStability(scene, order, ratio);
     const std::string folder = prepareOutputFolder(cli.options(), scene.output.folder, reader);
     std::vector<CaseResult> results;
     for (int c : cells) {
@@ -222,6 +248,7 @@ int main(int argc, char** argv) {
       }
     }
     table.commit();
+    summary.notes.insert(summary.notes.end(), stabilityNotes.begin(), stabilityNotes.end());
     summary.simulatedTime = scene.integrator.endTime;
     summary.files = {"scene.resolved.toml", "convergence.csv", "summary.json"};
     summary.finish();

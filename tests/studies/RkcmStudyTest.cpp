@@ -1,11 +1,13 @@
 // Runs the bar1d and plane2d drivers (Luo-Liu-Huang RK collocation) as a user would and checks
-// their convergence tables.
+// their convergence tables, and that an unstable support is refused.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -90,4 +92,30 @@ TEST(Plane2dStudy, PlaneStrainConvergesAtSecondOrderInL2) {
   EXPECT_NEAR(num(rows[2], 6), 2.0, 0.2);
   EXPECT_NEAR(num(rows[2], 8), 2.0, 0.2);
   EXPECT_LT(num(rows[2], 5), 6e-3);
+}
+
+// Issue 17: RK collocation at a / h = 3 in 2-D has interior modes with omega^2 < 0 (they grow at
+// every step; the run used to end with exit 0 and an error of 1e121). The driver now refuses it
+// before stepping, with exit 3 naming the key, the wavenumber and the size; no summary is written.
+// stability.allow_growth runs it anyway and says so in the summary.
+TEST(Plane2dStudy, GrowingInteriorModesAreRefusedBeforeStepping) {
+  const std::string out = scratch("plane2d-unstable");
+  const std::string base = std::string(PLANE2D_EXECUTABLE) + " --quiet --scene " + SCENES_FOLDER +
+                           "/plane2d.toml --out " + out + " --set 'study.cells=[8]' --set method.support_ratio=3.0 ";
+  const int refused = std::system((base + "> " + out + ".log 2>&1").c_str());
+  ASSERT_TRUE(WIFEXITED(refused));
+  EXPECT_EQ(WEXITSTATUS(refused), 3);
+  std::ifstream log(out + ".log");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  for (const char* part : {"growing modes", "method.support_ratio = 3", "omega^2 reaches -0.23", "k dx = (2.7",
+                           "refused before stepping", "stability.allow_growth"})
+    EXPECT_NE(text.find(part), std::string::npos) << part << " missing in: " << text;
+  EXPECT_FALSE(std::filesystem::exists(out + "/summary.json"));
+
+  const int allowed = std::system((base + "--set stability.allow_growth=true > " + out + "-allowed.log 2>&1").c_str());
+  ASSERT_TRUE(WIFEXITED(allowed));
+  EXPECT_EQ(WEXITSTATUS(allowed), 0);
+  std::ifstream summary(out + "/summary.json");
+  const std::string json((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
+  EXPECT_NE(json.find("stability.allow_growth: ran although"), std::string::npos) << json;
 }
