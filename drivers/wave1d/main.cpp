@@ -30,6 +30,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,7 @@ struct Study {
   int mode = 1;
   std::vector<int> cells;
   std::vector<std::string> integrators;
+  std::vector<std::string> notes;  // for the summary: steps run above the limit on purpose
 };
 
 struct CaseResult {
@@ -132,6 +134,33 @@ CaseResult runCase(const Study& study, const std::string& integratorName, int ce
           energy.maxRelativeDrift(), stats.wallSeconds};
 }
 
+// Before any work: central difference and leapfrog are stable for dt <= 2 / omega_max, which for
+// the finite-difference Laplacian is exactly dx / c (the Gershgorin bound runCase uses). A step
+// above it grows at every resolution, so it is refused naming the key (exit 2), unless
+// stability.allow_growth asks to run there on purpose (the monitor then stops the blow-up, exit 3).
+// Newmark (average acceleration) and ARKODE are not checked here: their limits differ by method.
+void refuseStepsAboveTheLimit(SceneReader& reader, Study& study) {
+  const Scene& scene = study.scene;
+  const Real length = scene.geometry.upper[0] - scene.geometry.lower[0];
+  const Real c = scene.material.material().pWaveSpeed();
+  for (const auto& name : study.integrators) {
+    if (name != "central_difference" && name != "leapfrog") continue;
+    for (const int cells : study.cells) {
+      const Real limit = length / cells / c;
+      const Real dt = scene.integrator.timeStepFor(limit);
+      if (dt <= limit * (1 + 1e-12)) continue;
+      std::ostringstream why;
+      why << "the step " << dt << " exceeds the " << name << " limit 2 / omega_max = dx / c = " << limit << " at "
+          << cells << " cells (" << dt / limit << " x): every mode near k dx = pi grows; "
+          << (scene.integrator.timeStep ? "give a time_step <= dx / c" : "use cfl <= 1")
+          << ", or stability.allow_growth = true to run there on purpose";
+      if (!scene.stability.allowGrowth)
+        reader.fail(scene.integrator.timeStep ? "integrator.time_step" : "integrator.cfl", why.str());
+      study.notes.push_back("stability.allow_growth: ran although " + why.str().substr(0, why.str().find(": every")));
+    }
+  }
+}
+
 Study readStudy(SceneReader& reader) {
   Study study;
   study.scene = readScene(reader);
@@ -148,6 +177,7 @@ Study readStudy(SceneReader& reader) {
   }
   study.integrators = reader.strings("study.integrators");
   for (const auto& name : study.integrators) makeSecondOrderIntegrator(name, study.scene.integrator.options);
+  refuseStepsAboveTheLimit(reader, study);
   return study;
 }
 
@@ -213,6 +243,7 @@ int main(int argc, char** argv) {
     summary.figures.push_back({"critical_dt_last", results.back().criticalDt});
     summary.simulatedTime = study.scene.integrator.endTime;
     summary.notes.push_back("particles: the finest line; steps and wall time: summed over all cases");
+    summary.notes.insert(summary.notes.end(), study.notes.begin(), study.notes.end());
     summary.files = {"scene.resolved.toml", "convergence.csv", "summary.json"};
     summary.finish();
     summary.writeJson(folder + "/summary.json");

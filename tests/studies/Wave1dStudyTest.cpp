@@ -80,10 +80,11 @@ TEST(Wave1dStudy, BadInputFailsWithTheKeyAndNoOutput) {
 }
 
 TEST(Wave1dStudy, AnUnstableStepIsStoppedWithWhereAndWhen) {
-  // c dt / dx = 1.05 is above the central-difference limit of 1 for this operator.
+  // c dt / dx = 1.05 is above the central-difference limit of 1 for this operator; run there on
+  // purpose (stability.allow_growth), the monitor stops the blow-up.
   const std::string out = scratchFolder("wave1d-unstable");
   const std::string command = std::string(WAVE1D_EXECUTABLE) + " --quiet --scene " + SCENE +
-                              " --set integrator.cfl=1.05 --set 'study.cells=[64]' --set " +
+                              " --set integrator.cfl=1.05 --set stability.allow_growth=true --set 'study.cells=[64]' --set " +
                               "'study.integrators=[\"central_difference\"]' --set integrator.end_time=20 --out " + out +
                               " > " + out + ".log 2>&1";
   const int status = std::system(command.c_str());
@@ -93,4 +94,29 @@ TEST(Wave1dStudy, AnUnstableStepIsStoppedWithWhereAndWhen) {
   text << log.rdbuf();
   EXPECT_NE(text.str().find("instability at step"), std::string::npos) << text.str();
   EXPECT_NE(text.str().find("particle"), std::string::npos) << text.str();
+}
+
+// Issue 17: a short run at 1.2 x the stable step used to end with exit 0 (the blow-up had no time to
+// show). The step is now refused before any work, naming the key and the limit (exit 2, no output);
+// with stability.allow_growth the run goes on and its summary says so.
+TEST(Wave1dStudy, AStepAboveTheLimitIsRefusedBeforeAnyWork) {
+  const std::string out = scratchFolder("wave1d-above-limit");
+  const std::string base = std::string(WAVE1D_EXECUTABLE) + " --quiet --scene " + SCENE +
+                           " --set integrator.cfl=1.2 --set integrator.end_time=0.2 --set 'study.cells=[32]' --set " +
+                           "'study.integrators=[\"central_difference\"]' --out " + out;
+  const int refused = std::system((base + " > " + out + ".log 2>&1").c_str());
+  EXPECT_EQ(WEXITSTATUS(refused), 2);
+  std::ifstream log(out + ".log");
+  std::stringstream text;
+  text << log.rdbuf();
+  for (const char* part : {"integrator.cfl", "exceeds the central_difference limit", "dx / c = 0.03125", "cfl <= 1"})
+    EXPECT_NE(text.str().find(part), std::string::npos) << part << " missing in: " << text.str();
+  EXPECT_FALSE(std::filesystem::exists(out + "/summary.json"));
+
+  const int allowed = std::system((base + " --set stability.allow_growth=true > " + out + ".log 2>&1").c_str());
+  EXPECT_EQ(WEXITSTATUS(allowed), 0);
+  std::ifstream summary(out + "/summary.json");
+  std::stringstream json;
+  json << summary.rdbuf();
+  EXPECT_NE(json.str().find("stability.allow_growth: ran although the step"), std::string::npos) << json.str();
 }
