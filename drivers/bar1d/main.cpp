@@ -18,6 +18,7 @@
 #include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/scene/LoadScene.hpp"
+#include "io/scene/StepLimitCheck.hpp"
 #include "io/scene/Scene.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "methods/collocation/CollocationNewmark.hpp"
@@ -34,6 +35,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -85,7 +87,17 @@ struct CaseResult {
   long steps;
   Real errorU, errorV, maxErrorU;
   double wallSeconds;
+  std::string note;  // stability.allow_growth: what ran above a limit on purpose
 };
+
+std::string describeMethod(const Study& study) {
+  std::ostringstream s;
+  if (study.scene.method.name == "radial_basis")
+    s << "radial basis " << study.basis << ", method.shape_ratio = " << study.shapeRatio;
+  else
+    s << "reproducing kernel order " << study.order << ", method.support_ratio = " << study.supportRatio;
+  return s.str();
+}
 
 std::unique_ptr<ShapeFunctions<1>> makeShapes(const Study& study, const Coordinates<1>& nodes, Real h) {
   if (study.scene.method.name == "radial_basis")
@@ -156,11 +168,28 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
   const auto shapes = makeShapes(study, nodes, h);
   ConstrainedCollocationSystem system(assembleCollocation<1>(*shapes, fixedFreeBarPoints(nodes), material));
 
-  // Exact critical step of central difference: 2 / sqrt(max |eig K|); complex or negative
-  // eigenvalues mean no step is stable (reported, the run then shows it).
-  const Real lambdaMax = eigenvalueStability(system.denseStiffness()).largestModulus;
+  // Before stepping, the whole operator's spectrum (dense: a 1-D bar has few nodes). Complex or
+  // negative eigenvalues are modes that grow at any step: refused (exit 3) naming the growth rate,
+  // unless stability.allow_growth. The exact central-difference step is 2 / sqrt(max |eig K|), and
+  // every integrator's step is checked against its own limit (io/scene/StepLimitCheck).
+  const EigenvalueStability spectrum = eigenvalueStability(system.denseStiffness());
+  const std::string where = "at " + std::to_string(nodeCount) + " nodes";
+  std::string note;
+  if (spectrum.unconditionallyUnstable) {
+    const std::string what = "the collocation operator " + where + " has growing modes: " + spectrum.verdict() +
+                             " (" + describeMethod(study) + ")";
+    if (!scene.stability.allowGrowth)
+      throw InstabilityError(what + ", so the run is refused before stepping (see the stability atlas, "
+                                    "docs/studies/stability-atlas.md), or set stability.allow_growth = true to run "
+                                    "it on purpose", 0, 0, -1);
+    note = "stability.allow_growth: ran although " + what;
+  }
+  const Real lambdaMax = spectrum.largestModulus;
   const Real criticalDt = 2 / std::sqrt(lambdaMax);
   const Real dt = scene.integrator.timeStepFor(criticalDt);
+  const StepLimitCheck check = checkStepLimit(scene.integrator, scene.stability, std::sqrt(lambdaMax), dt, criticalDt,
+                                              "the exact spectrum of the collocation operator", where);
+  if (!check.note.empty()) note += (note.empty() ? "" : "; ") + check.note;
 
   // Initial state at interior points: u = 0, v = v0 (the boundary rows enforce u(0) = 0).
   const Vector U0 = Vector::Zero(system.size());
@@ -202,7 +231,7 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
     profile.commit();
   }
   return {nodeCount, h, dt, criticalDt, stats.steps, std::sqrt(e.u / e.uNorm), std::sqrt(e.v / e.vNorm),
-          sampler.maxRelativeU(), stats.wallSeconds};
+          sampler.maxRelativeU(), stats.wallSeconds, note};
 }
 
 Study readStudy(SceneReader& reader) {
@@ -279,6 +308,7 @@ int main(int argc, char** argv) {
       summary.particles = std::max<Index>(summary.particles, r.nodes);
       summary.steps += r.steps;
       summary.wallSeconds += r.wallSeconds;
+      if (!r.note.empty()) summary.notes.push_back(r.note);
     }
     table.commit();
     const CaseResult& finest = results.back();

@@ -1,6 +1,7 @@
 #include "LambCase.hpp"
 
 #include "analysis/StableTimeStep.hpp"
+#include "io/scene/StepLimitCheck.hpp"
 #include "analytic/LambSquareLoad.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
@@ -348,6 +349,12 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     result.notes.push_back(settings.name + ": power iteration did not converge; the Gershgorin step is used");
   const Real dt = scene.integrator.timeStepFor(stableStep);
   result.timeStep = dt;
+  // The step against the integrator's own limit before any work (exit 2 above it).
+  const StepLimitCheck check =
+      checkStepLimit(scene.integrator, scene.stability, 2 / stableStep, dt, stableStep,
+                     stable.converged ? "a power iteration on the assembled operator" : "the Gershgorin bound",
+                     "in case " + settings.name);
+  if (!check.note.empty()) result.notes.push_back(check.note);
 
   // the energy ledger, which also stops growth after the loads (LinearEnergyLedger)
   const Prescribed prescribed = prescribedDisplacements(caseScene, particles);

@@ -15,6 +15,7 @@
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "integrators/IntegratorFactory.hpp"
+#include "integrators/StabilityLimit.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/RunSummary.hpp"
@@ -118,12 +119,17 @@ Outcome run(const Settings& s) {
   }
   Outcome out;
   out.criticalDt = 2 / std::sqrt(extremes.largestOmegaSquared);
-  // The limit is exact here (the whole spectrum is known), so a step beyond it is refused before
-  // any work: round-off would seed the growing modes and a short run could still look accurate.
-  if ((s.integrator == "central_difference" || s.integrator == "leapfrog") && s.cfl > 1)
-    throw InputError("integrator.cfl", std::to_string(s.cfl) + " is beyond the " + s.integrator +
-                                           " limit 2 / omega_max = " + std::to_string(out.criticalDt) +
-                                           " of this spectrum (cfl <= 1)");
+  // The limit is exact here (the whole spectrum is known), so a step beyond the integrator's own
+  // limit L / omega_max (integrators/StabilityLimit) is refused before any work: round-off would
+  // seed the growing modes and a short run could still look accurate.
+  const StepVerdict verdict = judgeStep(s.integrator, {}, std::sqrt(extremes.largestOmegaSquared),
+                                        s.cfl * out.criticalDt);
+  if (verdict.aboveLimit)
+    throw InputError("integrator.cfl", std::to_string(s.cfl) + " is beyond the " + verdict.limit.integrator +
+                                           " limit " + std::to_string(verdict.limit.omegaDtLimit) +
+                                           " / omega_max = " + std::to_string(verdict.limitDt) +
+                                           " of this spectrum (cfl <= " +
+                                           std::to_string(verdict.limitDt / out.criticalDt) + ")");
 
   const Vec<D> n = latticeDirectionVector<D>(parseLatticeDirection(s.direction, "study.direction"));
   const Vec<D> k = (s.direction == "axis" ? 1.0 : std::sqrt(Real(D))) * 2 * kPi * s.wavelengths * n;

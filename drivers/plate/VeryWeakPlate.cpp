@@ -10,6 +10,8 @@
 #include "methods/very_weak_sph/ConservativeSmoothing.hpp"
 #include "methods/very_weak_sph/VeryWeakSph.hpp"
 #include "neighbours/NeighbourList.hpp"
+#include "observers/LinearEnergyLedger.hpp"
+#include "observers/StabilityMonitor.hpp"
 #include "observers/EnergyObserver.hpp"
 #include "observers/TimeLoop.hpp"
 #include "particles/BoxFace.hpp"
@@ -110,13 +112,32 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
   });
   EnergyObserver energy(EnergyObserver::ofLinearSystem(system));
   ProgressReporter reporter(settings.endTime, n, progress);
+  // The guards of every linear run: the monitor (non-finite values, grid-scale growth) and the
+  // energy ledger, which stops any growth of the free vibration (no loads: quiet from t = 0; the
+  // clamp's reactions do no work, the filter only takes energy) with exit 3.
+  StabilityMonitor monitor(scene.stability.options(D));
+  LinearEnergyLedgerOptions ledgerOptions;
+  ledgerOptions.quietAfter = 0;
+  ledgerOptions.growthFactor = scene.stability.energyGrowthFactor;
+  ledgerOptions.envelopeWindow = 0.5 * plate.period();
+  ledgerOptions.balanceLimit = 0;
+  ledgerOptions.components = D;
+  ledgerOptions.likelyCause = "the very weak SPH's smoothing filter (study.very_weak_smoothing_rate) or step "
+                              "(study.very_weak_cfl)";
+  ledgerOptions.stop = !scene.stability.allowGrowth;
+  LinearEnergyLedger ledger(system, ledgerOptions);
   TimeLoop loop;
+  loop.add(monitor);
+  loop.add(ledger);
   loop.add(reporter);
   loop.add(tip, study.tipEvery);
   loop.add(energy, study.energyEvery);
   result.setupSeconds = secondsSince(setupStart);
 
   const RunStatistics stats = loop.run(integrator, settings.endTime);
+  if (!ledger.growthMessage().empty())
+    result.notes.push_back(settings.name + ": stability.allow_growth let the run go on through: " +
+                           ledger.growthMessage());
   result.steps = stats.steps;
   result.runSeconds = stats.wallSeconds;
   result.meanStep = dt;

@@ -293,6 +293,14 @@ int main(int argc, char** argv) {
     summary.files.push_back("summary.json");
     summary.writeJson(folder + "/summary.json");
     summary.print(std::cout);
+    // Every case's outputs are written; a case the monitors stopped still makes the run fail
+    // (exit 3), unless stability.allow_growth asked to run such a case on purpose.
+    for (const CaseResult& r : results)
+      if (!r.failure.empty() && !scene.stability.allowGrowth)
+        throw InstabilityError("case " + r.settings.name + " was stopped: " + r.failure +
+                                   " (the outputs of every case are written; stability.allow_growth = true "
+                                   "reports such a case and exits 0)",
+                               r.steps, r.endTime, -1);
     return 0;
   });
 }

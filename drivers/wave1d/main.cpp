@@ -17,6 +17,7 @@
 #include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/scene/LoadScene.hpp"
+#include "io/scene/StepLimitCheck.hpp"
 #include "io/scene/Scene.hpp"
 #include "methods/finite_difference/FiniteDifferenceWaveOperator.hpp"
 #include "neighbours/NeighbourList.hpp"
@@ -134,30 +135,24 @@ CaseResult runCase(const Study& study, const std::string& integratorName, int ce
           energy.maxRelativeDrift(), stats.wallSeconds};
 }
 
-// Before any work: central difference and leapfrog are stable for dt <= 2 / omega_max, which for
-// the finite-difference Laplacian is exactly dx / c (the Gershgorin bound runCase uses). A step
-// above it grows at every resolution, so it is refused naming the key (exit 2), unless
-// stability.allow_growth asks to run there on purpose (the monitor then stops the blow-up, exit 3).
-// Newmark (average acceleration) and ARKODE are not checked here: their limits differ by method.
-void refuseStepsAboveTheLimit(SceneReader& reader, Study& study) {
+// Before any work: every integrator's step against its limit L / omega_max (io/scene/StepLimitCheck)
+// with omega_max = 2 c / dx, the Gershgorin bound of the finite-difference Laplacian (its largest
+// eigenvalue with fixed ends is (2 c / dx)^2 cos^2(pi / 2N)). A step above it grows at every
+// resolution, so it is refused naming the key (exit 2), unless stability.allow_growth asks to run
+// there on purpose (the monitor then stops the blow-up, exit 3).
+void refuseStepsAboveTheLimit(Study& study) {
   const Scene& scene = study.scene;
   const Real length = scene.geometry.upper[0] - scene.geometry.lower[0];
   const Real c = scene.material.material().pWaveSpeed();
   for (const auto& name : study.integrators) {
-    if (name != "central_difference" && name != "leapfrog") continue;
+    IntegratorSpec integrator = scene.integrator;
+    integrator.name = name;
     for (const int cells : study.cells) {
-      const Real limit = length / cells / c;
-      const Real dt = scene.integrator.timeStepFor(limit);
-      if (dt <= limit * (1 + 1e-12)) continue;
-      std::ostringstream what;
-      what << "the step " << dt << " exceeds the " << name << " limit 2 / omega_max = dx / c = " << limit << " at "
-           << cells << " cells (" << dt / limit << " x)";
-      if (!scene.stability.allowGrowth)
-        reader.fail(scene.integrator.timeStep ? "integrator.time_step" : "integrator.cfl",
-                    what.str() + ": every mode near k dx = pi grows; " +
-                        (scene.integrator.timeStep ? "give a time_step <= dx / c" : "use cfl <= 1") +
-                        ", or stability.allow_growth = true to run there on purpose");
-      study.notes.push_back("stability.allow_growth: ran although " + what.str());
+      const Real dx = length / cells;
+      const Real dt = scene.integrator.timeStepFor(dx / c);
+      const StepLimitCheck check = checkStepLimit(integrator, scene.stability, 2 * c / dx, dt, dx / c,
+                                                  "the Gershgorin bound 2 c / dx", "at " + std::to_string(cells) + " cells");
+      if (!check.note.empty()) study.notes.push_back(check.note);
     }
   }
 }
@@ -178,7 +173,7 @@ Study readStudy(SceneReader& reader) {
   }
   study.integrators = reader.strings("study.integrators");
   for (const auto& name : study.integrators) makeSecondOrderIntegrator(name, study.scene.integrator.options);
-  refuseStepsAboveTheLimit(reader, study);
+  refuseStepsAboveTheLimit(study);
   return study;
 }
 

@@ -167,18 +167,47 @@ std::vector<std::string> ArkodeExplicit::tableNames() {
   return names;
 }
 
+namespace {
+
+// A new ARKODE table by name (the caller frees it); InputError for an unknown name.
+ARKodeButcherTable loadTable(const std::string& name) {
+  ARKodeButcherTable table = nullptr;
+  if (name == kClassicRk4) {
+    table = makeClassicRk4();
+  } else {
+    for (const auto& builtin : kBuiltinTables)
+      if (name == builtin.name) table = ARKodeButcherTable_LoadERK(builtin.id);
+    if (!table) throw InputError("integrator.table", "unknown table '" + name + "'; valid: " + validNames());
+  }
+  if (!table) throw Error("ARKODE could not build the Butcher table '" + name + "'");
+  return table;
+}
+
+}  // namespace
+
+ButcherCoefficients ArkodeExplicit::coefficients(const std::string& name) {
+  ARKodeButcherTable table = loadTable(name);
+  ButcherCoefficients out;
+  out.stages = table->stages;
+  out.order = table->q;
+  out.embedded = table->d != nullptr;
+  const auto s = static_cast<std::size_t>(table->stages);
+  out.a.assign(s * s, 0);
+  out.b.assign(s, 0);
+  out.c.assign(s, 0);
+  for (std::size_t i = 0; i < s; ++i) {
+    out.b[i] = table->b[i];
+    out.c[i] = table->c[i];
+    for (std::size_t j = 0; j < s; ++j) out.a[i * s + j] = table->A[i][j];
+  }
+  ARKodeButcherTable_Free(table);
+  return out;
+}
+
 ArkodeExplicit::ArkodeExplicit(ArkodeOptions options) : impl_(std::make_unique<Impl>()) {
   impl_->options = std::move(options);
   const ArkodeOptions& o = impl_->options;
-  if (o.table == kClassicRk4) {
-    impl_->table = makeClassicRk4();
-  } else {
-    for (const auto& table : kBuiltinTables)
-      if (o.table == table.name) impl_->table = ARKodeButcherTable_LoadERK(table.id);
-    if (!impl_->table)
-      throw InputError("integrator.table", "unknown table '" + o.table + "'; valid: " + validNames());
-  }
-  if (!impl_->table) throw Error("ARKODE could not build the Butcher table '" + o.table + "'");
+  impl_->table = loadTable(o.table);
   if (o.adaptive) {
     if (impl_->table->d == nullptr)
       throw InputError("integrator.table", "'" + o.table +

@@ -36,6 +36,14 @@ struct ArkodeStatistics {
   long failedSteps = 0;     // steps rejected by the error test
 };
 
+// The coefficients of an explicit Butcher table (row-major s x s A, strictly lower triangular).
+struct ButcherCoefficients {
+  int stages = 0;
+  int order = 0;
+  std::vector<Real> a, b, c;
+  bool embedded = false;  // has an embedding for error control
+};
+
 class ArkodeExplicit {
  public:
   // Checks the options that do not need a system: table name (InputError "integrator.table",
@@ -49,6 +57,9 @@ class ArkodeExplicit {
 
   // The names accepted in ArkodeOptions::table.
   static std::vector<std::string> tableNames();
+  // The coefficients of a table by name (for stability analysis: integrators/StabilityLimit.hpp).
+  // Throws InputError("integrator.table") for an unknown name.
+  static ButcherCoefficients coefficients(const std::string& table);
 
   // Binds the system (it must outlive the integrator's use) and sets y(t0) = y0. May be called
   // again to restart.

@@ -76,6 +76,14 @@ TEST(PlaneWaveStudy, BadInputIsRefusedBeforeAnyWork) {
   const PlaneWaveRun unstable = run("--set study.dimension=3 --set study.cells=16", "3d");
   EXPECT_EQ(unstable.outcome.exitCode, 3) << unstable.outcome.log;
   EXPECT_NE(unstable.outcome.log.find("omega^2 < 0"), std::string::npos) << unstable.outcome.log;
+  // Classic RK4 (ARKODE) above its own limit 2 sqrt 2 / omega_max, i.e. cfl sqrt 2.
+  const PlaneWaveRun rk4 = run("--set integrator.name=arkode --set integrator.cfl=1.5", "rk4");
+  EXPECT_EQ(rk4.outcome.exitCode, 2) << rk4.outcome.log;
+  EXPECT_NE(rk4.outcome.log.find("arkode:classic_rk4 limit 2.82"), std::string::npos) << rk4.outcome.log;
+  // RK collocation at a = 2.5 dx in 3-D: the mass symbol changes sign, growing modes (exit 3).
+  const PlaneWaveRun rk3d = run("--set study.method=rkcm --set integrator.name=newmark --set study.dimension=3 "
+                                "--set study.cells=16", "rk3d");
+  EXPECT_EQ(rk3d.outcome.exitCode, 3) << rk3d.outcome.log;
   const PlaneWaveRun odd = run("--set study.cells=33", "odd");
   EXPECT_EQ(odd.outcome.exitCode, 2) << odd.outcome.log;
 }

@@ -159,3 +159,19 @@ TEST(PlateStudy, ABlowUpStopsAtOnceAndSaysWhereAndWhen) {
   EXPECT_FALSE(fs::exists(out / "summary.json"));
   EXPECT_FALSE(fs::exists(out / "cases.csv"));
 }
+
+// The very weak SPH plate below its smoothing rate (3000 1/s; the study's 1e4 keeps it bounded)
+// grows: its energy ledger stops the run (exit 3) with the step, time, particle and likely cause.
+TEST(PlateStudy, TheVeryWeakPlateStopsWhenItGrows) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-plate-vwsph-growth";
+  fs::remove_all(out);
+  const StudyOutcome run = runPlate(
+      "--set 'study.resolutions=[5]' --set integrator.end_time=0.05 --set study.linearised_modes=false "
+      "--set output.vtk=false --set output.png=false --set study.small_velocity_factor=0.01 "
+      "--set study.very_weak_smoothing_rate=3000 --out " + out.string(),
+      "vwsph-growth");
+  EXPECT_TRUE(run.exited);
+  EXPECT_EQ(run.exitCode, 3) << run.log;
+  for (const char* part : {"energy growth at step", "fastest particle", "study.very_weak_smoothing_rate"})
+    EXPECT_NE(run.log.find(part), std::string::npos) << part << " missing in: " << run.log;
+}

@@ -110,3 +110,21 @@ TEST(RingsStudy, BadInputNamesItsKey) {
   EXPECT_NE(run.log.find("method"), std::string::npos) << run.log;
   EXPECT_FALSE(fs::exists(out / "summary.json"));
 }
+
+// A step twenty times the method's own criteria blows both cases up within a few steps: the ledger
+// stops each case, every case's outputs are still written, and the run exits 3 naming the case,
+// the step and the fastest particle.
+TEST(RingsStudy, ACaseThatBlowsUpMakesTheRunFail) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-rings-blowup";
+  fs::remove_all(out);
+  const Outcome run = runRings("--set geometry.spacing=0.0025 --set output.vtk=false --set output.png=false "
+                               "--set integrator.end_time=4e-4 --set integrator.cfl=20 --out " + out.string(),
+                               "blowup");
+  ASSERT_TRUE(run.exited);
+  EXPECT_EQ(run.exitCode, 3) << run.log;
+  EXPECT_NE(run.log.find("was stopped"), std::string::npos) << run.log;
+  EXPECT_NE(run.log.find("blew up at step"), std::string::npos) << run.log;
+  EXPECT_NE(run.log.find("fastest particle"), std::string::npos) << run.log;
+  EXPECT_TRUE(fs::exists(out / "summary.json"));
+  EXPECT_TRUE(fs::exists(out / "cases.csv"));
+}

@@ -119,3 +119,61 @@ TEST(Plane2dStudy, GrowingInteriorModesAreRefusedBeforeStepping) {
   const std::string json((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
   EXPECT_NE(json.find("stability.allow_growth: ran although"), std::string::npos) << json;
 }
+
+namespace {
+
+struct Bar1dRun {
+  int exitCode;
+  std::string log;
+};
+
+Bar1dRun runBar1d(const std::string& sets, const std::string& name,
+             const std::string& scene = std::string(SCENES_FOLDER) + "/bar1d.toml") {
+  const std::string out = scratch("bar1d-" + name);
+  const std::string command = std::string(BAR1D_EXECUTABLE) + " --quiet --scene " + scene + " --out " + out + " " +
+                              sets + " > " + out + ".log 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream in(out + ".log");
+  return {WEXITSTATUS(status), std::string(std::istreambuf_iterator<char>(in), {})};
+}
+
+}  // namespace
+
+// Before stepping, bar1d takes the whole collocation operator's spectrum: a step above the
+// integrator's limit is refused (exit 2, naming integrator.cfl), growing modes are refused (exit
+// 3): RK at a / h = 6, and radial-basis collocation at its defaults, whose complex pair grows
+// faster the more nodes there are (the "worse with more nodes" of the RBCM path).
+TEST(Bar1dStudy, UnstableStepsAndOperatorsAreRefusedBeforeStepping) {
+  const Bar1dRun step = runBar1d("--set 'study.nodes=[21]' --set integrator.cfl=5", "cfl");
+  EXPECT_EQ(step.exitCode, 2) << step.log;
+  EXPECT_NE(step.log.find("integrator.cfl: the step"), std::string::npos) << step.log;
+  const Bar1dRun newmark = runBar1d("--set 'study.nodes=[21]' --set integrator.name=newmark "
+                               "--set integrator.newmark_beta=0.1 --set integrator.cfl=1.5", "newmark");
+  EXPECT_EQ(newmark.exitCode, 2) << newmark.log;
+  EXPECT_NE(newmark.log.find("newmark limit 2.58199"), std::string::npos) << newmark.log;
+  const Bar1dRun wide = runBar1d("--set 'study.nodes=[21]' --set method.support_ratio=6", "wide");
+  EXPECT_EQ(wide.exitCode, 3) << wide.log;
+  EXPECT_NE(wide.log.find("growing modes"), std::string::npos) << wide.log;
+  EXPECT_NE(wide.log.find("method.support_ratio = 6"), std::string::npos) << wide.log;
+  // Radial basis (inverse multiquadric, a_r = h): measured growth rates 3.12, 6.25 and 12.5 1/s at
+  // 21, 41 and 81 nodes. The scene without the RK keys, which radial_basis refuses.
+  std::ifstream in(std::string(SCENES_FOLDER) + "/bar1d.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  for (const std::string line : {"order = 2\n", "support_ratio = 3.3\n"}) text.erase(text.find(line), line.size());
+  const std::string rk = "name = \"reproducing_kernel\"";
+  text.replace(text.find(rk), rk.size(), "name = \"radial_basis\"");
+  const std::string scene = scratch("bar1d-rb-scene") + ".toml";
+  std::ofstream(scene) << text;
+  double previous = 0;
+  for (int nodes : {21, 41}) {
+    const Bar1dRun basis = runBar1d("--set 'study.nodes=[" + std::to_string(nodes) + "]'", "rb" + std::to_string(nodes),
+                               scene);
+    ASSERT_EQ(basis.exitCode, 3) << basis.log;
+    const auto at = basis.log.find("growth rate ");
+    ASSERT_NE(at, std::string::npos) << basis.log;
+    const double rate = std::stod(basis.log.substr(at + 12));
+    EXPECT_GT(rate, 1.8 * previous) << basis.log;
+    previous = rate;
+  }
+  EXPECT_NEAR(previous, 6.25, 0.1);
+}

@@ -99,6 +99,42 @@ TEST(Wave1dStudy, AnUnstableStepIsStoppedWithWhereAndWhen) {
 // Issue 17: a short run at 1.2 x the stable step used to end with exit 0 (the blow-up had no time to
 // show). The step is now refused before any work, naming the key and the limit (exit 2, no output);
 // with stability.allow_growth the run goes on and its summary says so.
+// Every integrator's own limit is checked before any work (integrators/StabilityLimit): classic
+// RK4 above 2 sqrt 2 / omega_max, an ERK table and a Newmark gamma that grow at any step.
+TEST(Wave1dStudy, EveryIntegratorsLimitIsCheckedBeforeAnyWork) {
+  const std::string out = scratchFolder("wave1d-integrator-limits");
+  const std::string base = std::string(WAVE1D_EXECUTABLE) + " --quiet --scene " + SCENE +
+                           " --set integrator.end_time=0.2 --set 'study.cells=[32]' --out " + out;
+  struct Case {
+    std::string sets;
+    std::vector<std::string> parts;
+  };
+  const std::vector<Case> cases = {
+      {" --set 'study.integrators=[\"arkode\"]' --set integrator.name=arkode --set integrator.cfl=2",
+       {"integrator.cfl", "arkode:classic_rk4 limit 2.82843", "cfl <= 1.41421"}},
+      {" --set 'study.integrators=[\"arkode\"]' --set integrator.name=arkode --set "
+       "integrator.arkode_table=heun_euler_2_1_2",
+       {"integrator.arkode_table", "grow at any step"}},
+      {" --set 'study.integrators=[\"newmark\"]' --set integrator.name=newmark --set integrator.newmark_gamma=0.3",
+       {"integrator.newmark_gamma", "newmark_gamma >= 0.5"}},
+      {" --set 'study.integrators=[\"newmark\"]' --set integrator.name=newmark --set integrator.newmark_beta=0.1 "
+       "--set integrator.cfl=2",
+       {"integrator.cfl", "newmark limit 2.58199"}}};
+  for (const Case& c : cases) {
+    const int status = std::system((base + c.sets + " > " + out + ".log 2>&1").c_str());
+    EXPECT_EQ(WEXITSTATUS(status), 2) << c.sets;
+    std::ifstream log(out + ".log");
+    std::stringstream text;
+    text << log.rdbuf();
+    for (const std::string& part : c.parts)
+      EXPECT_NE(text.str().find(part), std::string::npos) << part << " missing in: " << text.str();
+  }
+  // Classic RK4 just inside its limit (1.4 of the central-difference step) runs.
+  const int inside = std::system((base + " --set 'study.integrators=[\"arkode\"]' --set integrator.name=arkode "
+                                         "--set integrator.cfl=1.4 > " + out + ".log 2>&1").c_str());
+  EXPECT_EQ(WEXITSTATUS(inside), 0);
+}
+
 TEST(Wave1dStudy, AStepAboveTheLimitIsRefusedBeforeAnyWork) {
   const std::string out = scratchFolder("wave1d-above-limit");
   const std::string base = std::string(WAVE1D_EXECUTABLE) + " --quiet --scene " + SCENE +
@@ -109,7 +145,7 @@ TEST(Wave1dStudy, AStepAboveTheLimitIsRefusedBeforeAnyWork) {
   std::ifstream log(out + ".log");
   std::stringstream text;
   text << log.rdbuf();
-  for (const char* part : {"integrator.cfl", "exceeds the central_difference limit", "dx / c = 0.03125", "cfl <= 1"})
+  for (const char* part : {"integrator.cfl", "exceeds the central_difference limit 2 / omega_max = 0.03125", "cfl <= 1"})
     EXPECT_NE(text.str().find(part), std::string::npos) << part << " missing in: " << text.str();
   EXPECT_FALSE(std::filesystem::exists(out + "/summary.json"));
 

@@ -111,8 +111,17 @@ TEST(WavefieldStudy, AnUnstableTimeStepIsRefusedBeforeAnyWork) {
   const Outcome run = runWavefield("--scene " + scene.string() + " --out " + out.string(), "unstable");
   ASSERT_TRUE(run.exited);
   EXPECT_EQ(run.exitCode, 2) << run.log;
-  EXPECT_NE(run.log.find("integrator.time_step: is above the stable step 0.0166"), std::string::npos) << run.log;
+  EXPECT_NE(run.log.find("integrator.time_step: the step 0.02 exceeds the central_difference limit 2 / omega_max = "
+                         "0.0166"), std::string::npos) << run.log;
   EXPECT_FALSE(fs::exists(out / "summary.json"));
+  // The same through cfl, and for an ARKODE table at its own limit (classic RK4: 2 sqrt 2 / omega_max).
+  for (const char* sets : {" --set integrator.cfl=5", " --set integrator.name=arkode --set integrator.cfl=1.5"}) {
+    const Outcome over = runWavefield("--scene " + std::string(SCENES_FOLDER) + "/block-ricker.toml" + sets +
+                                          " --out " + out.string(), "unstable-cfl");
+    ASSERT_TRUE(over.exited);
+    EXPECT_EQ(over.exitCode, 2) << over.log;
+    EXPECT_NE(over.log.find("integrator.cfl: the step"), std::string::npos) << over.log;
+  }
 }
 
 class MalformedScene : public ::testing::TestWithParam<std::string> {};

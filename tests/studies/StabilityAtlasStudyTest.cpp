@@ -1,0 +1,145 @@
+// The stability atlas run as a user runs it, on a representative subset: every method in 1-D with
+// the 0.98 / 1.02 confirmations of central difference and classic RK4, the RK collocation supports
+// that grow in 2-D and 3-D, and the integrators' limits.
+
+#include "support/StudyRun.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Row = std::map<std::string, std::string>;
+
+mfwave::testing::StudyOutcome run(const std::string& arguments, const std::string& name) {
+  return mfwave::testing::runStudy(STABILITY_ATLAS_EXECUTABLE, std::string(SCENES_FOLDER) + "/stability-atlas.toml",
+                                   arguments, "atlas-" + name);
+}
+
+// Rows of a CSV with a header (comment lines skipped; quoted fields hold no commas here).
+std::vector<Row> table(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::vector<std::string> header;
+  std::vector<Row> rows;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> fields;
+    std::stringstream s(line);
+    std::string f;
+    while (std::getline(s, f, ',')) {
+      if (f.size() >= 2 && f.front() == '"' && f.back() == '"') f = f.substr(1, f.size() - 2);
+      fields.push_back(f);
+    }
+    if (header.empty()) {
+      header = fields;
+      continue;
+    }
+    Row r;
+    for (std::size_t i = 0; i < header.size() && i < fields.size(); ++i) r[header[i]] = fields[i];
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+const Row& find(const std::vector<Row>& rows, const std::map<std::string, std::string>& match) {
+  for (const Row& r : rows) {
+    bool all = true;
+    for (const auto& [k, v] : match) all = all && r.count(k) && r.at(k) == v;
+    if (all) return r;
+  }
+  throw std::runtime_error("no row matches");
+}
+
+}  // namespace
+
+TEST(StabilityAtlasStudy, EveryMethodIn1dIsConfirmedAtBothSidesOfItsLimit) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-atlas-1d";
+  fs::remove_all(out);
+  const auto outcome = run("--out " + out.string() +
+                               " --set 'study.dimensions=[1]' --set 'study.kernels=[\"cubic_spline\", \"gaussian\"]'"
+                               " --set 'study.smoothing_length_ratios=[1.3, 3.0]' --set 'study.ulsph_kernels=[\"cubic_spline\"]'"
+                               " --set 'study.ulsph_smoothing_length_ratios=[1.3]' --set 'study.rk_orders=[2]'"
+                               " --set 'study.rk_support_ratios=[2.5]' --set 'study.rb_shape_ratios=[3.0]'"
+                               " --set 'study.poisson_ratios=[0.25]'",
+                           "1d");
+  ASSERT_TRUE(outcome.exited);
+  ASSERT_EQ(outcome.exitCode, 0) << outcome.log;
+  // Central difference and classic RK4 at 0.98 and 1.02 of each lumped method's exact limit on its
+  // small periodic lattice: bounded for 10^4 steps below, stopped by the monitor above.
+  const auto confirmations = table(out / "confirmations.csv");
+  int checked = 0;
+  for (const Row& r : confirmations) {
+    if (r.at("integrator") == "-") {
+      EXPECT_TRUE(r.at("method") == "rkcm" || r.at("method") == "rbcm") << r.at("method");  // consistent mass
+      continue;
+    }
+    ++checked;
+    EXPECT_EQ(r.at("verdict"), "as predicted") << r.at("method") << ' ' << r.at("integrator") << ' ' << r.at("fraction");
+    if (std::stod(r.at("fraction")) < 1) {
+      EXPECT_EQ(r.at("outcome"), "bounded");
+      EXPECT_EQ(r.at("steps"), "10000");
+    } else {
+      EXPECT_EQ(r.at("outcome"), "stopped");
+    }
+  }
+  // finite difference, three very weak SPH variants, two UL-SPH: 6 methods x 2 integrators x 2.
+  EXPECT_EQ(checked, 24);
+  const auto atlas = table(out / "atlas.csv");
+  // The finite-difference limit is c dt / dx = 1 exactly; ppw for 1 %: 2 pi / kdx with
+  // sinc(kdx / 2) = 0.99, kdx = 0.4903, 12.81 points.
+  const Row& fd = find(atlas, {{"method", "finite_difference"}});
+  EXPECT_NEAR(std::stod(fd.at("cd_courant")), 1.0, 1e-9);
+  EXPECT_NEAR(std::stod(fd.at("ppw_p_axis")), 12.81, 0.1);
+  // The Galerkin very weak SPH has no growing mode at any support; the Gaussian kernel at
+  // h / dx = 3 makes the published and consistent rows grow.
+  for (const char* h : {"1.3", "3"})
+    EXPECT_EQ(find(atlas, {{"method", "vwsph_galerkin"}, {"family", "gaussian"}, {"value", h}}).at("status"), "ok");
+  EXPECT_EQ(find(atlas, {{"method", "vwsph_published"}, {"family", "gaussian"}, {"value", "3"}}).at("status"),
+            "growing");
+  // Classic RK4's imaginary-axis limit, 2 sqrt 2.
+  const auto integrators = table(out / "integrators.csv");
+  EXPECT_NEAR(std::stod(find(integrators, {{"integrator", "arkode:classic_rk4"}}).at("omega_dt_limit")),
+              2 * std::sqrt(2.0), 1e-9);
+  EXPECT_TRUE(fs::exists(out / "summary.json"));
+}
+
+TEST(StabilityAtlasStudy, RkCollocationGrowsAtWideSupportsIn2dAnd3d) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-atlas-rk";
+  fs::remove_all(out);
+  const auto outcome = run("--out " + out.string() +
+                               " --set 'study.dimensions=[2, 3]' --set 'study.methods=[\"rkcm\"]'"
+                               " --set 'study.rk_orders=[2]' --set 'study.rk_support_ratios=[2.2, 2.5, 3.0]'"
+                               " --set 'study.poisson_ratios=[0.25]' --set confirm.enabled=false",
+                           "rk");
+  ASSERT_TRUE(outcome.exited);
+  ASSERT_EQ(outcome.exitCode, 0) << outcome.log;
+  const auto atlas = table(out / "atlas.csv");
+  EXPECT_EQ(find(atlas, {{"dimension", "2"}, {"value", "2.5"}}).at("status"), "ok");
+  EXPECT_EQ(find(atlas, {{"dimension", "2"}, {"value", "3"}}).at("status"), "growing");
+  EXPECT_EQ(find(atlas, {{"dimension", "3"}, {"value", "2.5"}}).at("status"), "growing");
+  EXPECT_LT(std::stod(find(atlas, {{"dimension", "3"}, {"value", "2.5"}}).at("omega2_min_over_max")), -1);
+}
+
+TEST(StabilityAtlasStudy, BadInputNamesItsKey) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-atlas-bad";
+  fs::remove_all(out);
+  for (const auto& [sets, key] : std::vector<std::pair<std::string, std::string>>{
+           {"--set 'confirm.integrators=[\"newmark\"]'", "confirm.integrators"},
+           {"--set 'confirm.integrators=[\"arkode:heun_euler_2_1_2\"]'", "confirm.integrators"},
+           {"--set 'study.poisson_ratios=[0.5]'", "study.poisson_ratios"},
+           {"--set study.cells_2d=33", "study.cells_2d"}}) {
+    const auto outcome = run("--out " + out.string() + " " + sets, "bad");
+    EXPECT_EQ(outcome.exitCode, 2) << sets << '\n' << outcome.log;
+    EXPECT_NE(outcome.log.find(key), std::string::npos) << outcome.log;
+  }
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+}
