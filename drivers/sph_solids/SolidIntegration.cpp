@@ -13,7 +13,9 @@ SolidIntegrationSettings solidIntegrationSettings(const IntegratorSpec& spec) {
   settings.integrator = spec.name;
   settings.arkode = spec.options.arkode;
   settings.fixedStep = spec.timeStep.value_or(0);
-  settings.cfl = spec.cfl;
+  // With a fixed time_step the scene has no cfl (IntegratorSpec leaves it unset): the method's own
+  // criteria (cfl 1) are then the reference the step is checked against.
+  settings.cfl = spec.timeStep ? 1.0 : spec.cfl;
   return settings;
 }
 

@@ -381,6 +381,11 @@ ConsistencyReport correctToQuadraticConsistency(const ParticleSet<D>& particles,
               << (std::isinf(residual) ? std::string("has input weights outside its kernel support")
                                        : "cannot reproduce the quadratic fields (relative residual " +
                                              std::to_string(residual) + ")");
+      // Bad input, not a defect: the support holds too few neighbours for the correction's moments.
+      if (!std::isinf(residual))
+        throw InputError("method.smoothing_length_ratio",
+                         message.str() + ": too few neighbours in the support for the quadratic correction at this "
+                                         "h / dx; use a larger ratio (1.0 or more)");
       throw Error(message.str());
     }
     report.residual = std::max(report.residual, residual);
