@@ -223,10 +223,7 @@ int main(int argc, char** argv) {
     SceneReader reader = loadDriverScene(opt, schema);
     Settings s;
     s.methods = reader.strings("study.methods");
-    for (Real d : reader.numbers("study.dimensions")) {
-      if (d != std::round(d)) reader.fail("study.dimensions", "must be whole numbers, got " + num(d));
-      s.dimensions.push_back(static_cast<int>(d));
-    }
+    s.dimensions = reader.wholeNumbers("study.dimensions");
     s.cells[1] = static_cast<int>(reader.integer("study.cells_1d"));
     s.cells[2] = static_cast<int>(reader.integer("study.cells_2d"));
     s.cells[3] = static_cast<int>(reader.integer("study.cells_3d"));

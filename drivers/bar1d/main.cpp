@@ -175,15 +175,11 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
   const EigenvalueStability spectrum = eigenvalueStability(system.denseStiffness());
   const std::string where = "at " + std::to_string(nodeCount) + " nodes";
   std::string note;
-  if (spectrum.unconditionallyUnstable) {
-    const std::string what = "the collocation operator " + where + " has growing modes: " + spectrum.verdict() +
-                             " (" + describeMethod(study) + ")";
-    if (!scene.stability.allowGrowth)
-      throw InstabilityError(what + ", so the run is refused before stepping (see the stability atlas, "
-                                    "docs/studies/stability-atlas.md), or set stability.allow_growth = true to run "
-                                    "it on purpose", 0, 0, -1);
-    note = "stability.allow_growth: ran although " + what;
-  }
+  if (spectrum.unconditionallyUnstable)
+    note = refuseGrowingModes(scene.stability,
+                              "the collocation operator " + where + " has growing modes: " + spectrum.verdict() +
+                                  " (" + describeMethod(study) + ")",
+                              "see the stability atlas, docs/studies/stability-atlas.md");
   const Real lambdaMax = spectrum.largestModulus;
   const Real criticalDt = 2 / std::sqrt(lambdaMax);
   const Real dt = scene.integrator.timeStepFor(criticalDt);

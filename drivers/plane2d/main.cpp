@@ -186,11 +186,7 @@ std::vector<std::string> checkInteriorStability(const Scene& scene, int order, R
   what << "the RK collocation operator (method.order = " << order << ", method.support_ratio = " << ratio
        << ") has growing modes: its interior " << verdict.describe()
        << "; such a mode grows at every time step";
-  if (!scene.stability.allowGrowth)
-    throw InstabilityError(what.str() + ", so the run is refused before stepping (a smaller method.support_ratio, "
-                                        "e.g. 2.5, is stable in 2-D; stability.allow_growth = true runs it anyway)",
-                           0, 0.0, -1);
-  return {"stability.allow_growth: ran although " + what.str()};
+  return {refuseGrowingModes(scene.stability, what.str(), "a smaller method.support_ratio, e.g. 2.5, is stable in 2-D")};
 }
 
 }  // namespace

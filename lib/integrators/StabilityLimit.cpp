@@ -84,10 +84,7 @@ IntegratorLimit integratorLimit(const std::string& integrator, Real beta, Real g
 }
 
 IntegratorLimit integratorLimit(const std::string& name, const IntegratorOptions& options) {
-  if (name == "newmark") {
-    IntegratorLimit limit = integratorLimit(name, options.newmarkBeta, options.newmarkGamma);
-    return limit;
-  }
+  if (name == "newmark") return integratorLimit(name, options.newmarkBeta, options.newmarkGamma);
   if (name == "arkode") {
     if (options.arkode.adaptive) {
       IntegratorLimit limit;

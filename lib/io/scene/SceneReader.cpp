@@ -276,6 +276,14 @@ std::vector<Real> SceneReader::numbers(const std::string& path, std::size_t leng
 std::optional<std::vector<Real>> SceneReader::optionalNumbers(const std::string& path, std::size_t length) {
   return readNumbers(path, length, "", false);
 }
+std::vector<int> SceneReader::wholeNumbers(const std::string& path) {
+  std::vector<int> out;
+  for (Real value : numbers(path)) {
+    if (value != std::round(value)) fail(path, "must be whole numbers, got " + scene::formatNumber(value));
+    out.push_back(static_cast<int>(value));
+  }
+  return out;
+}
 
 std::vector<std::string> SceneReader::strings(const std::string& path) { return *readStrings(path, "", true); }
 std::vector<std::string> SceneReader::strings(const std::string& path, const std::vector<std::string>& fallback) {

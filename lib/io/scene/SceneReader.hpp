@@ -65,6 +65,9 @@ class SceneReader {
   std::vector<Real> numbers(const std::string& path, std::size_t length = 0);
   std::vector<Real> numbers(const std::string& path, std::size_t length, const std::vector<Real>& fallback);
   std::optional<std::vector<Real>> optionalNumbers(const std::string& path, std::size_t length = 0);
+  // A number array whose entries must be whole (a list of dimensions, of orders): fails naming the
+  // key at the first entry with a fraction.
+  std::vector<int> wholeNumbers(const std::string& path);
   std::vector<std::string> strings(const std::string& path);
   std::vector<std::string> strings(const std::string& path, const std::vector<std::string>& fallback);
   std::vector<bool> booleans(const std::string& path, std::size_t length = 0);

@@ -45,4 +45,12 @@ StepLimitCheck checkStepLimit(const IntegratorSpec& integrator, const StabilityS
   return out;
 }
 
+std::string refuseGrowingModes(const StabilitySpec& stability, const std::string& what, const std::string& advice) {
+  if (!stability.allowGrowth)
+    throw InstabilityError(what + ", so the run is refused before stepping (" + advice +
+                               "; stability.allow_growth = true runs it on purpose)",
+                           0, 0.0, -1);
+  return "stability.allow_growth: ran although " + what;
+}
+
 }  // namespace mfwave

@@ -28,4 +28,9 @@ struct StepLimitCheck {
 StepLimitCheck checkStepLimit(const IntegratorSpec& integrator, const StabilitySpec& stability, Real omegaMax,
                               Real dt, Real cflStep, const std::string& omegaSource, const std::string& context);
 
+// An operator with growing modes (`what` says which and where, e.g. "the RK collocation operator
+// (...) has growing modes: ..."): no step is stable. Throws InstabilityError (exit 3) with `advice`
+// (what to change), unless stability.allow_growth, and then returns the summary's note.
+std::string refuseGrowingModes(const StabilitySpec& stability, const std::string& what, const std::string& advice);
+
 }  // namespace mfwave
