@@ -32,7 +32,6 @@ using namespace mfwave;
 namespace {
 
 const char* kProgram = "dispersion";
-constexpr Real kPi = 3.14159265358979323846;
 
 SceneSchema dispersionSchema() {
   SceneSchema schema;

@@ -37,7 +37,6 @@ using namespace mfwave;
 namespace {
 
 const char* kProgram = "spectra";
-constexpr Real kPi = 3.14159265358979323846;
 
 SceneSchema spectraSchema() {
   SceneSchema schema;

@@ -16,7 +16,6 @@ using namespace mfwave;
 
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
 
 // n points uniform in the unit cube, and the radius whose ball holds `neighbours` on average.
 Coordinates<3> randomCloud(Index n) {

@@ -59,12 +59,12 @@ SceneSchema plane2dSchema() {
 struct Manufactured {
   Material m;
   Real w;
-  Real phi(const Vec2& x) const { return std::sin(M_PI * x[0]) * std::sin(M_PI * x[1]); }
+  Real phi(const Vec2& x) const { return std::sin(kPi * x[0]) * std::sin(kPi * x[1]); }
   Vec2 u(const Vec2& x, Real t) const { return Vec2::Constant(phi(x) * std::cos(w * t)); }
   Vec2 v(const Vec2& x, Real t) const { return Vec2::Constant(-w * phi(x) * std::sin(w * t)); }
   // f = rho u_tt - L u, L u_i = mu Lap u_i + (lambda + mu) d_i div u.
   Vec2 f(const Vec2& x, Real t) const {
-    const Real p = phi(x), c = std::cos(M_PI * x[0]) * std::cos(M_PI * x[1]), pi2 = M_PI * M_PI;
+    const Real p = phi(x), c = std::cos(kPi * x[0]) * std::cos(kPi * x[1]), pi2 = kPi * kPi;
     const Real lu = m.mu() * (-2 * pi2 * p) + (m.lambda() + m.mu()) * (-pi2 * p + pi2 * c);
     return Vec2::Constant((-m.density() * w * w * p - lu) * std::cos(w * t));
   }

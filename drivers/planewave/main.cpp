@@ -38,7 +38,6 @@ using namespace mfwave;
 namespace {
 
 const char* kProgram = "planewave";
-constexpr Real kPi = 3.14159265358979323846;
 
 SceneSchema planeWaveSchema() {
   SceneSchema schema;

@@ -153,7 +153,7 @@ void analyseTip(PlateCaseResult& result, const TimeSeries& tip, const Cantilever
   result.tip = analyseOscillation(tip.times(), tip.column(1));
   result.thinPeriod = plate.period();
   result.timoshenkoPeriod = plate.timoshenkoPeriod(shearCoefficient);
-  constexpr Real pi = 3.14159265358979323846;
+  constexpr Real pi = kPi;
   result.expectedAmplitude = result.tip.period > 0 ? result.tipStartVelocity * result.tip.period / (2 * pi)
                                                    : std::numeric_limits<Real>::quiet_NaN();
   if (result.tip.halfPeriods < 2)

@@ -36,12 +36,12 @@ PlateModesResult linearisedPlateModes(const PlateStudy& study, Index rows) {
   // The lowest frequencies can be spurious near-null modes of the particle gradient; the first
   // bending mode is the lowest one above 1 % of the thin-plate frequency.
   const CantileverPlate plate(study.length, study.thickness, study.scene.material.material());
-  const Real floor = 0.01 * 2 * M_PI / plate.period();
+  const Real floor = 0.01 * 2 * kPi / plate.period();
   std::vector<Real> bending;
   for (Real w : modes.frequencies)
     if (w > floor) bending.push_back(w);
-  result.firstPeriod = bending.empty() ? std::nan("") : 2 * M_PI / bending[0];
-  result.secondPeriod = bending.size() < 2 ? std::nan("") : 2 * M_PI / bending[1];
+  result.firstPeriod = bending.empty() ? std::nan("") : 2 * kPi / bending[0];
+  result.secondPeriod = bending.size() < 2 ? std::nan("") : 2 * kPi / bending[1];
   result.largestGrowthRate = modes.largestGrowthRate;
   result.zeroModes = modes.zeroModes + static_cast<Index>(modes.frequencies.size() - bending.size());
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

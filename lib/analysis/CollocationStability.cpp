@@ -24,7 +24,6 @@ namespace mfwave {
 
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
 
 Stencil stencilOf(const Eigen::VectorXd& entries, Index centre, Real dropBelow) {
   Stencil s;

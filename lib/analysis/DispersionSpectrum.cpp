@@ -14,7 +14,6 @@ namespace mfwave {
 
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
 constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
 
 // Eigenpairs of T = M^{-1} S with left eigenvectors: V^{-1} T V = diag(lambda).

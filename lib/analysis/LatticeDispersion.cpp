@@ -413,7 +413,7 @@ SymbolExtremes<D> symbolExtremes(const LatticeStencil<D>& stencil, Real spacing,
     Vec<D> kdx;
     long rest = p;
     for (int a = 0; a < D; ++a) {
-      kdx(a) = M_PI * static_cast<Real>(rest % (samplesPerAxis + 1)) / samplesPerAxis;
+      kdx(a) = kPi * static_cast<Real>(rest % (samplesPerAxis + 1)) / samplesPerAxis;
       rest /= samplesPerAxis + 1;
     }
     const StencilSymbol symbol = stencilSymbol(stencil, Vec<D>(kdx / spacing));

@@ -156,7 +156,7 @@ struct AccuracyResolution {
 template <int D>
 AccuracyResolution pointsPerWavelength(const LatticeStencil<D>& stencil, const Vec<D>& direction,
                                        Polarisation polarisation, Real referenceSpeed, Real spacing,
-                                       Real tolerance = 0.01, Real kdxMin = 1e-3, Real kdxMax = 3.14159265358979323846,
+                                       Real tolerance = 0.01, Real kdxMin = 1e-3, Real kdxMax = kPi,
                                        int samples = 4000);
 
 // The extremes of omega^2 (the eigenvalues of Re S(k)) over the Brillouin zone, sampled at

@@ -15,7 +15,6 @@ namespace mfwave {
 
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
 constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
 
 // A unit vector normal to n on which the S part is read: (-n_y, n_x) in 2-D, (0, 1, 0) on the

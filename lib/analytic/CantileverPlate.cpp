@@ -8,7 +8,7 @@
 namespace mfwave {
 namespace {
 
-constexpr Real pi = 3.14159265358979323846;
+constexpr Real pi = kPi;
 
 void requireShearCoefficient(Real kappa) {
   if (!(kappa > 0) || !std::isfinite(kappa)) throw InputError("shear_coefficient", "must be positive");

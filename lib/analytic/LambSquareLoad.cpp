@@ -20,7 +20,7 @@ using Rule = std::pair<std::vector<Real>, std::vector<Real>>;  // nodes, weights
 Rule makeRule(int n) {
   std::vector<Real> x(static_cast<std::size_t>(n)), w(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
-    Real z = std::cos(M_PI * (i + 0.75) / (n + 0.5));
+    Real z = std::cos(kPi * (i + 0.75) / (n + 0.5));
     Real dp = 0;
     for (int it = 0; it < 100; ++it) {
       Real p0 = 1, p1 = z;
@@ -175,7 +175,7 @@ Real LambSquareLoad::integrateSquare(Real x, Real y, Real t, bool ramp) const {
     }
     total += sign * edgeSum;
   }
-  return p_ / (M_PI * mu_) * total;
+  return p_ / (kPi * mu_) * total;
 }
 
 Real LambSquareLoad::stepDisplacement(Real x, Real y, Real t) const {

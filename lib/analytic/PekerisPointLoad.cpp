@@ -94,7 +94,7 @@ Real PekerisPointLoad::shapeIntegral(Real tau) {
 
 Real PekerisPointLoad::displacement(Real r, Real t) const {
   if (!(r > 0)) throw InputError("r", "must be positive (the point response is singular at r = 0)");
-  return force_ / (M_PI * mu_ * r) * shape(cs_ * t / r);
+  return force_ / (kPi * mu_ * r) * shape(cs_ * t / r);
 }
 
 }  // namespace mfwave

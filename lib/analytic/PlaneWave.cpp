@@ -26,7 +26,7 @@ Vec<D> PlaneWave<D>::velocity(const Vec<D>& x, Real t) const {
 
 template <int D>
 Real PlaneWave<D>::period() const {
-  return 2 * 3.14159265358979323846 / omega_;
+  return 2 * kPi / omega_;
 }
 
 template class PlaneWave<1>;

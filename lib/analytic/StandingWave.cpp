@@ -12,7 +12,7 @@ StandingWave::StandingWave(int mode, Real length, Real waveSpeed, Real amplitude
   if (mode < 1) throw InputError("mode", "must be at least 1, got " + std::to_string(mode));
   if (!(length > 0)) throw InputError("length", "must be positive");
   if (!(waveSpeed > 0)) throw InputError("wave_speed", "must be positive");
-  k_ = mode * M_PI / length;
+  k_ = mode * kPi / length;
 }
 
 Real StandingWave::displacement(Real x, Real t) const {
@@ -23,6 +23,6 @@ Real StandingWave::velocity(Real x, Real t) const {
   return -amplitude_ * c_ * k_ * std::sin(k_ * (x - origin_)) * std::sin(c_ * k_ * t);
 }
 
-Real StandingWave::period() const { return 2 * M_PI / (c_ * k_); }
+Real StandingWave::period() const { return 2 * kPi / (c_ * k_); }
 
 }  // namespace mfwave

@@ -120,7 +120,7 @@ Real TimeFunction::operator()(Real t) const {
       return s <= p_[1] ? p_[3] * s / p_[1] : p_[3] * (p_[1] + p_[2] - s) / p_[2];
     }
     case Kind::Ricker: {
-      const Real a = std::pow(M_PI * p_[0] * (t - p_[1]), 2);
+      const Real a = std::pow(kPi * p_[0] * (t - p_[1]), 2);
       return p_[2] * (1 - 2 * a) * std::exp(-a);
     }
     case Kind::Tabulated: {

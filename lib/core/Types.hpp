@@ -12,6 +12,9 @@ namespace mfwave {
 using Real = double;
 using Index = std::int64_t;  // global particle / degree-of-freedom index (ready for > 2^31 dofs)
 
+// The one definition of pi (C++17 has no std::numbers).
+inline constexpr Real kPi = 3.14159265358979323846;
+
 template <int D>
 using Vec = Eigen::Matrix<Real, D, 1>;
 template <int D>

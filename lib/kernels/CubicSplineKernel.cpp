@@ -7,7 +7,7 @@ namespace mfwave {
 
 namespace {
 // Li primer eq. (8): 2/3 (1-D), 10/(7 pi) (2-D), 1/pi (3-D).
-constexpr std::array<Real, 3> kSigma = {2.0 / 3.0, 10.0 / (7.0 * M_PI), 1.0 / M_PI};
+constexpr std::array<Real, 3> kSigma = {2.0 / 3.0, 10.0 / (7.0 * kPi), 1.0 / kPi};
 }  // namespace
 
 CubicSplineKernel::CubicSplineKernel(int dimension, Real h)

@@ -30,7 +30,7 @@ QuadratureRule gaussLegendre(int points) {
   QuadratureRule rule{std::vector<Real>(n), std::vector<Real>(n)};
   // The roots are symmetric: Newton from the asymptotic guess for the upper half, mirror the rest.
   for (std::size_t i = 0; i < (n + 1) / 2; ++i) {
-    Real x = std::cos(M_PI * (static_cast<Real>(i) + 0.75) / (points + 0.5));
+    Real x = std::cos(kPi * (static_cast<Real>(i) + 0.75) / (points + 0.5));
     Real pn = 0.0;
     Real dpn = 1.0;
     for (int iter = 0; iter < 100; ++iter) {

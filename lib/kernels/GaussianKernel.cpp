@@ -16,14 +16,14 @@ Real truncatedMass(int d) {
   switch (d) {
     case 1: return std::erf(kCut);
     case 2: return 1.0 - e9;
-    default: return std::erf(kCut) - 2.0 * kCut / std::sqrt(M_PI) * e9;
+    default: return std::erf(kCut) - 2.0 * kCut / std::sqrt(kPi) * e9;
   }
 }
 
 // pi^{-d/2} / truncated mass.
 std::array<Real, 3> gaussianSigma() {
-  return {1.0 / (std::sqrt(M_PI) * truncatedMass(1)), 1.0 / (M_PI * truncatedMass(2)),
-          1.0 / (M_PI * std::sqrt(M_PI) * truncatedMass(3))};
+  return {1.0 / (std::sqrt(kPi) * truncatedMass(1)), 1.0 / (kPi * truncatedMass(2)),
+          1.0 / (kPi * std::sqrt(kPi) * truncatedMass(3))};
 }
 
 }  // namespace

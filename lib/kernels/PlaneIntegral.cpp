@@ -21,7 +21,7 @@ Real planeIntegralThroughCentre(const Kernel& kernel) {
         rule, breaks[i], breaks[i + 1],
         [&](Real q) { return (d == 3 ? q : 1.0) * kernel.shape(q); }, 8);
   }
-  const Real measure = d == 3 ? 2.0 * M_PI : 2.0;
+  const Real measure = d == 3 ? 2.0 * kPi : 2.0;
   return measure * kernel.normalisation() / kernel.smoothingLength() * radial;
 }
 

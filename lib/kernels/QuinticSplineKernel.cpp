@@ -8,7 +8,7 @@ namespace mfwave {
 namespace {
 
 // 1 / (S_d int_0^3 q^{d-1} f dq): 1/120, 7/(478 pi), 1/(120 pi); checked by quadrature in the tests.
-constexpr std::array<Real, 3> kSigma = {1.0 / 120.0, 7.0 / (478.0 * M_PI), 1.0 / (120.0 * M_PI)};
+constexpr std::array<Real, 3> kSigma = {1.0 / 120.0, 7.0 / (478.0 * kPi), 1.0 / (120.0 * kPi)};
 
 Real pow4(Real t) { return (t * t) * (t * t); }
 Real pow5(Real t) { return pow4(t) * t; }

@@ -8,7 +8,7 @@ namespace mfwave {
 namespace {
 // Derived analytically (1 / (S_d int_0^2 q^{d-1} f dq)) and checked by quadrature in the tests:
 // 5/8 for the 1-D function, 7/(4 pi) and 21/(16 pi) for the 2-D/3-D one.
-constexpr std::array<Real, 3> kSigma = {5.0 / 8.0, 7.0 / (4.0 * M_PI), 21.0 / (16.0 * M_PI)};
+constexpr std::array<Real, 3> kSigma = {5.0 / 8.0, 7.0 / (4.0 * kPi), 21.0 / (16.0 * kPi)};
 }  // namespace
 
 WendlandC2Kernel::WendlandC2Kernel(int dimension, Real h)

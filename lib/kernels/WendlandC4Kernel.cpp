@@ -8,7 +8,7 @@ namespace mfwave {
 namespace {
 // Derived analytically and checked by quadrature in the tests: 3/4 for the 1-D function,
 // 9/(4 pi) and 495/(256 pi) for the 2-D/3-D one.
-constexpr std::array<Real, 3> kSigma = {3.0 / 4.0, 9.0 / (4.0 * M_PI), 495.0 / (256.0 * M_PI)};
+constexpr std::array<Real, 3> kSigma = {3.0 / 4.0, 9.0 / (4.0 * kPi), 495.0 / (256.0 * kPi)};
 }  // namespace
 
 WendlandC4Kernel::WendlandC4Kernel(int dimension, Real h)

@@ -9,7 +9,7 @@
 namespace mfwave {
 namespace {
 
-constexpr Real pi = 3.14159265358979323846;
+constexpr Real pi = kPi;
 
 }  // namespace
 

@@ -19,7 +19,6 @@ using namespace mfwave;
 
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
 const BarProblem kBar{};  // L = 10, Ns = Nc = 21, E = 10, rho = 1 (c = sqrt(10)), h = 0.5
 
 struct ReferenceRow {

@@ -16,7 +16,6 @@ using namespace mfwave;
 
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
 
 // omega^2 of the second-order finite-difference Laplacian: (2 c / dx)^2 sum_j sin^2(k_j dx / 2).
 template <int D>

@@ -21,7 +21,6 @@ using namespace mfwave;
 
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
 
 // The scalar finite-difference wave rho u_tt = E Lap u on the lattice [-4 dx, 4 dx]^D, rho = 2,
 // E = 8 (c = 2), dx = 0.25, and the particle at the origin.

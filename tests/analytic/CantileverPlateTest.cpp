@@ -13,7 +13,7 @@ using namespace mfwave;
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
+constexpr double pi = mfwave::kPi;
 
 // The GMS plate: L = 0.2, H = 0.02, E = 2e6, nu = 0.3975, rho = 1000.
 CantileverPlate gmsPlate(double thickness = 0.02) {

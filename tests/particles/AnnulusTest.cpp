@@ -18,7 +18,7 @@ using namespace mfwave;
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
+constexpr double pi = mfwave::kPi;
 
 struct Ring {
   double inner, outer, spacing;

@@ -1,6 +1,7 @@
 // The planewave driver run as a user runs it: the finite-difference error is the closed-form phase
 // error of the scheme, the methods converge at second order, and bad input is refused up front.
 
+#include "core/Types.hpp"
 #include "support/StudyRun.hpp"
 
 #include <gtest/gtest.h>
@@ -12,8 +13,9 @@
 
 namespace {
 
+using mfwave::kPi;
+
 namespace fs = std::filesystem;
-constexpr double kPi = 3.14159265358979323846;
 
 struct PlaneWaveRun {
   mfwave::testing::StudyOutcome outcome;

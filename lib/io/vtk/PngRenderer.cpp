@@ -98,7 +98,7 @@ double automaticPointSize(const double bounds[6], Index count, int dimension, vt
   const double spacing = std::pow(measure / static_cast<double>(count), 1.0 / axes);
   const double halfHeight = camera.GetParallelProjection() != 0
                                 ? camera.GetParallelScale()
-                                : camera.GetDistance() * std::tan(0.5 * camera.GetViewAngle() * 3.14159265358979 / 180);
+                                : camera.GetDistance() * std::tan(0.5 * camera.GetViewAngle() * kPi / 180);
   const double pixelsPerUnit = 0.5 * height / halfHeight;
   const double fraction = dimension == 3 ? 0.6 : 0.8;
   return std::clamp(fraction * spacing * pixelsPerUnit, 3.0, 40.0);

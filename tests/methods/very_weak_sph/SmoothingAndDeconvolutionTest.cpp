@@ -24,7 +24,6 @@ using mfwave::test::Block;
 
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
 // V / dx^3 of the ghost-completed 3-D lattice, h = dx (VolumeAndAreaTest.cpp).
 constexpr Real kLatticeVolume = 1.0000275346670939;
 // Measured (see the tests that use them).
