@@ -11,6 +11,10 @@ ppw.png: the same layout, coloured by the worst points per wavelength for the at
 (P and S, axis and diagonal); white: the error is never that small.
 poisson.png: c_s dt / dx at the central-difference limit (left) and the S-wave points per
 wavelength (right) against Poisson's ratio, per method, in 2-D (solid) and 3-D (dashed).
+jitter.png: irregular clouds, one column per dimension. Top: the growth measure
+max(-omega^2_min / omega^2_max, |Im omega^2| / |omega^2|_max), worst over the seeds, against the jitter
+(points at 1e-12 are stable; the dotted line is the tolerance); bottom: the quadratic-field residual.
+One line per method and support.
 
 Usage: /usr/bin/python3 analysis/plot_stability_atlas.py OUT_DIR
 """
@@ -124,6 +128,43 @@ def poisson_plot(poisson, out_dir):
     save_atomically(fig, os.path.join(out_dir, "poisson.png"))
 
 
+def jitter_plot(jitter, out_dir):
+    dims = sorted({int(r["dimension"]) for r in jitter})
+    if not dims:
+        return
+    fig, axes = plt.subplots(2, len(dims), figsize=(5 * len(dims), 8), squeeze=False)
+    styles = ["-", "--", ":"]
+    for col, d in enumerate(dims):
+        rows = [r for r in jitter if int(r["dimension"]) == d and r["status"] in ("ok", "growing")]
+        for method in COLOURS:
+            supports = sorted({number(r["value"]) for r in rows if r["method"] == method})
+            for k, value in enumerate(supports):
+                mine = [r for r in rows if r["method"] == method and number(r["value"]) == value]
+                fractions = sorted({number(r["jitter"]) for r in mine})
+                growth, residual = [], []
+                for f in fractions:
+                    at = [r for r in mine if number(r["jitter"]) == f]
+                    growth.append(max(max(-number(r["omega2_min_over_max"]), number(r["imaginary_ratio"]), 1e-12)
+                                      for r in at))
+                    residual.append(max(max(number(r["quadratic_residual"]), 1e-16) for r in at))
+                label = f"{SHORT.get(method, method)} {mine[0]['knob']}={value:g}"
+                style = styles[k % len(styles)]
+                axes[0][col].plot(fractions, growth, style, marker="o", color=COLOURS[method], label=label)
+                axes[1][col].plot(fractions, residual, style, marker="o", color=COLOURS[method], label=label)
+        axes[0][col].axhline(1e-9, color="grey", linestyle=":", linewidth=1)
+        axes[0][col].set_title(f"{d}-D")
+        axes[0][col].set_ylabel("growth: max(-omega2_min, |Im omega2|) / omega2_max")
+        axes[1][col].set_ylabel("quadratic residual / c_p^2")
+        for row in (0, 1):
+            axes[row][col].set_yscale("log")
+            axes[row][col].set_xlabel("jitter / dx")
+            axes[row][col].grid(True, which="both", alpha=0.3)
+    handles, labels = axes[0][-1].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=6, fontsize=7)
+    fig.subplots_adjust(bottom=0.16, hspace=0.3, wspace=0.35)
+    save_atomically(fig, os.path.join(out_dir, "jitter.png"))
+
+
 def main(out_dir):
     paths = {n: os.path.join(out_dir, n + ".csv") for n in ("atlas", "poisson")}
     for path in paths.values():
@@ -135,6 +176,9 @@ def main(out_dir):
     layout(atlas, "ppw_worst", "ppw.png", "magma_r", 4, 40, lambda v: f"{v:.0f}",
            "points per wavelength, worst line (1 % phase error)", out_dir)
     poisson_plot(read_table(paths["poisson"]), out_dir)
+    jitter_path = os.path.join(out_dir, "jitter.csv")
+    if os.path.exists(jitter_path):
+        jitter_plot(read_table(jitter_path), out_dir)
 
 
 if __name__ == "__main__":

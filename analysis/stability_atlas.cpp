@@ -18,7 +18,9 @@
 //
 //   stability_atlas [--scene data/scenes/stability-atlas.toml] [--set 'study.dimensions=[1]'] [--out DIR]
 //
-// Writes atlas.csv, poisson.csv, integrators.csv, confirmations.csv, scene.resolved.toml and
+// Irregular clouds ([jitter], stability_atlas_jitter.cpp): the same verdicts from the whole spectrum
+// of each method on periodic jittered clouds, with the lowest modes' error and quadratic consistency.
+// Writes atlas.csv, poisson.csv, integrators.csv, confirmations.csv, jitter.csv, scene.resolved.toml and
 // summary.json; plot with /usr/bin/python3 analysis/plot_stability_atlas.py DIR.
 
 #include "analysis/DispersionSpectrum.hpp"
@@ -37,6 +39,7 @@
 #include "kernels/KernelFactory.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "systems/LinearSecondOrderSystem.hpp"
+#include "stability_atlas_jitter.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -115,6 +118,7 @@ SceneSchema atlasSchema() {
           "integrators confirmed (central_difference, leapfrog, arkode:<table>; lumped methods only)");
   schema.add("confirm.cells", ValueType::Integer).withUnit("-").defaultsTo("8").atLeast(4).describedAs(
       "nodes per axis of the confirmation lattices (raised until the stencil fits)");
+  addJitterAtlasKeys(schema);
   schema.add("output", ValueType::Table).describedAs("where results go");
   schema.add("output.folder", ValueType::String).defaultsTo("\"out/stability-atlas\"").describedAs("output folder");
   return schema;
@@ -430,6 +434,7 @@ int main(int argc, char** argv) {
       }
     }
     s.confirmCells = static_cast<int>(reader.integer("confirm.cells"));
+    const JitterAtlasSettings jitter = readJitterAtlasSettings(reader);
     const std::string sceneFolder = reader.string("output.folder");
     if (s.methods.empty()) reader.fail("study.methods", "needs at least one method");
     reader.checkAllKeysRead();
@@ -469,8 +474,11 @@ int main(int argc, char** argv) {
       else if (d == 2) study<2>(s, out);
       else study<3>(s, out);
     }
+    AtomicFile jitterFile(folder + "/jitter.csv");
+    const JitterAtlasCounts clouds = writeJitterAtlas(jitter, s.defaults, jitterFile.stream());
     atlasFile.commit();
     poissonFile.commit();
+    jitterFile.commit();
     integratorsFile.commit();
     confirmationsFile.commit();
 
@@ -486,8 +494,11 @@ int main(int argc, char** argv) {
     summary.figures.push_back({"skipped_points", static_cast<Real>(out.skipped)});
     summary.figures.push_back({"confirmations_as_predicted", static_cast<Real>(out.confirmed)});
     summary.figures.push_back({"confirmations_contradicting", static_cast<Real>(out.contradicted)});
+    summary.figures.push_back({"jittered_clouds", static_cast<Real>(clouds.points)});
+    summary.figures.push_back({"jittered_clouds_growing", static_cast<Real>(clouds.growing)});
+    summary.figures.push_back({"jittered_clouds_failed", static_cast<Real>(clouds.failed)});
     summary.files = {"scene.resolved.toml", "atlas.csv", "poisson.csv", "integrators.csv", "confirmations.csv",
-                     "summary.json"};
+                     "jitter.csv", "summary.json"};
     summary.finish();
     summary.writeJson(folder + "/summary.json");
     if (!opt.quiet) summary.print(std::cout);

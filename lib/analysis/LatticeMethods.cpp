@@ -42,12 +42,16 @@ MethodLatticeStencil<D> latticeMethodStencil(const std::string& method, const La
     result.halfWidth = lattice.halfWidth;
     return result;
   }
+  return updatedLagrangianSphInteriorStencil<D>(updatedLagrangianSphSettings(method, s), spacing);
+}
+
+UpdatedLagrangianSphOptions updatedLagrangianSphSettings(const std::string& method, const LatticeMethodSettings& s) {
   UpdatedLagrangianSphOptions options;
   options.material = s.material;
   options.kernel = s.kernel;
   options.smoothingLengthRatio = s.smoothingLengthRatio;
   options.kernelGradientCorrection = method == "ulsph_corrected";
-  return updatedLagrangianSphInteriorStencil<D>(options, spacing);
+  return options;
 }
 
 template MethodLatticeStencil<1> latticeMethodStencil<1>(const std::string&, const LatticeMethodSettings&, Real,

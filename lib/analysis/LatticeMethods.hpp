@@ -29,6 +29,9 @@ bool latticeMethodAvailable(const std::string& method, int dimension);
 
 // The method's interior stencil at spacing dx. Throws InputError(key) for an unknown method or one
 // not offered in D, and what the builders throw.
+// The updated-Lagrangian options of "ulsph" / "ulsph_corrected" (the kernel-gradient correction).
+UpdatedLagrangianSphOptions updatedLagrangianSphSettings(const std::string& method, const LatticeMethodSettings& settings);
+
 template <int D>
 MethodLatticeStencil<D> latticeMethodStencil(const std::string& method, const LatticeMethodSettings& settings,
                                              Real spacing, const std::string& key = "method");

@@ -44,29 +44,44 @@ Vec<D> nextAlongX(Real spacing) {
   return x;
 }
 
-// Collocation rows at node `at`: mass psi_b I, acceleration ((lambda + mu) H + mu tr(H) I) / rho.
+// Collocation rows at node `at` as lattice stencils.
 template <int D>
 void collocationRow(const ShapeFunctions<D>& shapes, const ParticleSet<D>& nodes, Index at, const Material& material,
                     LatticeStencil<D>& mass, LatticeStencil<D>& acceleration) {
-  ShapeFunctionValues<D> values;
   const Vec<D> x = nodes.position(at);
-  shapes.evaluate(x, 2, values);
   mass = LatticeStencil<D>{};
   acceleration = LatticeStencil<D>{};
   mass.components = acceleration.components = D;
-  const Real lambda = material.lambda(), mu = material.mu(), rho = material.density();
-  for (Index k = 0; k < values.size(); ++k) {
-    const Vec<D> r = nodes.position(values.nodes[static_cast<std::size_t>(k)]) - x;
-    const Mat<D>& H = values.hessian[static_cast<std::size_t>(k)];
-    Eigen::MatrixXd g = ((lambda + mu) * H + mu * H.trace() * Mat<D>::Identity()) / rho;
+  collocationRowBlocks<D>(shapes, x, material, [&](Index node, Real psi, const Mat<D>& g) {
+    const Vec<D> r = nodes.position(node) - x;
     mass.offsets.push_back(r);
-    mass.blocks.push_back(values.value[static_cast<std::size_t>(k)] * Eigen::MatrixXd::Identity(D, D));
+    mass.blocks.push_back(psi * Eigen::MatrixXd::Identity(D, D));
     acceleration.offsets.push_back(r);
-    acceleration.blocks.push_back(std::move(g));
-  }
+    acceleration.blocks.push_back(Eigen::MatrixXd(g));
+  });
 }
 
 }  // namespace
+
+template <int D>
+void collocationRowBlocks(const ShapeFunctions<D>& shapes, const Vec<D>& x, const Material& material,
+                          const std::function<void(Index node, Real psi, const Mat<D>& acceleration)>& block) {
+  ShapeFunctionValues<D> values;
+  shapes.evaluate(x, 2, values);
+  const Real lambda = material.lambda(), mu = material.mu(), rho = material.density();
+  for (Index k = 0; k < values.size(); ++k) {
+    const auto at = static_cast<std::size_t>(k);
+    const Mat<D>& H = values.hessian[at];
+    block(values.nodes[at], values.value[at], ((lambda + mu) * H + mu * H.trace() * Mat<D>::Identity()) / rho);
+  }
+}
+
+UpdatedLagrangianSphOptions linearisedAboutRest(UpdatedLagrangianSphOptions options) {
+  options.viscosity.alpha = 0;
+  options.viscosity.beta = 0;
+  options.artificialStress.enabled = false;
+  return options;
+}
 
 template <int D>
 MethodLatticeStencil<D> finiteDifferenceInteriorStencil(Real spacing, Real waveSpeed) {
@@ -122,9 +137,7 @@ MethodLatticeStencil<D> collocationInteriorStencil(CollocationBasis basis, int o
 template <int D>
 MethodLatticeStencil<D> updatedLagrangianSphInteriorStencil(UpdatedLagrangianSphOptions options, Real spacing) {
   checkSpacing(spacing);
-  options.viscosity.alpha = 0;
-  options.viscosity.beta = 0;
-  options.artificialStress.enabled = false;
+  options = linearisedAboutRest(options);
   const auto kernel = makeKernel(options.kernel, D, options.smoothingLengthRatio * spacing);
   // Lattice steps inside the (open) support along an axis.
   const int reach = static_cast<int>(std::ceil(kernel->supportRadius() / spacing - 1e-9)) - 1;
@@ -169,6 +182,8 @@ MethodLatticeStencil<D> updatedLagrangianSphInteriorStencil(UpdatedLagrangianSph
 }
 
 #define MFWAVE_METHOD_LATTICE_STENCILS(D)                                                                       \
+  template void collocationRowBlocks<D>(const ShapeFunctions<D>&, const Vec<D>&, const Material&,               \
+                                        const std::function<void(Index, Real, const Mat<D>&)>&);                \
   template MethodLatticeStencil<D> finiteDifferenceInteriorStencil<D>(Real, Real);                              \
   template MethodLatticeStencil<D> collocationInteriorStencil<D>(CollocationBasis, int, Real, const Material&,  \
                                                                  Real, int);                                    \

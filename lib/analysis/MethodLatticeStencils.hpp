@@ -8,7 +8,10 @@
 
 #include "analysis/LatticeDispersion.hpp"
 #include "core/Material.hpp"
+#include "methods/collocation/ShapeFunctions.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSphOptions.hpp"
+
+#include <functional>
 
 namespace mfwave {
 
@@ -38,6 +41,17 @@ enum class CollocationBasis { ReproducingKernel, RadialBasis };
 template <int D>
 MethodLatticeStencil<D> collocationInteriorStencil(CollocationBasis basis, int order, Real ratio,
                                                    const Material& material, Real spacing, int halfWidth = 0);
+
+// The collocation row at x (Luo-Liu-Huang eq. (12)): for each node b whose shape function reaches
+// x, psi_b(x) (the mass block is psi_b I) and the acceleration block
+// ((lambda + mu) H_b + mu tr(H_b) I) / rho, H_b the Hessian of psi_b at x.
+template <int D>
+void collocationRowBlocks(const ShapeFunctions<D>& shapes, const Vec<D>& x, const Material& material,
+                          const std::function<void(Index node, Real psi, const Mat<D>& acceleration)>& block);
+
+// The options with what does not act about rest switched off: viscosity (nothing moves) and the
+// artificial stress (not differentiable at zero stress).
+UpdatedLagrangianSphOptions linearisedAboutRest(UpdatedLagrangianSphOptions options);
 
 // The updated-Lagrangian SPH linearised about rest (RestModes.hpp: v'' = A v): the centre's rows of
 // A, D x D blocks. Viscosity and artificial stress are switched off (nothing to act on at rest; the

@@ -69,7 +69,7 @@ TEST(StabilityAtlasStudy, EveryMethodIn1dIsConfirmedAtBothSidesOfItsLimit) {
                                " --set 'study.smoothing_length_ratios=[1.3, 3.0]' --set 'study.ulsph_kernels=[\"cubic_spline\"]'"
                                " --set 'study.ulsph_smoothing_length_ratios=[1.3]' --set 'study.rk_orders=[2]'"
                                " --set 'study.rk_support_ratios=[2.5]' --set 'study.rb_shape_ratios=[3.0]'"
-                               " --set 'study.poisson_ratios=[0.25]'",
+                               " --set 'study.poisson_ratios=[0.25]' --set 'jitter.dimensions=[1]'",
                            "1d");
   ASSERT_TRUE(outcome.exited);
   ASSERT_EQ(outcome.exitCode, 0) << outcome.log;
@@ -109,6 +109,23 @@ TEST(StabilityAtlasStudy, EveryMethodIn1dIsConfirmedAtBothSidesOfItsLimit) {
   const auto integrators = table(out / "integrators.csv");
   EXPECT_NEAR(std::stod(find(integrators, {{"integrator", "arkode:classic_rk4"}}).at("omega_dt_limit")),
               2 * std::sqrt(2.0), 1e-9);
+  // Irregular clouds in 1-D: five methods x three supports x (the lattice + 2 jitters x 3 seeds).
+  const auto jitter = table(out / "jitter.csv");
+  EXPECT_EQ(jitter.size(), 105u);
+  for (const Row& r : jitter) {
+    // Without jitter every method that builds is stable, and RK collocation and the consistent very
+    // weak SPH reproduce quadratic fields on every cloud they build on.
+    if (r.at("jitter") == "0") {
+      EXPECT_EQ(r.at("status"), "ok") << r.at("method") << ' ' << r.at("value");
+    }
+    if ((r.at("method") == "rkcm" || r.at("method") == "vwsph_consistent") && r.at("status").rfind("fails", 0) != 0) {
+      EXPECT_LT(std::stod(r.at("quadratic_residual")), 1e-9) << r.at("method");
+    }
+  }
+  // The consistent very weak SPH at h = dx cannot complete its rows once the particles move.
+  EXPECT_EQ(find(jitter, {{"method", "vwsph_consistent"}, {"value", "1"}, {"jitter", "0.25"}}).at("status").rfind(
+                "fails", 0),
+            0u);
   EXPECT_TRUE(fs::exists(out / "summary.json"));
 }
 
@@ -118,7 +135,8 @@ TEST(StabilityAtlasStudy, RkCollocationGrowsAtWideSupportsIn2dAnd3d) {
   const auto outcome = run("--out " + out.string() +
                                " --set 'study.dimensions=[2, 3]' --set 'study.methods=[\"rkcm\"]'"
                                " --set 'study.rk_orders=[2]' --set 'study.rk_support_ratios=[2.2, 2.5, 3.0]'"
-                               " --set 'study.poisson_ratios=[0.25]' --set confirm.enabled=false",
+                               " --set 'study.poisson_ratios=[0.25]' --set confirm.enabled=false"
+                               " --set jitter.enabled=false",
                            "rk");
   ASSERT_TRUE(outcome.exited);
   ASSERT_EQ(outcome.exitCode, 0) << outcome.log;
@@ -136,7 +154,9 @@ TEST(StabilityAtlasStudy, BadInputNamesItsKey) {
            {"--set 'confirm.integrators=[\"newmark\"]'", "confirm.integrators"},
            {"--set 'confirm.integrators=[\"arkode:heun_euler_2_1_2\"]'", "confirm.integrators"},
            {"--set 'study.poisson_ratios=[0.5]'", "study.poisson_ratios"},
-           {"--set study.cells_2d=33", "study.cells_2d"}}) {
+           {"--set study.cells_2d=33", "study.cells_2d"},
+           {"--set 'jitter.fractions=[0.5]'", "jitter.fractions"},
+           {"--set 'jitter.methods=[\"finite_difference\"]'", "jitter.methods"}}) {
     const auto outcome = run("--out " + out.string() + " " + sets, "bad");
     EXPECT_EQ(outcome.exitCode, 2) << sets << '\n' << outcome.log;
     EXPECT_NE(outcome.log.find(key), std::string::npos) << outcome.log;
