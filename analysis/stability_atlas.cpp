@@ -497,15 +497,17 @@ int main(int argc, char** argv) {
     summary.figures.push_back({"jittered_clouds", static_cast<Real>(clouds.points)});
     summary.figures.push_back({"jittered_clouds_growing", static_cast<Real>(clouds.growing)});
     summary.figures.push_back({"jittered_clouds_failed", static_cast<Real>(clouds.failed)});
+    summary.figures.push_back({"jittered_runs_as_predicted", static_cast<Real>(clouds.confirmed)});
+    summary.figures.push_back({"jittered_runs_contradicting", static_cast<Real>(clouds.contradicted)});
     summary.files = {"scene.resolved.toml", "atlas.csv", "poisson.csv", "integrators.csv", "confirmations.csv",
                      "jitter.csv", "summary.json"};
     summary.finish();
     summary.writeJson(folder + "/summary.json");
     if (!opt.quiet) summary.print(std::cout);
     // A contradicted prediction is a defect of the analysis or of an integrator: say so by the exit.
-    if (out.contradicted > 0) {
-      std::cerr << kProgram << ": " << out.contradicted << " confirmation run(s) contradict the predicted limits "
-                << "(confirmations.csv)\n";
+    if (out.contradicted > 0 || clouds.contradicted > 0) {
+      std::cerr << kProgram << ": " << out.contradicted + clouds.contradicted
+                << " confirmation run(s) contradict the predictions (confirmations.csv, jitter.csv)\n";
       return 1;
     }
     return 0;

@@ -34,6 +34,9 @@ void addJitterAtlasKeys(SceneSchema& schema) {
   schema.add("jitter.cells_3d", T::Integer).withUnit("-").defaultsTo("6").between(4, 16).describedAs(
       "tile sites per axis in 3-D (6: 648 unknowns, about 1 s a cloud; 8: 1,536 unknowns, about 40 s; the tile "
       "samples k dx in steps of 2 pi / cells only)");
+  schema.add("jitter.confirm_steps", T::Integer).withUnit("-").defaultsTo("2000").between(0, 1000000).describedAs(
+      "central-difference steps at 0.9 of each cloud's limit from random data, to confirm its predicted growth "
+      "or boundedness (0: no runs)");
   schema.add("jitter.smoothing_length_ratios", T::NumberArray).withUnit("-").defaultsTo("[1.0, 1.3, 2.0]")
       .positive().describedAs("SPH h / dx (kernel: study.kernel); too wide for a tile: skipped");
   schema.add("jitter.rk_support_ratios", T::NumberArray).withUnit("-").defaultsTo("[1.5, 2.0, 2.5]").positive()
@@ -51,6 +54,7 @@ JitterAtlasSettings readJitterAtlasSettings(SceneReader& reader) {
   s.cells[1] = static_cast<int>(reader.integer("jitter.cells_1d"));
   s.cells[2] = static_cast<int>(reader.integer("jitter.cells_2d"));
   s.cells[3] = static_cast<int>(reader.integer("jitter.cells_3d"));
+  s.confirmSteps = reader.integer("jitter.confirm_steps");
   s.smoothingRatios = reader.numbers("jitter.smoothing_length_ratios");
   s.rkSupports = reader.numbers("jitter.rk_support_ratios");
   return s;
@@ -73,7 +77,8 @@ void writeDimension(const JitterAtlasSettings& s, const LatticeMethodSettings& d
           (rk ? settings.rkSupportRatio : settings.smoothingLengthRatio) = support;
           JitteredCloudReport r;
           try {
-            r = jitteredCloudSpectrum<D>(method, settings, s.cells[D], jitter, static_cast<std::uint64_t>(seed));
+            r = jitteredCloudSpectrum<D>(method, settings, s.cells[D], jitter, static_cast<std::uint64_t>(seed),
+                                        s.confirmSteps);
           } catch (const InputError& e) {
             r.status = std::string("skipped: ") + e.what();
           }
@@ -81,7 +86,10 @@ void writeDimension(const JitterAtlasSettings& s, const LatticeMethodSettings& d
               << (rk ? "a/dx" : "h/dx") << ',' << support << ',' << jitter << ',' << seed << ",\"" << r.status
               << "\"," << r.cells << ',' << r.closestPair << ',' << r.smallestOverLargest << ',' << r.imaginaryRatio
               << ',' << r.courant << ',' << r.spuriousLowModes << ',' << r.lowestModeError << ','
-              << r.quadraticResidual << ',' << r.seconds << '\n';
+              << r.quadraticResidual << ',' << r.predictedLogGrowth << ',' << r.measuredLogGrowth << ",\""
+              << r.confirmation << "\"," << r.seconds << '\n';
+          if (r.confirmation.rfind("CONTRADICTS", 0) == 0) ++counts.contradicted;
+          if (r.confirmation.find("as predicted") != std::string::npos) ++counts.confirmed;
           ++counts.points;
           ++rows;
           if (r.status == "growing") ++counts.growing, ++grew;
@@ -99,9 +107,11 @@ JitterAtlasCounts writeJitterAtlas(const JitterAtlasSettings& s, const LatticeMe
   csv << "# Whole spectra on periodic jittered clouds (lib/analysis/JitteredCloud; lambda = mu = rho = 1, dx = 1): "
          "omega2_min_over_max and imaginary_ratio above the tolerance (1e-9; 1e-6 for ulsph) mean growing modes; "
          "cd_courant = c_p dt / dx at 2 / omega_max; lowest_mode_error at `cells` points per wavelength; "
-         "quadratic_residual = |A u - M a| / c_p^2 for u = x^2 / 2\n"
+         "quadratic_residual = |A u - M a| / c_p^2 for u = x^2 / 2; the run: central difference at 0.9 of the limit "
+         "from random data, ln growth predicted by the spectrum and measured\n"
       << "dimension,method,family,knob,value,jitter,seed,status,cells,closest_pair,omega2_min_over_max,"
-         "imaginary_ratio,cd_courant,spurious_low_modes,lowest_mode_error,quadratic_residual,seconds\n"
+         "imaginary_ratio,cd_courant,spurious_low_modes,lowest_mode_error,quadratic_residual,predicted_log_growth,"
+         "measured_log_growth,confirmation,seconds\n"
       << std::setprecision(8);
   JitterAtlasCounts counts;
   if (!s.enabled) return counts;

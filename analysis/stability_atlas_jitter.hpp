@@ -18,12 +18,13 @@ struct JitterAtlasSettings {
   std::vector<int> dimensions, ulsphDimensions;
   std::vector<Real> jitters;
   int seeds = 3;
+  long confirmSteps = 2000;
   int cells[4] = {0, 32, 12, 6};
   std::vector<Real> smoothingRatios, rkSupports;  // the supports (kernel and RK order: the atlas defaults)
 };
 
 struct JitterAtlasCounts {
-  long points = 0, growing = 0, failed = 0;
+  long points = 0, growing = 0, failed = 0, confirmed = 0, contradicted = 0;
 };
 
 void addJitterAtlasKeys(SceneSchema& schema);

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <complex>
 #include <cmath>
 #include <random>
 
@@ -191,6 +192,48 @@ Real closestPair(const ParticleSet<D>& cloud, Index sites) {
   return closest;
 }
 
+// Central difference on u'' = A u at 0.9 of the limit 2 / omega_max, from random displacements:
+// the amplitude's growth over the run against the spectrum's prediction, the largest root of
+// z^2 - (2 + dt^2 lambda) z + 1 = 0 over the eigenvalues, raised to the number of steps.
+void confirmByRun(const Eigen::MatrixXd& A, const Eigen::VectorXcd& lambda, Real omegaMax, long steps,
+                  std::uint64_t seed, JitteredCloudReport& report) {
+  const Real dt = 0.9 * 2 / omegaMax;
+  Real largestRoot = 1;
+  for (Index k = 0; k < lambda.size(); ++k) {
+    const std::complex<double> b = 2.0 + dt * dt * lambda(k);
+    const std::complex<double> root = std::sqrt(b * b - 4.0);
+    largestRoot = std::max({largestRoot, std::abs((b + root) / 2.0), std::abs((b - root) / 2.0)});
+  }
+  report.predictedLogGrowth = static_cast<Real>(steps) * std::log(largestRoot);
+  std::mt19937_64 random(seed + 1000);
+  std::uniform_real_distribution<Real> uniform(-1, 1);
+  Vector previous(A.rows()), current(A.rows());
+  for (Index i = 0; i < previous.size(); ++i) previous(i) = uniform(random);
+  current = previous + 0.5 * dt * dt * (A * previous);  // from rest
+  const Real initial = previous.cwiseAbs().maxCoeff();
+  Real largest = initial;
+  for (long n = 1; n < steps; ++n) {
+    Vector next = 2 * current - previous + dt * dt * (A * current);
+    previous.swap(current);
+    current.swap(next);
+    largest = std::max(largest, current.cwiseAbs().maxCoeff());
+    if (!std::isfinite(largest) || largest > 1e150) break;
+  }
+  report.measuredLogGrowth = std::log(largest / initial);
+  // A mode predicted to grow by e^12 or more must show at least half of it (random data give it
+  // about 1 / sqrt(unknowns) of the start) or pass 1e150; one predicted below e^0.05 must stay
+  // within 100 x.
+  if (report.predictedLogGrowth >= 12)
+    report.confirmation = report.measuredLogGrowth >= std::min(report.predictedLogGrowth / 2, Real(300))
+                              ? "grew as predicted"
+                              : "CONTRADICTS: did not grow";
+  else if (report.predictedLogGrowth <= 0.05)
+    report.confirmation = report.measuredLogGrowth <= std::log(100.0) ? "bounded as predicted"
+                                                                       : "CONTRADICTS: grew";
+  else
+    report.confirmation = "too slow to tell";
+}
+
 }  // namespace
 
 bool jitteredCloudMethodAvailable(const std::string& method) {
@@ -200,7 +243,7 @@ bool jitteredCloudMethodAvailable(const std::string& method) {
 
 template <int D>
 JitteredCloudReport jitteredCloudSpectrum(const std::string& method, const LatticeMethodSettings& settings, int cells,
-                                          Real jitter, std::uint64_t seed) {
+                                          Real jitter, std::uint64_t seed, long confirmSteps) {
   if (!jitteredCloudMethodAvailable(method))
     throw InputError("method", "'" + method +
                                    "' is not assembled on irregular clouds here (vwsph_published, vwsph_consistent, "
@@ -291,6 +334,7 @@ JitteredCloudReport jitteredCloudSpectrum(const std::string& method, const Latti
       }
     if (report.smallestOverLargest < -report.tolerance || report.imaginaryRatio > report.tolerance)
       report.status = "growing";
+    if (confirmSteps > 0) confirmByRun(A, lambda, std::sqrt(largestOmega2), confirmSteps, seed, report);
   } catch (const Error& e) {
     report.status = std::string("fails: ") + e.what();
   }
@@ -299,10 +343,10 @@ JitteredCloudReport jitteredCloudSpectrum(const std::string& method, const Latti
 }
 
 template JitteredCloudReport jitteredCloudSpectrum<1>(const std::string&, const LatticeMethodSettings&, int, Real,
-                                                      std::uint64_t);
+                                                      std::uint64_t, long);
 template JitteredCloudReport jitteredCloudSpectrum<2>(const std::string&, const LatticeMethodSettings&, int, Real,
-                                                      std::uint64_t);
+                                                      std::uint64_t, long);
 template JitteredCloudReport jitteredCloudSpectrum<3>(const std::string&, const LatticeMethodSettings&, int, Real,
-                                                      std::uint64_t);
+                                                      std::uint64_t, long);
 
 }  // namespace mfwave

@@ -37,6 +37,11 @@ struct JitteredCloudReport {
   Real quadraticResidual = 0;    // max over central rows of |A u - M a| / c_p^2 for u = x^2 / 2 e_x,
                                  // whose exact acceleration is a = c_p^2 e_x
   Real tolerance = 0;            // the eigenvalue noise level used for the verdicts
+  // With confirmSteps > 0: central difference at 0.9 of its limit from random displacements.
+  Real predictedLogGrowth = 0;   // ln of the largest amplification per step, times the steps
+  Real measuredLogGrowth = 0;    // ln(largest |u| / initial largest |u|) over the run
+  std::string confirmation;      // "grew as predicted", "bounded as predicted", "too slow to tell",
+                                 // "CONTRADICTS: ..."; empty without a run
   Real seconds = 0;
 };
 
@@ -49,8 +54,10 @@ bool jitteredCloudMethodAvailable(const std::string& method);
 // dx = 1. Failures of the method on the cloud (too few neighbours for a correction, a singular
 // moment matrix) come back as status "fails: ...". Throws InputError("method") for a method not
 // available, InputError("jitter"), and InputError("cells") also when a row reaches past the copies.
+// confirmSteps > 0 also runs central difference on the folded operator and compares its growth
+// with the spectrum's prediction (the confirmation fields).
 template <int D>
 JitteredCloudReport jitteredCloudSpectrum(const std::string& method, const LatticeMethodSettings& settings, int cells,
-                                          Real jitter, std::uint64_t seed);
+                                          Real jitter, std::uint64_t seed, long confirmSteps = 0);
 
 }  // namespace mfwave

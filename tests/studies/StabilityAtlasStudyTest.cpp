@@ -118,6 +118,7 @@ TEST(StabilityAtlasStudy, EveryMethodIn1dIsConfirmedAtBothSidesOfItsLimit) {
     if (r.at("jitter") == "0") {
       EXPECT_EQ(r.at("status"), "ok") << r.at("method") << ' ' << r.at("value");
     }
+    EXPECT_EQ(r.at("confirmation").rfind("CONTRADICTS", 0), std::string::npos) << r.at("method");
     if ((r.at("method") == "rkcm" || r.at("method") == "vwsph_consistent") && r.at("status").rfind("fails", 0) != 0) {
       EXPECT_LT(std::stod(r.at("quadratic_residual")), 1e-9) << r.at("method");
     }
