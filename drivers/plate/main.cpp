@@ -493,7 +493,8 @@ int main(int argc, char** argv) {
       for (const std::string& note : r.notes)
         if (std::find(summary.notes.begin(), summary.notes.end(), note) == summary.notes.end())
           summary.notes.push_back(note);
-    summary.files = {"scene.resolved.toml", "cases.csv"};
+    // Before what was listed already (modes.csv): the list used to be reassigned here and lost it.
+    summary.files.insert(summary.files.begin(), {"scene.resolved.toml", "cases.csv"});
     for (const PlateCaseResult& r : results)
       for (const std::string& f : r.files) summary.files.push_back(f);
     summary.finish();

@@ -10,6 +10,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 
@@ -107,6 +109,11 @@ TEST(PlateStudy, LinearisedPeriodConvergesToTimoshenkoAtSecondOrder) {
       "modes");
   ASSERT_TRUE(run.exited && run.exitCode == 0) << run.log;
   EXPECT_TRUE(fs::exists(out / "modes.csv"));
+  // summary.json lists every file the run wrote, modes.csv included.
+  std::ifstream json(out / "summary.json");
+  const std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"modes.csv\""), std::string::npos) << text;
+  EXPECT_NE(text.find("\"cases.csv\""), std::string::npos) << text;
   const auto v = numbers(out / "summary.json");
   EXPECT_NEAR(v.at("linearised_Hdp5_period [s]"), 0.31116, 1e-4);
   EXPECT_NEAR(v.at("linearised_Hdp7_period [s]"), 0.28489, 1e-4);
