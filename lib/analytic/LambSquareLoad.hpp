@@ -2,7 +2,7 @@
 // The 3-D Lamb problem of Ding-Long-Wu section 8 (eq. 36-37): a half-space with Poisson ratio 1/4
 // (lambda = mu) loaded on its free surface by the normal traction T_z = p f(t) X(x1, x2), X = 1 on
 // the square |x1| < l, |x2| < l (the paper's eq. 37 prints |x1 - 1| < l, but its text puts the load
-// at the centre of the free surface; see READING-NOTES section 1), f piecewise linear with f = 0
+// at the centre of the free surface; docs/references.md, reading 2), f piecewise linear with f = 0
 // before its first breakpoint (eq. 36: the triangle t on (0, 1), 2 - t on (1, 2), 0 after).
 //
 // Sign convention: displacement and velocity are the surface components ALONG THE APPLIED TRACTION

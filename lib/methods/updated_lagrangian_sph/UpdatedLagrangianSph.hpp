@@ -1,5 +1,5 @@
 #pragma once
-// Updated-Lagrangian SPH for elastic solids (primer by Li, READING-NOTES section 2) as a split
+// Updated-Lagrangian SPH for elastic solids (primer by Li, eqs. 17-30; docs/references.md) as a split
 // first-order system y' = F(t, y) over moving particles; the state layout is in
 // UpdatedLagrangianSphLayout.hpp. One evaluation of F:
 //   density       eq. (17) summation or eq. (18) continuity

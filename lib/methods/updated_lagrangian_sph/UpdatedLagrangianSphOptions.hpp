@@ -1,5 +1,5 @@
 #pragma once
-// Options of the updated-Lagrangian SPH for solids (primer by Li, READING-NOTES section 2).
+// Options of the updated-Lagrangian SPH for solids (primer by Li, eqs. 17-30; docs/references.md).
 // Every artificial term is a key with a neutral default where the physics allows, so its effect can
 // be measured from a scene alone.
 

@@ -7,7 +7,7 @@
 // Why: as published the row sums and the boundary moments are quadrature errors of O(1) (theory
 // notes, "The published scheme's defects"), so the scheme does not converge. Exact reproduction of
 // quadratic fields is the patch test of a second-order operator, and it is what makes the
-// consistent variant converge (VERY-WEAK-SPH-FINDINGS.md, "A consistent variant that converges").
+// consistent variant converge (docs/references.md, reading 3).
 //
 // Per particle a the right-hand side is rho u''_a = sum_b G_ab u_b + sum_f T_af t_f (b its physical
 // neighbours, f the facets of those neighbours). For the scalar row (a, i) the unknowns are the

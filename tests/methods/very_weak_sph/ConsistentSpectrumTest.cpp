@@ -3,7 +3,7 @@
 // the growth rate (largest real part of the modes) with free faces and with every face
 // transmitting (dashpots through the traction matrix), with and without the higher-order filter
 // v <- v - gamma dt (I - S)^2 v. The corrected boundary rows are not symmetric, so some modes are
-// complex and grow slowly (VERY-WEAK-SPH-FINDINGS.md); the filter is meant to remove that growth.
+// complex and grow slowly (docs/references.md, reading 3); the filter is meant to remove that growth.
 //
 // The filter enters the spectrum as what it is in the limit of small steps: per step it removes
 // gamma dt (I - S)^2 v from the velocity, i.e. a damping term -gamma (I - S)^2 v in v'. The
