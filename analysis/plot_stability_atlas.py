@@ -159,8 +159,11 @@ def jitter_plot(jitter, out_dir):
             axes[row][col].set_yscale("log")
             axes[row][col].set_xlabel("jitter / dx")
             axes[row][col].grid(True, which="both", alpha=0.3)
-    handles, labels = axes[0][-1].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="lower center", ncol=6, fontsize=7)
+    legend = {}  # every method and support of every panel, once
+    for ax in axes[0]:
+        for handle, label in zip(*ax.get_legend_handles_labels()):
+            legend.setdefault(label, handle)
+    fig.legend(list(legend.values()), list(legend.keys()), loc="lower center", ncol=6, fontsize=7)
     fig.subplots_adjust(bottom=0.16, hspace=0.3, wspace=0.35)
     save_atomically(fig, os.path.join(out_dir, "jitter.png"))
 
