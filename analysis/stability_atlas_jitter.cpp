@@ -2,6 +2,7 @@
 
 #include "analysis/JitteredCloud.hpp"
 #include "core/Error.hpp"
+#include "io/scene/Format.hpp"
 
 #include <algorithm>
 #include <iomanip>
@@ -15,8 +16,8 @@ void addJitterAtlasKeys(SceneSchema& schema) {
       "irregular clouds: each method's whole spectrum on a periodic cloud of lattice sites moved at random");
   schema.add("jitter.enabled", T::Boolean).defaultsTo("true").describedAs("examine the jittered clouds");
   schema.add("jitter.methods", T::StringArray).withUnit("-")
-      .defaultsTo("[\"vwsph_published\", \"vwsph_consistent\", \"rkcm\", \"ulsph\", \"ulsph_corrected\"]")
-      .oneOf({"vwsph_published", "vwsph_consistent", "rkcm", "ulsph", "ulsph_corrected"})
+      .defaultsTo(scene::tomlArray(jitteredCloudMethodNames()))
+      .oneOf(jitteredCloudMethodNames())
       .describedAs("methods assembled on the clouds (finite differences and the Galerkin variant are lattice "
                    "schemes; rbcm's global functions cannot be folded exactly)");
   schema.add("jitter.dimensions", T::NumberArray).withUnit("-").defaultsTo("[1.0, 2.0, 3.0]").between(1, 3)

@@ -115,19 +115,17 @@ Eigen::MatrixXd fold(const RowMatrix& rows, const std::vector<Index>& base, Inde
   return out;
 }
 
-template <int D>
 RowMatrix centralRows(const SparseMatrix& matrix, Index rows) {
   return RowMatrix(matrix.topRows(static_cast<int>(rows)));
 }
 
 // The central rows of M a = A u for one method on the cloud (M empty: lumped identity).
-template <int D>
 struct CloudRows {
   RowMatrix acceleration, mass;
 };
 
 template <int D>
-CloudRows<D> veryWeakSphRows(const std::string& method, const LatticeMethodSettings& s, const ParticleSet<D>& cloud,
+CloudRows veryWeakSphRows(const std::string& method, const LatticeMethodSettings& s, const ParticleSet<D>& cloud,
                              Index rows) {
   VeryWeakSphOptions options;
   options.material = s.material;
@@ -136,14 +134,14 @@ CloudRows<D> veryWeakSphRows(const std::string& method, const LatticeMethodSetti
   const NeighbourList neighbours =
       buildNeighbourList(CellList<D>(cloud, kernel->supportRadius()), cloud.physicalCount());
   const VeryWeakSph<D> method_ = assembleVeryWeakSph(cloud, neighbours, *kernel, options);
-  CloudRows<D> out;
-  out.acceleration = -centralRows<D>(method_.system.stiffness(), rows);
-  out.mass = centralRows<D>(method_.system.mass(), rows);
+  CloudRows out;
+  out.acceleration = -centralRows(method_.system.stiffness(), rows);
+  out.mass = centralRows(method_.system.mass(), rows);
   return out;
 }
 
 template <int D>
-CloudRows<D> collocationRows(const LatticeMethodSettings& s, const ParticleSet<D>& cloud, Index sites) {
+CloudRows collocationRows(const LatticeMethodSettings& s, const ParticleSet<D>& cloud, Index sites) {
   const ReproducingKernelShapeFunctions<D> shapes(cloud.coordinates(), s.rkOrder, s.rkSupportRatio);
   std::vector<Eigen::Triplet<Real>> a, m;
   for (Index i = 0; i < sites; ++i)
@@ -154,7 +152,7 @@ CloudRows<D> collocationRows(const LatticeMethodSettings& s, const ParticleSet<D
           a.emplace_back(static_cast<int>(i * D + p), static_cast<int>(node * D + q), g(p, q));
       }
     });
-  CloudRows<D> out;
+  CloudRows out;
   out.acceleration.resize(static_cast<int>(sites * D), static_cast<int>(cloud.physicalCount() * D));
   out.mass.resize(out.acceleration.rows(), out.acceleration.cols());
   out.acceleration.setFromTriplets(a.begin(), a.end());
@@ -163,7 +161,7 @@ CloudRows<D> collocationRows(const LatticeMethodSettings& s, const ParticleSet<D
 }
 
 template <int D>
-CloudRows<D> updatedLagrangianRows(const std::string& method, const LatticeMethodSettings& s,
+CloudRows updatedLagrangianRows(const std::string& method, const LatticeMethodSettings& s,
                                    const ParticleSet<D>& cloud, Index sites) {
   UpdatedLagrangianSph<D> system(cloud, linearisedAboutRest(updatedLagrangianSphSettings(method, s)));
   const Vector rest = system.initialState(Vector());
@@ -171,7 +169,7 @@ CloudRows<D> updatedLagrangianRows(const std::string& method, const LatticeMetho
   for (Index i = 0; i < cloud.physicalCount(); ++i)
     for (int a = 0; a < D; ++a) velocities.push_back(system.layout().velocity(i, a));
   for (Index r = 0; r < sites * D; ++r) rows.push_back(r);
-  CloudRows<D> out;
+  CloudRows out;
   out.acceleration = restOperatorRows(system, 0, rest, velocities, rows).sparseView();
   return out;
 }
@@ -236,18 +234,25 @@ void confirmByRun(const Eigen::MatrixXd& A, const Eigen::VectorXcd& lambda, Real
 
 }  // namespace
 
+const std::vector<std::string>& jitteredCloudMethodNames() {
+  static const std::vector<std::string> names = {"vwsph_published", "vwsph_consistent", "rkcm", "ulsph",
+                                                 "ulsph_corrected"};
+  return names;
+}
+
 bool jitteredCloudMethodAvailable(const std::string& method) {
-  return method == "vwsph_published" || method == "vwsph_consistent" || method == "rkcm" || method == "ulsph" ||
-         method == "ulsph_corrected";
+  const auto& names = jitteredCloudMethodNames();
+  return std::find(names.begin(), names.end(), method) != names.end();
 }
 
 template <int D>
 JitteredCloudReport jitteredCloudSpectrum(const std::string& method, const LatticeMethodSettings& settings, int cells,
                                           Real jitter, std::uint64_t seed, long confirmSteps) {
-  if (!jitteredCloudMethodAvailable(method))
-    throw InputError("method", "'" + method +
-                                   "' is not assembled on irregular clouds here (vwsph_published, vwsph_consistent, "
-                                   "rkcm, ulsph, ulsph_corrected)");
+  if (!jitteredCloudMethodAvailable(method)) {
+    std::string offered;
+    for (const std::string& name : jitteredCloudMethodNames()) offered += (offered.empty() ? "" : ", ") + name;
+    throw InputError("method", "'" + method + "' is not assembled on irregular clouds here (" + offered + ")");
+  }
   if (!(jitter >= 0 && jitter < 0.5)) throw InputError("jitter", "must be in [0, 0.5) of the spacing");
   if (cells < 4 || cells > 64) throw InputError("cells", "must be 4 to 64 per axis");
   const auto start = std::chrono::steady_clock::now();
@@ -266,13 +271,13 @@ JitteredCloudReport jitteredCloudSpectrum(const std::string& method, const Latti
                                   " dx away: the tile needs more than " + std::to_string(cells) + " cells per axis");
   try {
     // Physical copies as far as a central row reaches (and one spacing more); the very weak SPH's
-    // ghosts beyond them keep its edge rows (never used) from failing, as ghost layers do on a block.
+    // ghosts beyond them (one support, reach / 2, and a spacing) keep its edge rows (never used)
+    // from failing, as ghost layers do on a block.
     const bool veryWeak = method.rfind("vwsph", 0) == 0;
-    const Real support = method == "rkcm" ? 0 : makeKernel(settings.kernel, D, settings.smoothingLengthRatio)->supportRadius();
-    const TiledCloud<D> tiled = tiledCloud<D>(cells, jitter, seed, reach + 1, veryWeak ? support + 1 : 0, veryWeak);
+    const TiledCloud<D> tiled = tiledCloud<D>(cells, jitter, seed, reach + 1, veryWeak ? reach / 2 + 1 : 0, veryWeak);
     const ParticleSet<D>& cloud = tiled.particles;
     report.closestPair = closestPair<D>(cloud, sites);
-    const CloudRows<D> rows = method == "rkcm" ? collocationRows<D>(settings, cloud, sites)
+    const CloudRows rows = method == "rkcm" ? collocationRows<D>(settings, cloud, sites)
                               : veryWeak       ? veryWeakSphRows<D>(method, settings, cloud, sites * D)
                                                : updatedLagrangianRows<D>(method, settings, cloud, sites);
 

@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace mfwave {
 
@@ -45,9 +46,10 @@ struct JitteredCloudReport {
   Real seconds = 0;
 };
 
-// Whether the method can be assembled on an irregular cloud: vwsph_published, vwsph_consistent,
-// rkcm, ulsph, ulsph_corrected. Not finite_difference and vwsph_galerkin (lattice schemes by
-// construction) nor rbcm (its global functions see the tiled cloud's edge, so folding is not exact).
+// The methods assembled on irregular clouds: vwsph_published, vwsph_consistent, rkcm, ulsph,
+// ulsph_corrected. Not finite_difference and vwsph_galerkin (lattice schemes by construction) nor
+// rbcm (its global functions see the tiled cloud's edge, so folding is not exact).
+const std::vector<std::string>& jitteredCloudMethodNames();
 bool jitteredCloudMethodAvailable(const std::string& method);
 
 // The report for one method, tile size, jitter (fraction of dx, in [0, 0.5)) and random seed, at
