@@ -129,10 +129,8 @@ int main(int argc, char** argv) {
     summary.particles = rkLine;
     summary.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
     summary.figures.push_back({"cases", static_cast<Real>(cases)});
-    summary.files = {"scene.resolved.toml", "dispersion.csv", "summary.json"};
-    summary.finish();
-    summary.writeJson(folder + "/summary.json");
-    if (!opt.quiet) summary.print(std::cout);
+    summary.files.add("dispersion.csv");
+    summary.conclude(folder, opt.quiet ? nullptr : &std::cout);
     return 0;
   });
 }

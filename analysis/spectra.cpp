@@ -298,11 +298,8 @@ int main(int argc, char** argv) {
     summary.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
     summary.figures.push_back({"simulated_peaks", static_cast<Real>(out.simulatedPoints)});
     summary.figures.push_back({"simulation_largest_relative_error", out.worstSimulationError});
-    summary.files = {"scene.resolved.toml", "spectra.csv", "accuracy.csv", "anisotropy.csv", "simulation.csv",
-                     "summary.json"};
-    summary.finish();
-    summary.writeJson(folder + "/summary.json");
-    if (!opt.quiet) summary.print(std::cout);
+    summary.files.addAll({"spectra.csv", "accuracy.csv", "anisotropy.csv", "simulation.csv"});
+    summary.conclude(folder, opt.quiet ? nullptr : &std::cout);
     return 0;
   });
 }

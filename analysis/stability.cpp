@@ -219,11 +219,9 @@ int main(int argc, char** argv) {
     table.commit();
     summary.wallSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
-    summary.notes.push_back("steps: number of bisection runs in total");
-    summary.files = {"scene.resolved.toml", "stability.csv", "summary.json"};
-    summary.finish();
-    summary.writeJson(folder + "/summary.json");
-    if (!opt.quiet) summary.print(std::cout);
+    summary.notes.add("steps: number of bisection runs in total");
+    summary.files.add("stability.csv");
+    summary.conclude(folder, opt.quiet ? nullptr : &std::cout);
     return 0;
   });
 }

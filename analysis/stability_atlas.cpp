@@ -499,11 +499,8 @@ int main(int argc, char** argv) {
     summary.figures.push_back({"jittered_clouds_failed", static_cast<Real>(clouds.failed)});
     summary.figures.push_back({"jittered_runs_as_predicted", static_cast<Real>(clouds.confirmed)});
     summary.figures.push_back({"jittered_runs_contradicting", static_cast<Real>(clouds.contradicted)});
-    summary.files = {"scene.resolved.toml", "atlas.csv", "poisson.csv", "integrators.csv", "confirmations.csv",
-                     "jitter.csv", "summary.json"};
-    summary.finish();
-    summary.writeJson(folder + "/summary.json");
-    if (!opt.quiet) summary.print(std::cout);
+    summary.files.addAll({"atlas.csv", "poisson.csv", "integrators.csv", "confirmations.csv", "jitter.csv"});
+    summary.conclude(folder, opt.quiet ? nullptr : &std::cout);
     // A contradicted prediction is a defect of the analysis or of an integrator: say so by the exit.
     if (out.contradicted > 0 || clouds.contradicted > 0) {
       std::cerr << kProgram << ": " << out.contradicted + clouds.contradicted

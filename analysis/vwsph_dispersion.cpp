@@ -126,9 +126,9 @@ void study(const Settings& settings, std::ostream& curves, std::ostream& longWav
                   << " blocks, row sum " << num(rowSum) << " / dx^2 (times rho), translation check "
                   << num(lattice.translationDifference, 3) << '\n';
       if (lattice.translationDifference > 1e-10)
-        summary.notes.push_back(std::string(variantName) + " h/dx = " + num(ratio) +
-                                ": the centre row differs from its neighbour's by " +
-                                num(lattice.translationDifference, 3) + " (not interior?)");
+        summary.notes.add(std::string(variantName) + " h/dx = " + num(ratio) +
+                          ": the centre row differs from its neighbour's by " +
+                          num(lattice.translationDifference, 3) + " (not interior?)");
       for (const auto& direction : directions)
         for (const Polarisation polarisation : polarisations) {
           const Real c = polarisation == Polarisation::P ? cp : cs;
@@ -244,10 +244,8 @@ int main(int argc, char** argv) {
     summary.figures.push_back({"curves", static_cast<Real>(tally.curves)});
     summary.figures.push_back({"translation_check", tally.worstTranslation});
     summary.figures.push_back({"symbol_asymmetry", tally.worstAsymmetry});
-    summary.files = {"scene.resolved.toml", "vwsph_dispersion.csv", "vwsph_long_wave.csv", "summary.json"};
-    summary.finish();
-    summary.writeJson(folder + "/summary.json");
-    if (!opt.quiet) summary.print(std::cout);
+    summary.files.addAll({"vwsph_dispersion.csv", "vwsph_long_wave.csv"});
+    summary.conclude(folder, opt.quiet ? nullptr : &std::cout);
     return 0;
   });
 }

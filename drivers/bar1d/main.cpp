@@ -88,6 +88,7 @@ struct CaseResult {
   Real errorU, errorV, maxErrorU;
   double wallSeconds;
   std::string note;  // stability.allow_growth: what ran above a limit on purpose
+  std::vector<std::string> files;  // the error series and profile written, relative to the output folder
 };
 
 std::string describeMethod(const Study& study) {
@@ -211,8 +212,11 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
   const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
 
   const Errors e = sampler.errors(integrator->state());
+  CaseResult result{nodeCount, h, dt, criticalDt, stats.steps, std::sqrt(e.u / e.uNorm), std::sqrt(e.v / e.vNorm),
+                    sampler.maxRelativeU(), stats.wallSeconds, note, {}};
   if (writeSeries) {
-    const std::string stem = folder + "/nodes-" + std::to_string(nodeCount);
+    const std::string name = "nodes-" + std::to_string(nodeCount);
+    const std::string stem = folder + "/" + name;
     sampler.series().writeCsv(stem + "-errors.csv");
     const StateView s = integrator->state();
     const Vector u = evaluateCollocationField<1>(*shapes, system.coefficients(s.displacement, s.time), errorPoints);
@@ -225,9 +229,9 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
                        << v[static_cast<Index>(i)] << ',' << exact.velocity(x, s.time) << '\n';
     }
     profile.commit();
+    result.files = {name + "-errors.csv", name + "-profile.csv"};
   }
-  return {nodeCount, h, dt, criticalDt, stats.steps, std::sqrt(e.u / e.uNorm), std::sqrt(e.v / e.vNorm),
-          sampler.maxRelativeU(), stats.wallSeconds, note};
+  return result;
 }
 
 Study readStudy(SceneReader& reader) {
@@ -304,7 +308,7 @@ int main(int argc, char** argv) {
       summary.particles = std::max<Index>(summary.particles, r.nodes);
       summary.steps += r.steps;
       summary.wallSeconds += r.wallSeconds;
-      if (!r.note.empty()) summary.notes.push_back(r.note);
+      if (!r.note.empty()) summary.notes.add(r.note);
     }
     table.commit();
     const CaseResult& finest = results.back();
@@ -317,12 +321,10 @@ int main(int argc, char** argv) {
       summary.figures.push_back({"observed_order_u", std::log(results[results.size() - 2].errorU / finest.errorU) /
                                                          std::log(results[results.size() - 2].h / finest.h)});
     summary.simulatedTime = study.scene.integrator.endTime;
-    summary.notes.push_back("particles: nodes of the finest case; steps and wall time summed over all cases");
-    summary.files = {"scene.resolved.toml", "convergence.csv", "nodes-N-errors.csv", "nodes-N-profile.csv",
-                     "summary.json"};
-    summary.finish();
-    summary.writeJson(folder + "/summary.json");
-    summary.print(std::cout);
+    summary.notes.add("particles: nodes of the finest case; steps and wall time summed over all cases");
+    summary.files.add("convergence.csv");
+    for (const CaseResult& r : results) summary.files.addAll(r.files);
+    summary.conclude(folder, &std::cout);
     return 0;
   });
 }

@@ -100,6 +100,7 @@ int main(int argc, char** argv) {
     }
 
     RunSummary summary;
+    summary.files.add("cases.csv");
     summary.program = kProgram;
     summary.scene = scene.info.name;
     summary.method = scene.method.name;
@@ -131,7 +132,7 @@ int main(int argc, char** argv) {
       summary.meanNeighbours = r.meanNeighbours;
       summary.steps += r.steps;
       summary.wallSeconds += r.wallSeconds;
-      summary.files.push_back(profileFileName(r.dx));
+      summary.files.add(profileFileName(r.dx));
     }
     table.commit();
     const CaseResult& finest = results.back();
@@ -148,15 +149,11 @@ int main(int argc, char** argv) {
       summary.figures.push_back({"order_l1_velocity", std::log(previous.l1Velocity / finest.l1Velocity) / ratio});
       summary.figures.push_back({"order_l1_stress", std::log(previous.l1Stress / finest.l1Stress) / ratio});
     }
-    summary.notes.push_back("particles: the finest case; steps and wall time summed over all cases");
-    summary.notes.push_back("errors: relative L1 norms at the end time against SymmetricBarImpact; plateau error relative "
-                            "to rho c v0; front error in particle spacings");
-    summary.files.insert(summary.files.begin(), {"scene.resolved.toml", "cases.csv"});
-    if (results.front().framesWritten > 0 || results.back().framesWritten > 0) summary.files.push_back("frame.pvd");
-    summary.finish();
-    summary.files.push_back("summary.json");
-    summary.writeJson(folder + "/summary.json");
-    summary.print(std::cout);
+    summary.notes.add("particles: the finest case; steps and wall time summed over all cases");
+    summary.notes.add("errors: relative L1 norms at the end time against SymmetricBarImpact; plateau error relative "
+                      "to rho c v0; front error in particle spacings");
+    if (results.front().framesWritten > 0 || results.back().framesWritten > 0) summary.files.add("frame.pvd");
+    summary.conclude(folder, &std::cout);
     return 0;
   });
 }

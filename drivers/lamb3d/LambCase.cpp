@@ -5,6 +5,7 @@
 #include "analytic/LambSquareLoad.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
+#include "core/Stopwatch.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "integrators/IntegratorFactory.hpp"
 #include "io/run/ProgressReporter.hpp"
@@ -27,7 +28,6 @@
 #include "observers/TimeLoop.hpp"
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <memory>
@@ -38,11 +38,6 @@ namespace mfwave::lamb3d {
 namespace {
 
 constexpr int D = 3;
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 Real csrMiB(const SparseMatrix& m) {
   return (static_cast<Real>(m.nonZeros()) * (sizeof(Real) + sizeof(int)) +
@@ -281,7 +276,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   checkSupported(scene);
   CaseResult result;
   result.settings = settings;
-  const auto assemblyStart = Clock::now();
+  const Stopwatch assemblyClock;
 
   // particles + neighbours
   const ParticleSet<D> particles = buildParticles<D>(settings.geometry);
@@ -411,7 +406,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
       spec.deconvolution ? deconvolutionMatrix<D>(particles, neighbours, *kernel, method.data.volume) : ParticleMatrix();
   const std::vector<Probe> probes = resolveProbes(scene.probes, particles);
   LambProbes recorder(probes, spec.deconvolution ? &deconvolution : nullptr);
-  result.assemblySeconds = secondsSince(assemblyStart);
+  result.assemblySeconds = assemblyClock.seconds();
 
   StabilityMonitor monitor(scene.stability.options(D));
   ProgressReporter reporter(scene.integrator.endTime, particles.physicalCount(), progress);

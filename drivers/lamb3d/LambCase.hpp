@@ -4,6 +4,7 @@
 // surface response of the half-space.
 
 #include "analysis/SignalComparison.hpp"
+#include "core/Stopwatch.hpp"
 #include "io/scene/Scene.hpp"
 #include "io/scene/VeryWeakSphSpec.hpp"
 
@@ -54,7 +55,7 @@ struct CaseResult {
   std::vector<std::string> notes;
 
   double particleStepsPerSecond() const {
-    return runSeconds > 0 ? static_cast<double>(particles) * static_cast<double>(steps) / runSeconds : 0;
+    return mfwave::particleStepsPerSecond(static_cast<double>(particles), static_cast<double>(steps), runSeconds);
   }
 };
 

@@ -239,6 +239,7 @@ int main(int argc, char** argv) {
 
     const CaseResult& paper = results.front();  // the scene's variant at its spacing
     RunSummary summary;
+    summary.files.add("cases.csv");
     summary.program = kProgram;
     summary.scene = plan.study.scene.info.name;
     summary.method = plan.study.scene.method.name;
@@ -267,19 +268,13 @@ int main(int argc, char** argv) {
       summary.figures.push_back({r.settings.name + "_energy_final_fraction", r.energyFinalFraction});
       summary.figures.push_back({r.settings.name + "_energy_balance_drift", r.energyBalanceDrift});
     }
-    summary.notes.push_back("particles, neighbours and dt of the first case (" + paper.settings.name +
-                            "); steps and wall time summed over " + std::to_string(results.size()) + " cases");
-    for (const CaseResult& r : results)
-      for (const std::string& note : r.notes)
-        if (std::find(summary.notes.begin(), summary.notes.end(), note) == summary.notes.end())
-          summary.notes.push_back(note);
-    summary.files = {"scene.resolved.toml", "cases.csv"};
-    for (const CaseResult& r : results)
-      for (const std::string& f : r.files) summary.files.push_back(f);
-    summary.finish();
-    summary.files.push_back("summary.json");
-    summary.writeJson(folder + "/summary.json");
-    summary.print(std::cout);
+    summary.notes.add("particles, neighbours and dt of the first case (" + paper.settings.name +
+                      "); steps and wall time summed over " + std::to_string(results.size()) + " cases");
+    for (const CaseResult& r : results) {
+      summary.notes.addAll(r.notes);
+      summary.files.addAll(r.files);
+    }
+    summary.conclude(folder, &std::cout);
     return 0;
   });
 }

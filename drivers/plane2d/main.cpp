@@ -251,12 +251,10 @@ int main(int argc, char** argv) {
       }
     }
     table.commit();
-    summary.notes.insert(summary.notes.end(), stabilityNotes.begin(), stabilityNotes.end());
+    summary.notes.addAll(stabilityNotes);
     summary.simulatedTime = scene.integrator.endTime;
-    summary.files = {"scene.resolved.toml", "convergence.csv", "summary.json"};
-    summary.finish();
-    summary.writeJson(folder + "/summary.json");
-    summary.print(std::cout);
+    summary.files.add("convergence.csv");
+    summary.conclude(folder, &std::cout);
     return 0;
   });
 }

@@ -14,6 +14,7 @@
 #include "analytic/PlaneWave.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
+#include "core/Stopwatch.hpp"
 #include "integrators/IntegratorFactory.hpp"
 #include "integrators/StabilityLimit.hpp"
 #include "io/run/DriverCommandLine.hpp"
@@ -26,7 +27,6 @@
 
 #include <Eigen/SparseLU>
 
-#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -94,7 +94,7 @@ struct Outcome {
 
 template <int D>
 Outcome run(const Settings& s) {
-  const auto setupStart = std::chrono::steady_clock::now();
+  Stopwatch clock;
   const Real dx = 1.0 / s.cells;
   const MethodLatticeStencil<D> stencil = latticeMethodStencil<D>(s.method, s.lattice, dx, "study.method");
   const auto op = makePeriodicLatticeOperator<D>(stencil.acceleration, dx, s.cells, stencil.mass);
@@ -179,8 +179,8 @@ Outcome run(const Settings& s) {
   LinearSecondOrderSystem system(mass, SparseMatrix(), -periodicMatrix(op.acceleration, dx, s.cells));
   auto integrator = makeSecondOrderIntegrator(s.integrator);
   integrator->initialise(system, 0, u0, v0, out.dt);
-  const auto loopStart = std::chrono::steady_clock::now();
-  out.setupSeconds = std::chrono::duration<double>(loopStart - setupStart).count();
+  out.setupSeconds = clock.seconds();
+  clock.restart();
   // A growing field stops the run at once: every 16 steps, anything non-finite or a thousand times
   // the initial amplitude (the exact wave keeps its amplitude) is a blow-up.
   const Real limit = 1e3 * std::max<Real>(u0.cwiseAbs().maxCoeff(), 1e-300);
@@ -197,7 +197,7 @@ Outcome run(const Settings& s) {
                                  std::to_string(worst / c) + ": the step is beyond the integrator's limit",
                              step, integrator->time(), static_cast<long>(worst / c));
   }
-  out.loopSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count();
+  out.loopSeconds = clock.seconds();
   const Vector& d = integrator->state().displacement;
   const Vector u = op.lumped() ? Vector(d) : Vector(mass * d);
   const Vector exact = nodal(out.endTime, false);
@@ -238,7 +238,7 @@ int main(int argc, char** argv) {
     const std::string sceneFolder = reader.string("output.folder");
     reader.checkAllKeysRead();
     const std::string folder = prepareOutputFolder(opt, sceneFolder, reader);
-    const auto wallStart = std::chrono::steady_clock::now();
+    const Stopwatch wall;
 
     Outcome out;
     if (s.dimension == 1) out = run<1>(s);
@@ -268,15 +268,13 @@ int main(int argc, char** argv) {
     summary.steps = out.steps;
     summary.timeStep = out.dt;
     summary.simulatedTime = out.endTime;
-    summary.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
+    summary.wallSeconds = wall.seconds();
     summary.errors.push_back({"relative_l2_u", out.error});
     summary.figures.push_back({"critical_dt", out.criticalDt});
     summary.figures.push_back({"time_step", out.dt});
     summary.figures.push_back({"loop_seconds", out.loopSeconds});
-    summary.files = {"scene.resolved.toml", "planewave.csv", "summary.json"};
-    summary.finish();
-    summary.writeJson(folder + "/summary.json");
-    if (!opt.quiet) summary.print(std::cout);
+    summary.files.add("planewave.csv");
+    summary.conclude(folder, opt.quiet ? nullptr : &std::cout);
     return 0;
   });
 }

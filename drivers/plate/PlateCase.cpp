@@ -8,6 +8,7 @@
 #include "VeryWeakPlate.hpp"
 
 #include "core/Error.hpp"
+#include "core/Stopwatch.hpp"
 #include "io/run/ProgressReporter.hpp"
 #include "io/vtk/PngFrameRenderer.hpp"
 #include "io/vtk/VtkFrameWriter.hpp"
@@ -15,7 +16,6 @@
 #include "observers/TimeLoop.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -24,9 +24,6 @@ namespace mfwave::plate {
 namespace {
 
 constexpr int D = 2;
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 PngOptions pngOptions(const OutputSpec& output) {
   PngOptions png;
@@ -43,7 +40,7 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
   const Scene& scene = study.scene;
   PlateCaseResult result;
   result.settings = settings;
-  const auto setupStart = Clock::now();
+  const Stopwatch setupClock;
   const CantileverPlate plate(study.length, study.thickness, scene.material.material());
 
   // particles: the plate and its clamp, cell-centred
@@ -108,7 +105,7 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
     }
     loop.add(adapter, scene.output.every);
   }
-  result.setupSeconds = secondsSince(setupStart);
+  result.setupSeconds = setupClock.seconds();
 
   const RunStatistics stats = loop.run(*integrator, settings.endTime);
   result.steps = stats.steps;

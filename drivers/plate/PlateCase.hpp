@@ -7,6 +7,7 @@
 #include "Oscillation.hpp"
 
 #include "analytic/CantileverPlate.hpp"
+#include "core/Stopwatch.hpp"
 #include "io/scene/Scene.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSphOptions.hpp"
 #include "observers/TimeSeries.hpp"
@@ -80,7 +81,7 @@ struct PlateCaseResult {
   Real thinError() const { return tip.period / thinPeriod - 1; }
   Real timoshenkoError() const { return tip.period / timoshenkoPeriod - 1; }
   double particleStepsPerSecond() const {
-    return runSeconds > 0 ? static_cast<double>(particles) * static_cast<double>(steps) / runSeconds : 0;
+    return mfwave::particleStepsPerSecond(static_cast<double>(particles), static_cast<double>(steps), runSeconds);
   }
 };
 

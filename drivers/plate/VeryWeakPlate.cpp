@@ -4,6 +4,7 @@
 
 #include "analysis/StableTimeStep.hpp"
 #include "core/Error.hpp"
+#include "core/Stopwatch.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "io/run/ProgressReporter.hpp"
 #include "kernels/KernelFactory.hpp"
@@ -18,7 +19,6 @@
 #include "particles/GhostLayers.hpp"
 #include "particles/Lattice.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <optional>
 
@@ -26,9 +26,6 @@ namespace mfwave::plate {
 namespace {
 
 constexpr int D = 2;
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 }  // namespace
 
@@ -37,7 +34,7 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
   const Scene& scene = study.scene;
   PlateCaseResult result;
   result.settings = settings;
-  const auto setupStart = Clock::now();
+  const Stopwatch setupClock;
   const Material material = scene.material.material();
   const CantileverPlate plate(study.length, study.thickness, material);
 
@@ -132,7 +129,7 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
   loop.add(reporter);
   loop.add(tip, study.tipEvery);
   loop.add(energy, study.energyEvery);
-  result.setupSeconds = secondsSince(setupStart);
+  result.setupSeconds = setupClock.seconds();
 
   const RunStatistics stats = loop.run(integrator, settings.endTime);
   if (!ledger.growthMessage().empty())

@@ -337,9 +337,9 @@ void reportConvergence(const std::vector<ConvergenceSample>& samples, const std:
   summary.errors.push_back({prefix + "_extrapolated_period_error_timoshenko", error});
   summary.figures.push_back({prefix + "_extrapolated_period [s]", c->limit});
   if (c->observedOrder) summary.figures.push_back({prefix + "_period_order", *c->observedOrder});
-  summary.notes.push_back("extrapolated period (" + prefix + "): Richardson over H / dp of " + what + ", order " +
-                          (c->observedOrder ? "observed through the three finest" : "2 assumed") +
-                          ", limit from the two finest");
+  summary.notes.add("extrapolated period (" + prefix + "): Richardson over H / dp of " + what + ", order " +
+                    (c->observedOrder ? "observed through the three finest" : "2 assumed") +
+                    ", limit from the two finest");
 }
 
 void writeModes(const std::string& path, const std::vector<PlateModesResult>& modes, Real timoshenko) {
@@ -422,6 +422,7 @@ int main(int argc, char** argv) {
 
     const PlateCaseResult& main = results.front();
     RunSummary summary;
+    summary.files.add("cases.csv");
     summary.program = kProgram;
     summary.scene = plan.study.scene.info.name;
     summary.method = plan.study.scene.method.name;
@@ -483,24 +484,17 @@ int main(int argc, char** argv) {
         if (std::isfinite(m.firstPeriod)) modeSamples.push_back({1 / static_cast<Real>(m.rows), m.firstPeriod});
       }
       reportConvergence(modeSamples, "the linearised period", "linearised", main.timoshenkoPeriod, summary);
-      summary.files.push_back("modes.csv");
+      summary.files.add("modes.csv");
     }
-    summary.notes.push_back("particles, neighbours and mean dt of the main case (" + main.settings.name +
-                            "); steps and wall time summed over " + std::to_string(results.size()) + " cases");
-    summary.notes.push_back("errors: measured period / reference - 1 (thin plate, Timoshenko with kappa = " +
-                            scene::formatNumber(plan.study.shearCoefficient) + ")");
-    for (const PlateCaseResult& r : results)
-      for (const std::string& note : r.notes)
-        if (std::find(summary.notes.begin(), summary.notes.end(), note) == summary.notes.end())
-          summary.notes.push_back(note);
-    // Before what was listed already (modes.csv): the list used to be reassigned here and lost it.
-    summary.files.insert(summary.files.begin(), {"scene.resolved.toml", "cases.csv"});
-    for (const PlateCaseResult& r : results)
-      for (const std::string& f : r.files) summary.files.push_back(f);
-    summary.finish();
-    summary.files.push_back("summary.json");
-    summary.writeJson(folder + "/summary.json");
-    summary.print(std::cout);
+    summary.notes.add("particles, neighbours and mean dt of the main case (" + main.settings.name +
+                      "); steps and wall time summed over " + std::to_string(results.size()) + " cases");
+    summary.notes.add("errors: measured period / reference - 1 (thin plate, Timoshenko with kappa = " +
+                      scene::formatNumber(plan.study.shearCoefficient) + ")");
+    for (const PlateCaseResult& r : results) {
+      summary.notes.addAll(r.notes);
+      summary.files.addAll(r.files);
+    }
+    summary.conclude(folder, &std::cout);
     return 0;
   });
 }

@@ -1,7 +1,6 @@
 #include "RingsCase.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -13,6 +12,7 @@
 #include "SolidStateAdapter.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
+#include "core/Stopwatch.hpp"
 #include "io/run/ProgressReporter.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/vtk/PngFrameRenderer.hpp"
@@ -28,9 +28,6 @@ namespace mfwave::rings {
 namespace {
 
 constexpr int D = 2;
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // The two rings (concentric circles of particles, makeAnnulus), the left one (centre (-offset, 0))
 // first, their outer edges `gap` apart.
@@ -232,7 +229,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   const Scene& scene = study.scene;
   CaseResult result;
   result.settings = settings;
-  const auto setupStart = Clock::now();
+  const Stopwatch setupClock;
 
   // particles: two rings of concentric particle circles, dp apart
   Index leftCount = 0;
@@ -311,9 +308,9 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   loop.add(ledger, study.trackEvery);
   if (!probes.empty()) loop.add(probeAdapter, scene.output.probeEvery);
   if (frames || images) loop.add(frameAdapter, scene.output.every);
-  result.setupSeconds = secondsSince(setupStart);
+  result.setupSeconds = setupClock.seconds();
 
-  const auto runStart = Clock::now();
+  const Stopwatch runClock;
   try {
     const RunStatistics stats = loop.run(*integrator, endTime);
     result.steps = stats.steps;
@@ -323,7 +320,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     result.steps = integrator->stepCount();
     result.endTime = integrator->time();
   }
-  result.runSeconds = secondsSince(runStart);
+  result.runSeconds = runClock.seconds();
   result.rhsEvaluations = integrator->rhsEvaluations();
   result.meanNeighbours = system.meanNeighbourCount();
   result.neighbourRebuilds = system.neighbourRebuilds();

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "SolidIntegration.hpp"
+#include "core/Stopwatch.hpp"
 #include "io/scene/Scene.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
 
@@ -70,7 +71,7 @@ struct CaseResult {
   std::vector<std::string> notes;
 
   double particleStepsPerSecond() const {
-    return runSeconds > 0 ? static_cast<double>(particles) * static_cast<double>(steps) / runSeconds : 0;
+    return mfwave::particleStepsPerSecond(static_cast<double>(particles), static_cast<double>(steps), runSeconds);
   }
 };
 

@@ -233,6 +233,7 @@ int main(int argc, char** argv) {
     const Scene& scene = plan.study.scene;
     const CaseResult& first = results.front();
     RunSummary summary;
+    summary.files.add("cases.csv");
     summary.program = kProgram;
     summary.scene = scene.info.name;
     summary.method = scene.method.name;
@@ -276,23 +277,17 @@ int main(int argc, char** argv) {
       summary.figures.push_back({c + "wall [s]", r.setupSeconds + r.runSeconds});
       summary.figures.push_back({c + "particle_steps_per_second", r.particleStepsPerSecond()});
     }
-    summary.notes.push_back(
+    summary.notes.add(
         "no exact solution: the errors are the largest drift of the energy balance (kinetic + "
         "internal, over the initial kinetic + strain energy) and the fragments beyond the two "
         "rings at the end (0 = both intact)");
-    summary.notes.push_back("particles, neighbours and mean dt of the first case (" + first.settings.name +
-                            "); steps and wall time summed over " + std::to_string(results.size()) + " cases");
-    for (const CaseResult& r : results)
-      for (const std::string& note : r.notes)
-        if (std::find(summary.notes.begin(), summary.notes.end(), note) == summary.notes.end())
-          summary.notes.push_back(note);
-    summary.files = {"scene.resolved.toml", "cases.csv"};
-    for (const CaseResult& r : results)
-      for (const std::string& f : r.files) summary.files.push_back(f);
-    summary.finish();
-    summary.files.push_back("summary.json");
-    summary.writeJson(folder + "/summary.json");
-    summary.print(std::cout);
+    summary.notes.add("particles, neighbours and mean dt of the first case (" + first.settings.name +
+                      "); steps and wall time summed over " + std::to_string(results.size()) + " cases");
+    for (const CaseResult& r : results) {
+      summary.notes.addAll(r.notes);
+      summary.files.addAll(r.files);
+    }
+    summary.conclude(folder, &std::cout);
     // Every case's outputs are written; a case the monitors stopped still makes the run fail
     // (exit 3), unless stability.allow_growth asked to run such a case on purpose.
     for (const CaseResult& r : results)

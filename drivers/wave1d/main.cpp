@@ -73,6 +73,7 @@ struct CaseResult {
   Real error;
   Real energyDrift;
   double wallSeconds;
+  std::vector<std::string> files;  // the time series written, relative to the output folder
 };
 
 CaseResult runCase(const Study& study, const std::string& integratorName, int cellCount, const std::string& folder,
@@ -126,13 +127,15 @@ CaseResult runCase(const Study& study, const std::string& integratorName, int ce
     errorSquared += std::pow(u[i] - exact.displacement(x, stats.endTime), 2);
     normSquared += std::pow(std::sin(exact.wavenumber() * (x - x0)), 2);
   }
+  CaseResult result{integratorName, cellCount, dx, dt, criticalDt, stats.steps, std::sqrt(errorSquared / normSquared),
+                    energy.maxRelativeDrift(), stats.wallSeconds, {}};
   if (writeSeries) {
-    const std::string stem = folder + "/" + integratorName + "-" + std::to_string(cellCount);
-    probes.series().writeCsv(stem + "-probe.csv");
-    energy.series().writeCsv(stem + "-energy.csv");
+    const std::string stem = integratorName + "-" + std::to_string(cellCount);
+    probes.series().writeCsv(folder + "/" + stem + "-probe.csv");
+    energy.series().writeCsv(folder + "/" + stem + "-energy.csv");
+    result.files = {stem + "-probe.csv", stem + "-energy.csv"};
   }
-  return {integratorName, cellCount, dx, dt, criticalDt, stats.steps, std::sqrt(errorSquared / normSquared),
-          energy.maxRelativeDrift(), stats.wallSeconds};
+  return result;
 }
 
 // Before any work: every integrator's step against its limit L / omega_max (io/scene/StepLimitCheck)
@@ -238,12 +241,11 @@ int main(int argc, char** argv) {
     summary.timeStep = results.back().dt;
     summary.figures.push_back({"critical_dt_last", results.back().criticalDt});
     summary.simulatedTime = study.scene.integrator.endTime;
-    summary.notes.push_back("particles: the finest line; steps and wall time: summed over all cases");
-    summary.notes.insert(summary.notes.end(), study.notes.begin(), study.notes.end());
-    summary.files = {"scene.resolved.toml", "convergence.csv", "summary.json"};
-    summary.finish();
-    summary.writeJson(folder + "/summary.json");
-    summary.print(std::cout);
+    summary.notes.add("particles: the finest line; steps and wall time: summed over all cases");
+    summary.notes.addAll(study.notes);
+    summary.files.add("convergence.csv");
+    for (const CaseResult& r : results) summary.files.addAll(r.files);
+    summary.conclude(folder, &std::cout);
     return 0;
   });
 }

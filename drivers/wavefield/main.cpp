@@ -106,7 +106,7 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
   const StepLimitCheck check = checkStepLimit(scene.integrator, scene.stability, 2 / stable.safe(), dt, stable.safe(),
                                               "the Gershgorin bound of the operator (exact for this stencil)",
                                               "at dx = " + std::to_string(dx));
-  if (!check.note.empty()) summary.notes.push_back(check.note);
+  if (!check.note.empty()) summary.notes.add(check.note);
   auto integrator = makeSecondOrderIntegrator(scene.integrator.name, scene.integrator.options);
   const Vector zero = Vector::Zero(system.size());
   integrator->initialise(system, 0, zero, zero, dt);
@@ -147,21 +147,20 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
   const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
 
   // outputs and summary
-  summary.files.push_back("scene.resolved.toml");
   if (!scene.probes.empty()) {
     probes.series().writeCsv(folder + "/probes.csv");
-    summary.files.push_back("probes.csv");
+    summary.files.add("probes.csv");
   }
   if (scene.output.energy) {
     energy.series().writeCsv(folder + "/energy.csv");
-    summary.files.push_back("energy.csv");
+    summary.files.add("energy.csv");
   }
-  if (frames) summary.files.push_back("frame.pvd (" + std::to_string(frames->framesWritten()) + " frames)");
+  if (frames) summary.files.add("frame.pvd (" + std::to_string(frames->framesWritten()) + " frames)");
   if (images) {
     if (images->skippedReason().empty())
-      summary.files.push_back("frame_*.png (" + std::to_string(images->framesRendered()) + " images)");
+      summary.files.add("frame_*.png (" + std::to_string(images->framesRendered()) + " images)");
     else
-      summary.notes.push_back("no PNG frames: " + images->skippedReason());
+      summary.notes.add("no PNG frames: " + images->skippedReason());
   }
   summary.particles = particles.size();
   summary.meanNeighbours = neighbours.meanCount();
@@ -172,11 +171,8 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
   summary.figures.push_back({"stable_step_estimate", stable.estimate()});
   summary.figures.push_back({"stable_step_gershgorin", stable.safe()});
   if (scene.output.energy) summary.figures.push_back({"final_total_energy", energy.series().column(2).back()});
-  summary.notes.push_back("no reference solution for this scene: no error reported");
-  summary.finish();
-  summary.files.push_back("summary.json");
-  summary.writeJson(folder + "/summary.json");
-  summary.print(std::cout);
+  summary.notes.add("no reference solution for this scene: no error reported");
+  summary.conclude(folder, &std::cout);
   return 0;
 }
 

@@ -5,10 +5,25 @@
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <ostream>
 
 namespace mfwave {
+
+void GrowingList::add(const std::string& entry) {
+  if (!contains(entry)) entries_.push_back(entry);
+}
+
+void GrowingList::addAll(const std::vector<std::string>& entries) {
+  for (const std::string& entry : entries) add(entry);
+}
+
+bool GrowingList::contains(const std::string& entry) const {
+  return std::find(entries_.begin(), entries_.end(), entry) != entries_.end();
+}
+
+RunSummary::RunSummary() { files.add("scene.resolved.toml"); }
 
 double peakMemoryMiB() {
   rusage usage{};
@@ -17,7 +32,7 @@ double peakMemoryMiB() {
 }
 
 double RunSummary::particleStepsPerSecond() const {
-  return wallSeconds > 0 ? static_cast<double>(particles) * static_cast<double>(steps) / wallSeconds : 0;
+  return mfwave::particleStepsPerSecond(static_cast<double>(particles), static_cast<double>(steps), wallSeconds);
 }
 
 void RunSummary::finish() { peakMemoryMiB = mfwave::peakMemoryMiB(); }
@@ -59,11 +74,19 @@ void RunSummary::writeJson(const std::string& path) const {
   for (const auto& [name, value] : errors) j["errors"][name] = value;
   j["figures"] = nlohmann::ordered_json::object();
   for (const auto& [name, value] : figures) j["figures"][name] = value;
-  j["notes"] = notes;
-  j["files"] = files;
+  j["notes"] = notes.entries();
+  std::vector<std::string> written = files.entries();
+  if (!files.contains("summary.json")) written.push_back("summary.json");
+  j["files"] = written;
   AtomicFile file(path);
   file.stream() << j.dump(2) << '\n';
   file.commit();
+}
+
+void RunSummary::conclude(const std::string& folder, std::ostream* terminal) {
+  finish();
+  writeJson(folder + "/summary.json");
+  if (terminal) print(*terminal);
 }
 
 }  // namespace mfwave

@@ -2,6 +2,7 @@
 // What every run reports at the end, on the terminal and as summary.json in its output folder:
 // size, cost and, when a reference exists, the error against it.
 
+#include "core/Stopwatch.hpp"
 #include "core/Types.hpp"
 
 #include <iosfwd>
@@ -10,6 +11,29 @@
 #include <vector>
 
 namespace mfwave {
+
+// A list that only grows: entries are appended in order, a name already listed is not listed
+// again, and nothing removes, reorders or reassigns entries. The summary's files and notes are
+// such lists, so a driver cannot lose an entry by building the list a second time (the plate
+// study once dropped modes.csv that way), and merging the notes of several cases needs no code.
+class GrowingList {
+ public:
+  GrowingList() = default;
+  GrowingList(const GrowingList&) = default;
+  GrowingList& operator=(const GrowingList&) = delete;  // assigning would drop what was listed
+
+  void add(const std::string& entry);
+  void addAll(const std::vector<std::string>& entries);
+  bool contains(const std::string& entry) const;
+  const std::vector<std::string>& entries() const { return entries_; }
+  std::size_t size() const { return entries_.size(); }
+  bool empty() const { return entries_.empty(); }
+  auto begin() const { return entries_.begin(); }
+  auto end() const { return entries_.end(); }
+
+ private:
+  std::vector<std::string> entries_;
+};
 
 struct RunSummary {
   std::string program;
@@ -27,8 +51,12 @@ struct RunSummary {
   std::vector<std::pair<std::string, Real>> errors;
   // Other figures worth a line (energy drift, stable step, ...).
   std::vector<std::pair<std::string, Real>> figures;
-  std::vector<std::string> notes;   // e.g. why no PNG was made
-  std::vector<std::string> files;   // outputs written, relative to the output folder
+  GrowingList notes;  // e.g. why no PNG was made
+  // Outputs written, relative to the output folder. scene.resolved.toml (written by
+  // prepareOutputFolder) is listed from the start and summary.json is listed last by writeJson.
+  GrowingList files;
+
+  RunSummary();
 
   double particleStepsPerSecond() const;
   // Reads the peak resident memory of this process.
@@ -36,6 +64,9 @@ struct RunSummary {
   void print(std::ostream& out) const;
   // Writes the summary as JSON (atomically).
   void writeJson(const std::string& path) const;
+  // The end every driver shares: finish(), "<folder>/summary.json", and the terminal summary
+  // on `terminal` when it is given.
+  void conclude(const std::string& folder, std::ostream* terminal);
 };
 
 // Peak resident set size of this process so far, in MiB (getrusage).
