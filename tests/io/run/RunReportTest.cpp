@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
+#include <vector>
 
 using namespace mfwave;
 
@@ -45,7 +47,7 @@ TEST(RunSummary, WritesEveryFigureAsJson) {
   s.steps = 100;
   s.wallSeconds = 2;
   s.errors = {{"relative_l2", 0.125}};
-  s.notes = {"no PNG: no display"};
+  s.notes.add("no PNG: no display");
   s.finish();
   EXPECT_GT(s.peakMemoryMiB, 1.0);
   EXPECT_DOUBLE_EQ(s.particleStepsPerSecond(), 9261 * 100 / 2.0);
@@ -59,6 +61,47 @@ TEST(RunSummary, WritesEveryFigureAsJson) {
   std::ostringstream text;
   s.print(text);
   EXPECT_NE(text.str().find("particles 9261"), std::string::npos) << text.str();
+}
+
+TEST(GrowingList, KeepsOrderAndListsEachEntryOnce) {
+  GrowingList list;
+  list.add("cases.csv");
+  list.addAll({"a-tip.csv", "cases.csv", "b-tip.csv"});
+  list.add("a-tip.csv");
+  EXPECT_EQ(list.entries(), (std::vector<std::string>{"cases.csv", "a-tip.csv", "b-tip.csv"}));
+  EXPECT_TRUE(list.contains("b-tip.csv"));
+  EXPECT_FALSE(list.contains("summary.json"));
+  static_assert(!std::is_copy_assignable_v<GrowingList>, "reassigning a list would lose its entries");
+}
+
+// The files of a summary: the resolved scene first, then what the driver added in order, then
+// summary.json, each once, however often a driver listed them.
+TEST(RunSummary, ListsTheResolvedSceneFirstAndItselfLast) {
+  RunSummary s;
+  s.files.add("cases.csv");
+  s.files.add("modes.csv");
+  s.files.add("cases.csv");
+  s.files.add("scene.resolved.toml");
+  s.notes.add("from case a");
+  s.notes.addAll({"from case a", "from case b"});
+  const auto folder = std::filesystem::temp_directory_path() / "mfwave-summary-files";
+  std::filesystem::create_directories(folder);
+  std::ostringstream text;
+  s.conclude(folder.string(), &text);
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(folder / "summary.json"));
+  EXPECT_EQ(j["files"].get<std::vector<std::string>>(),
+            (std::vector<std::string>{"scene.resolved.toml", "cases.csv", "modes.csv", "summary.json"}));
+  EXPECT_EQ(j["notes"].get<std::vector<std::string>>(), (std::vector<std::string>{"from case a", "from case b"}));
+  EXPECT_GT(j["peak_memory_mib"].get<double>(), 1.0);  // conclude() reads the peak memory
+  EXPECT_NE(text.str().find("note: from case b"), std::string::npos) << text.str();
+  std::filesystem::remove_all(folder);
+}
+
+TEST(RunSummary, RateIsZeroWithoutTime) {
+  EXPECT_DOUBLE_EQ(particleStepsPerSecond(1000, 10, 0), 0.0);
+  EXPECT_DOUBLE_EQ(particleStepsPerSecond(1000, 10, 0.5), 20000.0);
+  Stopwatch clock;
+  EXPECT_GE(clock.seconds(), 0.0);
 }
 
 TEST(RunDriver, MapsErrorsToExitCodes) {
