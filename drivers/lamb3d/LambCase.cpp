@@ -12,6 +12,7 @@
 #include "io/run/RunSummary.hpp"
 #include "io/scene/BuildParticles.hpp"
 #include "io/scene/Faces.hpp"
+#include "io/vtk/FrameOutputs.hpp"
 #include "io/vtk/PngFrameRenderer.hpp"
 #include "io/vtk/VtkFrameWriter.hpp"
 #include "kernels/KernelFactory.hpp"
@@ -422,16 +423,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     loop.add(*frames, scene.output.every);
   }
   if (settings.writeFrames && scene.output.png) {
-    PngOptions png;
-    png.field = scene.output.pngField;
-    png.component = scene.output.pngComponent == "magnitude" ? PngOptions::magnitude
-                                                              : (scene.output.pngComponent == "x"   ? 0
-                                                                 : scene.output.pngComponent == "y" ? 1
-                                                                                                    : 2);
-    png.pointSize = scene.output.pngPointSize;
-    png.width = scene.output.pngWidth;
-    png.height = scene.output.pngHeight;
-    images.emplace(particles, folder, settings.name, D, png);
+    images.emplace(particles, folder, settings.name, D, pngOptionsFor(scene.output));
     loop.add(*images, scene.output.every);
   }
   const std::string energyFile = settings.name + "-energy.csv";
@@ -521,13 +513,9 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     result.files.push_back("exact.csv");
   }
   result.files.push_back(settings.name + "-probes.csv");
-  if (frames) result.files.push_back(settings.name + ".pvd (" + std::to_string(frames->framesWritten()) + " frames)");
-  if (images) {
-    if (images->skippedReason().empty())
-      result.files.push_back(settings.name + "_*.png (" + std::to_string(images->framesRendered()) + " images)");
-    else
-      result.notes.push_back("no PNG frames: " + images->skippedReason());
-  }
+  const FrameOutputReport frameReport = frameOutputReport(settings.name, frames, images);
+  result.files.insert(result.files.end(), frameReport.files.begin(), frameReport.files.end());
+  result.notes.insert(result.notes.end(), frameReport.notes.begin(), frameReport.notes.end());
   result.peakMemoryMiB = peakMemoryMiB();
   return result;
 }

@@ -10,6 +10,7 @@
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
 #include "io/run/ProgressReporter.hpp"
+#include "io/vtk/FrameOutputs.hpp"
 #include "io/vtk/PngFrameRenderer.hpp"
 #include "io/vtk/VtkFrameWriter.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
@@ -24,16 +25,6 @@ namespace mfwave::plate {
 namespace {
 
 constexpr int D = 2;
-
-PngOptions pngOptions(const OutputSpec& output) {
-  PngOptions png;
-  png.field = output.pngField;
-  png.component = output.pngComponent == "magnitude" ? PngOptions::magnitude : (output.pngComponent == "x" ? 0 : 1);
-  png.pointSize = output.pngPointSize;
-  png.width = output.pngWidth;
-  png.height = output.pngHeight;
-  return png;
-}
 
 PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCaseSettings& settings,
                                          const std::string& folder, bool progress) {
@@ -99,7 +90,7 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
       // About study.pngFrames pictures over the run (rendering costs ~1 s each).
       const Real expectedFrames = settings.endTime / firstStep / static_cast<Real>(scene.output.every);
       const long every = std::max(1L, std::lround(expectedFrames / static_cast<Real>(study.pngFrames)));
-      images.emplace(adapter.particles(), folder, settings.name, D, pngOptions(scene.output), every,
+      images.emplace(adapter.particles(), folder, settings.name, D, pngOptionsFor(scene.output), every,
                      adapter.extraFields());
       adapter.add(*images);
     }
@@ -133,13 +124,9 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
   energy.writeCsv(folder + "/" + settings.name + "-energy.csv");
   result.files.push_back(settings.name + "-tip.csv");
   result.files.push_back(settings.name + "-energy.csv");
-  if (frames) result.files.push_back(settings.name + ".pvd (" + std::to_string(frames->framesWritten()) + " frames)");
-  if (images) {
-    if (images->skippedReason().empty())
-      result.files.push_back(settings.name + "_*.png (" + std::to_string(images->framesRendered()) + " images)");
-    else
-      result.notes.push_back("no PNG frames: " + images->skippedReason());
-  }
+  const FrameOutputReport frameReport = frameOutputReport(settings.name, frames, images);
+  result.files.insert(result.files.end(), frameReport.files.begin(), frameReport.files.end());
+  result.notes.insert(result.notes.end(), frameReport.notes.begin(), frameReport.notes.end());
   analyseTip(result, tip.series(), plate, study.shearCoefficient);
   return result;
 }

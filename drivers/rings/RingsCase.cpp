@@ -15,6 +15,7 @@
 #include "core/Stopwatch.hpp"
 #include "io/run/ProgressReporter.hpp"
 #include "io/run/RunSummary.hpp"
+#include "io/vtk/FrameOutputs.hpp"
 #include "io/vtk/PngFrameRenderer.hpp"
 #include "io/vtk/VtkFrameWriter.hpp"
 #include "kernels/KernelFactory.hpp"
@@ -199,14 +200,7 @@ void writeSnapshots(const std::string& path, const std::vector<RingTracker::Snap
 
 PngOptions pngOptions(const StudySettings& study, Real approachSpeed) {
   const Scene& scene = study.scene;
-  PngOptions png;
-  png.field = scene.output.pngField;
-  png.component = scene.output.pngComponent == "magnitude" ? PngOptions::magnitude
-                  : scene.output.pngComponent == "x"       ? 0
-                                                           : 1;
-  png.width = scene.output.pngWidth;
-  png.height = scene.output.pngHeight;
-  png.pointSize = scene.output.pngPointSize;
+  PngOptions png = pngOptionsFor(scene.output);
   if (study.autoPointSize) {
     // 0.9 dp on screen: the renderer fits the window's rectangle into the left 80 % of the
     // picture (the colour bar takes the rest) with 12 % to spare.
@@ -389,13 +383,9 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     probeRecorder.series().writeCsv(folder + "/" + settings.name + "-probes.csv");
     result.files.push_back(settings.name + "-probes.csv");
   }
-  if (frames) result.files.push_back(settings.name + ".pvd (" + std::to_string(frames->framesWritten()) + " frames)");
-  if (images) {
-    if (images->skippedReason().empty())
-      result.files.push_back(settings.name + "_*.png (" + std::to_string(images->framesRendered()) + " images)");
-    else
-      result.notes.push_back("no PNG frames: " + images->skippedReason());
-  }
+  const FrameOutputReport frameReport = frameOutputReport(settings.name, frames, images);
+  result.files.insert(result.files.end(), frameReport.files.begin(), frameReport.files.end());
+  result.notes.insert(result.notes.end(), frameReport.notes.begin(), frameReport.notes.end());
   if (!result.failure.empty()) result.notes.push_back(settings.name + " stopped early: " + result.failure);
   result.peakMemoryMiB = peakMemoryMiB();
   return result;

@@ -18,6 +18,7 @@
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/StepLimitCheck.hpp"
 #include "io/scene/Scene.hpp"
+#include "io/vtk/FrameOutputs.hpp"
 #include "io/vtk/PngFrameRenderer.hpp"
 #include "io/vtk/VtkFrameWriter.hpp"
 #include "methods/finite_difference/FiniteDifferenceWaveOperator.hpp"
@@ -134,12 +135,8 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
     loop.add(*frames, scene.output.every);
   }
   if (scene.output.png) {
-    PngOptions png;
-    png.field = scene.output.pngField;
-    png.component = scene.output.pngComponent == "magnitude" ? PngOptions::magnitude : 0;  // scalar state
-    png.pointSize = scene.output.pngPointSize;
-    png.width = scene.output.pngWidth;
-    png.height = scene.output.pngHeight;
+    PngOptions png = pngOptionsFor(scene.output);
+    if (png.component != PngOptions::magnitude) png.component = 0;  // a scalar state has one component
     images.emplace(particles, folder, "frame", 1, png);
     loop.add(*images, scene.output.every);
   }
@@ -155,13 +152,9 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
     energy.series().writeCsv(folder + "/energy.csv");
     summary.files.add("energy.csv");
   }
-  if (frames) summary.files.add("frame.pvd (" + std::to_string(frames->framesWritten()) + " frames)");
-  if (images) {
-    if (images->skippedReason().empty())
-      summary.files.add("frame_*.png (" + std::to_string(images->framesRendered()) + " images)");
-    else
-      summary.notes.add("no PNG frames: " + images->skippedReason());
-  }
+  const FrameOutputReport frameReport = frameOutputReport("frame", frames, images);
+  summary.files.addAll(frameReport.files);
+  summary.notes.addAll(frameReport.notes);
   summary.particles = particles.size();
   summary.meanNeighbours = neighbours.meanCount();
   summary.steps = stats.steps;

@@ -21,6 +21,8 @@ OutputSpec readOutput(SceneReader& reader, const std::string& sceneName, int dim
   if (std::find(components.begin(), components.end(), o.pngComponent) == components.end())
     reader.fail("output.png_component", "'" + o.pngComponent + "' is not a component of a " +
                                             std::to_string(dimension) + "-D scene; valid: " + scene::joinNames(components));
+  const auto named = std::find(components.begin(), components.end(), o.pngComponent) - components.begin();
+  o.pngComponentIndex = o.pngComponent == "magnitude" ? -1 : static_cast<int>(named);
   o.pngPointSize = reader.number("output.png_point_size");
   o.pngWidth = static_cast<int>(reader.integer("output.png_width"));
   o.pngHeight = static_cast<int>(reader.integer("output.png_height"));

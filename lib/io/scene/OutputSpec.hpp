@@ -14,6 +14,7 @@ struct OutputSpec {
   bool png = false;          // PNG frames every `every` steps, with or without VTK
   std::string pngField = "velocity";       // "displacement" | "velocity"
   std::string pngComponent = "magnitude";  // "x" | "y" | "z" | "magnitude"
+  int pngComponentIndex = -1;              // 0, 1, 2 for x, y, z; -1 for the magnitude
   Real pngPointSize = 6;
   int pngWidth = 1024, pngHeight = 768;
   long probeEvery = 1;       // steps between probe samples

@@ -106,6 +106,7 @@ void expectFullScene(const Scene& s) {
   EXPECT_TRUE(s.output.vtk);
   EXPECT_FALSE(s.output.png);
   EXPECT_EQ(s.output.pngComponent, "z");
+  EXPECT_EQ(s.output.pngComponentIndex, 2);
   EXPECT_EQ(s.output.pngField, "velocity");
   EXPECT_EQ(s.output.pngWidth, 1024);
   EXPECT_EQ(s.output.pngHeight, 768);
