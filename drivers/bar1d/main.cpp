@@ -10,6 +10,7 @@
 //   bar1d --scene data/scenes/bar1d.toml [--set 'study.nodes=[21,41,81]'] [--out DIR]
 
 #include "analysis/CollocationStability.hpp"
+#include "analysis/ConvergenceOrders.hpp"
 #include "analytic/FixedFreeBarImpact.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
@@ -293,12 +294,11 @@ int main(int argc, char** argv) {
     summary.scene = study.scene.info.name;
     summary.method = study.scene.method.name;
     summary.integrator = study.scene.integrator.name;
+    const std::vector<Real> ordersU = observedOrders(results, &CaseResult::h, &CaseResult::errorU);
+    const std::vector<Real> ordersV = observedOrders(results, &CaseResult::h, &CaseResult::errorV);
     for (std::size_t i = 0; i < results.size(); ++i) {
       const CaseResult& r = results[i];
-      const auto order = [&](Real CaseResult::*field) {
-        return i > 0 ? std::log(results[i - 1].*field / r.*field) / std::log(results[i - 1].h / r.h) : std::nan("");
-      };
-      const Real ou = order(&CaseResult::errorU), ov = order(&CaseResult::errorV);
+      const Real ou = ordersU[i], ov = ordersV[i];
       table.stream() << r.nodes << ',' << r.h << ',' << r.dt << ',' << r.criticalDt << ',' << r.steps << ','
                      << r.errorU << ',' << ou << ',' << r.errorV << ',' << ov << ',' << r.maxErrorU << ','
                      << r.wallSeconds << '\n';
@@ -318,8 +318,7 @@ int main(int argc, char** argv) {
     summary.errors.push_back({"max_relative_l2_u_over_time_finest", finest.maxErrorU});
     summary.figures.push_back({"critical_dt_first", results.front().criticalDt});
     if (results.size() > 1)
-      summary.figures.push_back({"observed_order_u", std::log(results[results.size() - 2].errorU / finest.errorU) /
-                                                         std::log(results[results.size() - 2].h / finest.h)});
+      summary.figures.push_back({"observed_order_u", ordersU.back()});
     summary.simulatedTime = study.scene.integrator.endTime;
     summary.notes.add("particles: nodes of the finest case; steps and wall time summed over all cases");
     summary.files.add("convergence.csv");

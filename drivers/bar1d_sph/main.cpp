@@ -12,6 +12,7 @@
 
 #include "BarCase.hpp"
 
+#include "analysis/ConvergenceOrders.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "io/run/DriverCommandLine.hpp"
@@ -112,12 +113,11 @@ int main(int argc, char** argv) {
               << "L1(v)" << std::setw(7) << "order" << std::setw(11) << "L1(sig)" << std::setw(7) << "order"
               << std::setw(11) << "plateau" << std::setw(10) << "front/dx" << std::setw(11) << "drift" << std::setw(9)
               << "wall s" << '\n';
+    const std::vector<Real> ordersV = observedOrders(results, &CaseResult::dx, &CaseResult::l1Velocity);
+    const std::vector<Real> ordersS = observedOrders(results, &CaseResult::dx, &CaseResult::l1Stress);
     for (std::size_t i = 0; i < results.size(); ++i) {
       const CaseResult& r = results[i];
-      const auto order = [&](Real CaseResult::*field) {
-        return i > 0 ? std::log(results[i - 1].*field / r.*field) / std::log(results[i - 1].dx / r.dx) : std::nan("");
-      };
-      const Real ov = order(&CaseResult::l1Velocity), os = order(&CaseResult::l1Stress);
+      const Real ov = ordersV[i], os = ordersS[i];
       table.stream() << std::setprecision(10) << r.dx << ',' << r.particles << ',' << r.steps << ','
                      << r.meanNeighbours << ',' << r.l1Velocity << ',' << ov << ',' << r.l1Stress << ',' << os << ','
                      << r.plateauStressError << ',' << r.frontErrorOverDx << ',' << r.balanceDrift << ','
@@ -144,10 +144,8 @@ int main(int argc, char** argv) {
     summary.errors.push_back({"front_error_over_dx_finest", finest.frontErrorOverDx});
     summary.figures.push_back({"balance_drift_finest", finest.balanceDrift});
     if (results.size() > 1) {
-      const CaseResult& previous = results[results.size() - 2];
-      const Real ratio = std::log(previous.dx / finest.dx);
-      summary.figures.push_back({"order_l1_velocity", std::log(previous.l1Velocity / finest.l1Velocity) / ratio});
-      summary.figures.push_back({"order_l1_stress", std::log(previous.l1Stress / finest.l1Stress) / ratio});
+      summary.figures.push_back({"order_l1_velocity", ordersV.back()});
+      summary.figures.push_back({"order_l1_stress", ordersS.back()});
     }
     summary.notes.add("particles: the finest case; steps and wall time summed over all cases");
     summary.notes.add("errors: relative L1 norms at the end time against SymmetricBarImpact; plateau error relative "

@@ -6,6 +6,7 @@
 //
 //   plane2d --scene data/scenes/plane2d.toml [--set 'study.cells=[8,16]'] [--out DIR]
 
+#include "analysis/ConvergenceOrders.hpp"
 #include "analysis/InteriorStability.hpp"
 #include "analysis/MethodLatticeStencils.hpp"
 #include "core/AtomicFile.hpp"
@@ -230,11 +231,11 @@ int main(int argc, char** argv) {
     summary.scene = scene.info.name;
     summary.method = scene.method.name;
     summary.integrator = scene.integrator.name;
+    const std::vector<Real> ordersU = observedOrders(results, &CaseResult::h, &CaseResult::errorU);
+    const std::vector<Real> ordersV = observedOrders(results, &CaseResult::h, &CaseResult::errorV);
     for (std::size_t i = 0; i < results.size(); ++i) {
       const CaseResult& r = results[i];
-      const Real lh = i > 0 ? std::log(results[i - 1].h / r.h) : 1;
-      const Real ou = i > 0 ? std::log(results[i - 1].errorU / r.errorU) / lh : std::nan("");
-      const Real ov = i > 0 ? std::log(results[i - 1].errorV / r.errorV) / lh : std::nan("");
+      const Real ou = ordersU[i], ov = ordersV[i];
       table.stream() << r.cells << ',' << r.h << ',' << r.dt << ',' << r.criticalDt << ',' << r.steps << ','
                      << r.errorU << ',' << ou << ',' << r.errorV << ',' << ov << ',' << r.wallSeconds << '\n';
       std::cout << std::setw(6) << r.cells << std::setw(10) << std::setprecision(4) << r.h << std::setw(11) << r.dt

@@ -7,6 +7,7 @@
 //
 //   wave1d --scene data/scenes/wave1d.toml [--set study.cells=[16,32]] [--out DIR]
 
+#include "analysis/ConvergenceOrders.hpp"
 #include "analysis/StableTimeStep.hpp"
 #include "analytic/StandingWave.hpp"
 #include "core/AtomicFile.hpp"
@@ -212,11 +213,12 @@ int main(int argc, char** argv) {
     summary.scene = study.scene.info.name;
     summary.method = study.scene.method.name;
     summary.integrator = "several (see convergence.csv)";
+    const auto sameIntegrator = [](const CaseResult& a, const CaseResult& b) { return a.integrator == b.integrator; };
+    const std::vector<Real> orders = observedOrders(results, &CaseResult::dx, &CaseResult::error, sameIntegrator);
     for (std::size_t i = 0; i < results.size(); ++i) {
       const CaseResult& r = results[i];
-      const bool hasCoarser = i > 0 && results[i - 1].integrator == r.integrator;
-      const Real order = hasCoarser ? std::log(results[i - 1].error / r.error) / std::log(results[i - 1].dx / r.dx)
-                                    : std::nan("");
+      const bool hasCoarser = i > 0 && sameIntegrator(results[i - 1], r);
+      const Real order = orders[i];
       const double rate =
           static_cast<double>(r.cells + 1) * static_cast<double>(r.steps) / std::max(r.wallSeconds, 1e-9);
       table.stream() << r.integrator << ',' << r.cells << ',' << r.dx << ',' << r.dt << ',' << r.steps << ','
