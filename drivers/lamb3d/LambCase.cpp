@@ -1,7 +1,6 @@
 #include "LambCase.hpp"
 
 #include "analysis/StableTimeStep.hpp"
-#include "io/scene/StepLimitCheck.hpp"
 #include "analytic/LambSquareLoad.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
@@ -12,21 +11,18 @@
 #include "io/run/RunSummary.hpp"
 #include "io/scene/BuildParticles.hpp"
 #include "io/scene/Faces.hpp"
+#include "io/scene/StepLimitCheck.hpp"
 #include "io/vtk/FrameOutputs.hpp"
 #include "io/vtk/PngFrameRenderer.hpp"
 #include "io/vtk/VtkFrameWriter.hpp"
-#include "kernels/KernelFactory.hpp"
-#include "methods/very_weak_sph/ConservativeSmoothing.hpp"
-#include "particles/BoxFace.hpp"
+#include "kernels/Kernel.hpp"
 #include "methods/very_weak_sph/Deconvolution.hpp"
-#include "methods/very_weak_sph/PatchLoad.hpp"
-#include "methods/very_weak_sph/TractionLoad.hpp"
-#include "methods/very_weak_sph/TransmittingBoundary.hpp"
-#include "methods/very_weak_sph/VeryWeakSph.hpp"
-#include "neighbours/NeighbourList.hpp"
+#include "methods/very_weak_sph/VeryWeakSphProblem.hpp"
 #include "observers/LinearEnergyLedger.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
+#include "particles/BoxFace.hpp"
+#include "study/VeryWeakSphScene.hpp"
 
 #include <array>
 #include <cmath>
@@ -39,11 +35,6 @@ namespace mfwave::lamb3d {
 namespace {
 
 constexpr int D = 3;
-
-Real csrMiB(const SparseMatrix& m) {
-  return (static_cast<Real>(m.nonZeros()) * (sizeof(Real) + sizeof(int)) +
-          static_cast<Real>(m.outerSize() + 1) * sizeof(int)) / (1024.0 * 1024.0);
-}
 
 // Every `every` steps: each probe's value in the state and the value the method reports: for the
 // published variant the deconvolved value (eq. (35)) from the probe particle's row of the
@@ -113,73 +104,6 @@ LambSquareLoad exactReference(const Scene& scene) {
                         load.traction[axis]);
 }
 
-// Prescribed displacement dofs (eq. (30)) of the fixed and displacement faces, with their values
-// at time t.
-struct Prescribed {
-  std::vector<Index> dofs;
-  std::vector<Real> value;            // per dof
-  std::vector<const TimeFunction*> timeFunction;  // per dof (null: constant 0)
-
-  // g(t) at every prescribed dof, in the order of `dofs`.
-  void values(Real t, Vector& g) const {
-    for (std::size_t i = 0; i < dofs.size(); ++i)
-      g[static_cast<Index>(i)] = timeFunction[i] ? value[i] * (*timeFunction[i])(t) : 0;
-  }
-};
-
-Prescribed prescribedDisplacements(const Scene& scene, const ParticleSet<D>& particles) {
-  Prescribed p;
-  for (const BoundarySpec& b : scene.boundaries) {
-    if (b.type != BoundaryType::Fixed && b.type != BoundaryType::Displacement) continue;
-    for (Index a = 0; a < particles.physicalCount(); ++a) {
-      if ((particles.faceMask[static_cast<std::size_t>(a)] & b.faceMask) == 0) continue;
-      for (int c = 0; c < D; ++c) {
-        p.dofs.push_back(D * a + c);
-        p.value.push_back(b.type == BoundaryType::Displacement && !b.value.empty() ? b.value[static_cast<std::size_t>(c)] : 0);
-        p.timeFunction.push_back(b.type == BoundaryType::Displacement ? &b.timeFunction : nullptr);
-      }
-    }
-  }
-  return p;
-}
-
-// The traction load (eq. (19)) as a sum of fixed vectors times time functions: whole faces of
-// traction boundaries and the surface patches.
-struct TractionTerm {
-  Vector force;  // T t for the unit history
-  const TimeFunction* timeFunction;
-};
-
-// The Galerkin variant takes the patch loads as the exact integrals of its tent kernel.
-std::vector<TractionTerm> tractionTerms(const Scene& scene, const ParticleSet<D>& particles,
-                                        const VeryWeakSph<D>& method, const GeometrySpec& geometry, bool galerkin) {
-  std::vector<TractionTerm> terms;
-  const BoundaryFacets<D>& facets = method.data.facets;
-  const Vec<D> lower(geometry.lower.data()), upper(geometry.upper.data());
-  for (const BoundarySpec& b : scene.boundaries) {
-    if (b.type != BoundaryType::Traction) continue;
-    Vector t = Vector::Zero(D * facets.count());
-    const Vec<D> traction(b.traction.data());
-    for (Index f = 0; f < facets.count(); ++f)
-      if (b.faceMask & faceBit(facets.face[static_cast<std::size_t>(f)])) t.segment<D>(D * f) = traction;
-    terms.push_back({method.data.tractionMatrix * t, &b.timeFunction});
-  }
-  for (const LoadSpec& load : scene.loads) {
-    const Vec<D> centre(load.centre.data()), halfWidths(load.halfWidth.data()), traction(load.traction.data());
-    if (galerkin) {  // the exact int_patch W_a t of the tent kernel (GalerkinLattice.hpp)
-      const std::vector<Real> weights =
-          patchTentWeights<D>(particles, load.face, centre, halfWidths, geometry.spacing, lower, upper);
-      terms.push_back({patchNodalForce<D>(weights, geometry.spacing, traction), &load.timeFunction});
-      continue;
-    }
-    const std::vector<Real> weights =
-        patchLoadWeights<D>(particles, load.face, centre, halfWidths, geometry.spacing, lower, upper);
-    const Vector t = patchFacetTractions<D>(facets, load.face, weights, traction);
-    terms.push_back({method.data.tractionMatrix * t, &load.timeFunction});
-  }
-  return terms;
-}
-
 // The exact response at surface point (px, py) relative to the load centre, at each time.
 std::vector<Real> exactSeriesAt(const LambSquareLoad& exact, Real px, Real py, const std::vector<Real>& times,
                                 bool velocity) {
@@ -217,16 +141,6 @@ std::vector<Real> kernelSmoothedExact(const LambSquareLoad& exact, const Kernel&
   return smoothed;
 }
 
-// The time after which no load, traction face or prescribed displacement acts any more.
-Real loadsQuietAfter(const Scene& scene) {
-  Real quiet = -std::numeric_limits<Real>::infinity();
-  for (const LoadSpec& load : scene.loads) quiet = std::max(quiet, load.timeFunction.quietAfter());
-  for (const BoundarySpec& b : scene.boundaries)
-    if (b.type == BoundaryType::Traction || b.type == BoundaryType::Displacement)
-      quiet = std::max(quiet, b.timeFunction.quietAfter());
-  return quiet;
-}
-
 // What makes this variant's energy grow, for the stop message (docs/theory/very-weak-sph.md).
 std::string likelyGrowthCause(const VeryWeakSphSpec& spec) {
   if (spec.variant == "galerkin")
@@ -239,13 +153,6 @@ std::string likelyGrowthCause(const VeryWeakSphSpec& spec) {
   return "the published operator has growing modes (indefinite interior Hessian stencil, non-symmetric boundary "
          "terms) that only its filter (method.smoothing_rate) holds down (docs/theory/very-weak-sph.md). "
          "stability.allow_growth = true runs on to show it";
-}
-
-void checkSupported(const Scene& scene) {
-  for (std::size_t i = 0; i < scene.loads.size(); ++i)
-    if (scene.loads[i].type != LoadType::SurfacePatch)
-      throw InputError("load[" + std::to_string(i) + "].type",
-                       "lamb3d takes surface_patch loads (point and body forces have no very weak form here)");
 }
 
 void writeProbes(const std::string& path, const std::vector<Probe>& probes, const LambProbes& recorded,
@@ -274,73 +181,30 @@ void writeProbes(const std::string& path, const std::vector<Probe>& probes, cons
 CaseResult runCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
                    bool progress) {
   const Scene& scene = study.scene;
-  checkSupported(scene);
   CaseResult result;
   result.settings = settings;
   const Stopwatch assemblyClock;
 
-  // particles + neighbours
+  // particles, then the whole very weak SPH set-up of the scene: neighbours, the operator (eqs.
+  // 21-22), mass, dashpots (eqs. 31-32), loads (eq. 19), prescribed faces (eq. 30), smoothing
+  // (eq. 33) and deconvolution (eq. 35)
   const ParticleSet<D> particles = buildParticles<D>(settings.geometry);
   result.particles = particles.physicalCount();
   result.ghosts = particles.size() - particles.physicalCount();
   const VeryWeakSphSpec& spec = settings.method;
-  result.smoothingLength = spec.smoothingLengthRatio * settings.geometry.spacing;
-  const std::unique_ptr<Kernel> kernel = makeKernel(spec.kernel, D, result.smoothingLength);
-  const NeighbourList neighbours =
-      buildNeighbourList(CellList<D>(particles, kernel->supportRadius()), particles.physicalCount());
-  result.meanNeighbours = neighbours.meanCount();
-
-  // discretisation: the operator (eqs. 21-22, corrected rows for the consistent variant), the mass
-  // (rho / alpha, eqs. 28-29, for the published one), dashpots (eqs. 31-32)
-  VeryWeakSphOptions options = spec.options;
-  const bool consistent = spec.variant == "consistent", galerkin = spec.variant == "galerkin";
-  options.variant = galerkin     ? VeryWeakSphVariant::Galerkin
-                    : consistent ? VeryWeakSphVariant::Consistent
-                                 : VeryWeakSphVariant::Published;
-  if (galerkin && spec.deconvolution)
-    throw InputError("method.deconvolution", "the galerkin variant's state is the nodal displacement; there is no "
-                                             "kernel estimate to deconvolve (set it to false)");
-  if (galerkin && spec.smoothingRate > 0)
-    throw InputError("method.smoothing_rate", "the galerkin variant is stable without a filter and its kernel is not "
-                                              "the smoothing's; set it to 0");
-  VeryWeakSph<D> method = assembleVeryWeakSph<D>(particles, neighbours, *kernel, options);
-  SparseMatrix().swap(method.data.operatorMatrix);  // the system holds -K; one copy is enough (swap frees)
-  LinearSecondOrderSystem& system = method.system;
-  const std::uint8_t transmitting = settings.freeFaces ? 0 : facesWith(scene.boundaries, BoundaryType::Transmitting);
-  if (transmitting != 0 && galerkin)
-    // int_face W_a rho Z v on the particle's own dofs: symmetric positive semi-definite.
-    system.setDamping(lumpedFacetDashpots<D>(method.data.facets, options.material, transmitting));
-  else if (transmitting != 0 && consistent)
-    // The dashpot tractions go through the corrected facet blocks, like every traction.
-    system.setDamping(dashpotsThroughTractionMatrix<D>(method.data.tractionMatrix, method.data.facets,
-                                                       options.material, transmitting));
-  else if (transmitting != 0)
-    system.setDamping(assembleTransmittingDamping<D>(
-        particles, neighbours, *kernel, method.data.facets, options.material, transmitting,
-        spec.dashpotLumping == "consistent" ? DashpotLumping::Consistent : DashpotLumping::Particle));
-
-  // loads (eq. 19): fixed vectors T t scaled by their time functions
-  const Scene caseScene = [&] {
-    Scene s = scene;
-    if (settings.freeFaces) s.boundaries.clear();
-    return s;
-  }();
-  std::vector<TractionTerm> terms = tractionTerms(caseScene, particles, method, settings.geometry, galerkin);
-  system.setForce([terms = std::move(terms)](Real t, Vector& f) {
-    for (const TractionTerm& term : terms) {
-      const Real scale = (*term.timeFunction)(t);
-      if (scale != 0) f.noalias() += scale * term.force;
-    }
-  });
+  VeryWeakSphProblem<D> problem(
+      particles, veryWeakSphProblemSettings<D>(scene, settings.geometry, spec, !settings.freeFaces));
+  LinearSecondOrderSystem& system = problem.system();
+  result.smoothingLength = problem.kernel().smoothingLength();
+  result.meanNeighbours = problem.neighbours().meanCount();
   result.operatorNonZeros = system.stiffness().nonZeros();
-  result.operatorMiB = csrMiB(system.stiffness()) + csrMiB(method.data.tractionMatrix) + csrMiB(system.damping()) +
-                       csrMiB(system.mass());
+  result.operatorMiB = problem.operatorMiB();
 
   // time step: a fraction of the operator's stable central-difference step
   const StableTimeStep stable = centralDifferenceStableStep(system, 1e-6, 5000);
   result.stableStepEstimate = stable.estimate();
   result.stableStepGershgorin = stable.safe();
-  const Real stableStep = stable.converged ? stable.estimate() : stable.safe();
+  const Real stableStep = stable.usable();
   if (!stable.converged)
     result.notes.push_back(settings.name + ": power iteration did not converge; the Gershgorin step is used");
   const Real dt = scene.integrator.timeStepFor(stableStep);
@@ -353,13 +217,17 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   if (!check.note.empty()) result.notes.push_back(check.note);
 
   // the energy ledger, which also stops growth after the loads (LinearEnergyLedger)
-  const Prescribed prescribed = prescribedDisplacements(caseScene, particles);
+  const Scene caseScene = [&] {
+    Scene s = scene;
+    if (settings.freeFaces) s.boundaries.clear();
+    return s;
+  }();
   LinearEnergyLedgerOptions ledgerOptions;
   ledgerOptions.quietAfter = loadsQuietAfter(caseScene);
   // Half the slowest shear period of the block, 4 L / c_s, bounds the envelope's window.
   Real side = 0;
   for (std::size_t a = 0; a < D; ++a) side = std::max(side, settings.geometry.upper[a] - settings.geometry.lower[a]);
-  ledgerOptions.envelopeWindow = 2 * side / options.material.sWaveSpeed();
+  ledgerOptions.envelopeWindow = 2 * side / spec.options.material.sWaveSpeed();
   ledgerOptions.growthFactor = scene.stability.energyGrowthFactor;
   // Prescribed displacements do work through reactions the ledger does not see.
   const bool movingFaces = facesWith(caseScene.boundaries, BoundaryType::Displacement) != 0;
@@ -370,43 +238,29 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   LinearEnergyLedger ledger(system, ledgerOptions);
 
   // integrator, with the smoothing (eq. 33) as its velocity filter and eq. (30) for prescribed faces
-  std::optional<ConservativeSmoothing> smoothing;
+  // (checkVeryWeakSphScene refused both for any other integrator)
   std::unique_ptr<SecondOrderIntegrator> integrator;
   if (scene.integrator.name == "central_difference") {
     auto central = std::make_unique<CentralDifference>();
-    if (spec.smoothingRate > 0) {
-      smoothing.emplace(smoothingMatrix<D>(particles, neighbours, *kernel, method.data.volume), D,
-                        spec.smoothingRate, spec.smoothingOrder);
-      central->setVelocityFilter([&smoothing, &ledger](Real step, Vector& v) {
+    if (ConservativeSmoothing* smoothing = problem.smoothing())
+      central->setVelocityFilter([smoothing, &ledger](Real step, Vector& v) {
         const Real before = ledger.kineticEnergy(v);
         smoothing->apply(step, v);
         ledger.addFilterLoss(before - ledger.kineticEnergy(v));
       });
-    }
-    if (!prescribed.dofs.empty())
-      central->setPrescribedDisplacement(prescribed.dofs,
-                                         [&prescribed](Real t, Vector& values) { prescribed.values(t, values); });
+    if (!problem.prescribedDofs().empty())
+      central->setPrescribedDisplacement(problem.prescribedDofs(),
+                                         [&problem](Real t, Vector& values) { problem.prescribedValues(t, values); });
     integrator = std::move(central);
   } else {
-    if (spec.smoothingRate > 0)
-      throw InputError("method.smoothing_rate", "conservative smoothing is applied by the central_difference "
-                                                "integrator only; set it to 0 to run " + scene.integrator.name);
-    if (!prescribed.dofs.empty())
-      throw InputError("boundary", "fixed and displacement faces (eq. 30) need the central_difference integrator");
     integrator = makeSecondOrderIntegrator(scene.integrator.name, scene.integrator.options);
   }
   // At rest, with the prescribed faces at their values at t = 0 (eq. (30) holds from the start).
-  Vector u0 = Vector::Zero(system.size());
-  Vector g0(static_cast<Index>(prescribed.dofs.size()));
-  prescribed.values(0, g0);
-  for (std::size_t i = 0; i < prescribed.dofs.size(); ++i) u0[prescribed.dofs[i]] = g0[static_cast<Index>(i)];
-  integrator->initialise(system, 0, u0, Vector::Zero(system.size()), dt);
+  integrator->initialise(system, 0, problem.initialDisplacement(), Vector::Zero(system.size()), dt);
 
   // observers: stability, probes (raw and deconvolved), frames
-  const ParticleMatrix deconvolution =
-      spec.deconvolution ? deconvolutionMatrix<D>(particles, neighbours, *kernel, method.data.volume) : ParticleMatrix();
   const std::vector<Probe> probes = resolveProbes(scene.probes, particles);
-  LambProbes recorder(probes, spec.deconvolution ? &deconvolution : nullptr);
+  LambProbes recorder(probes, problem.deconvolution());
   result.assemblySeconds = assemblyClock.seconds();
 
   StabilityMonitor monitor(scene.stability.options(D));
@@ -477,7 +331,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
                                     study.arrivalFraction);
         if (study.kernelFloor)
           r.kernelFloor = compareSignals(recorder.times(),
-                                         kernelSmoothedExact(*exact, *kernel, px, py, recorder.times(),
+                                         kernelSmoothedExact(*exact, problem.kernel(), px, py, recorder.times(),
                                                              probes[i].quantity == ProbeQuantity::Velocity),
                                          exactSeries[i], study.errorWindow, study.arrivalFraction)
                               .relativeL2;

@@ -26,6 +26,7 @@
 #include "io/run/SceneDriver.hpp"
 #include "io/scene/Format.hpp"
 #include "io/scene/LoadScene.hpp"
+#include "study/VeryWeakSphScene.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -158,6 +159,8 @@ Plan readPlan(SceneReader& reader) {
     plan.cases.push_back({caseName(main.variant, dx), grids[i], false, atSpacing(main, dx, g.spacing), false});
     if (comparePublished) plan.cases.push_back({caseName("published", dx), grids[i], false, published, false});
   }
+  // Every case's combination of variant, filter, deconvolution, faces and integrator, before any work.
+  for (const CaseSettings& c : plan.cases) checkVeryWeakSphScene(scene, c.method, kProgram);
   return plan;
 }
 

@@ -7,20 +7,17 @@
 #include "core/Stopwatch.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "io/run/ProgressReporter.hpp"
-#include "kernels/KernelFactory.hpp"
 #include "methods/very_weak_sph/ConservativeSmoothing.hpp"
-#include "methods/very_weak_sph/VeryWeakSph.hpp"
-#include "neighbours/NeighbourList.hpp"
+#include "methods/very_weak_sph/VeryWeakSphProblem.hpp"
+#include "observers/EnergyObserver.hpp"
 #include "observers/LinearEnergyLedger.hpp"
 #include "observers/StabilityMonitor.hpp"
-#include "observers/EnergyObserver.hpp"
 #include "observers/TimeLoop.hpp"
 #include "particles/BoxFace.hpp"
 #include "particles/GhostLayers.hpp"
 #include "particles/Lattice.hpp"
 
 #include <cmath>
-#include <optional>
 
 namespace mfwave::plate {
 namespace {
@@ -48,42 +45,36 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
   const Index n = particles.physicalCount();
   result.particles = n;
   result.smoothingLength = study.veryWeakSmoothingLengthRatio * dx;
-  const std::unique_ptr<Kernel> kernel = makeKernel("cubic_spline", D, result.smoothingLength);
-  const NeighbourList neighbours = buildNeighbourList(CellList<D>(particles, kernel->supportRadius()), n);
-  result.meanNeighbours = neighbours.meanCount();
 
-  // the consistent variant (patch-test exact rows; the state is the nodal displacement)
-  VeryWeakSphOptions options;
-  options.material = material;
-  options.variant = VeryWeakSphVariant::Consistent;
-  VeryWeakSph<D> method = assembleVeryWeakSph<D>(particles, neighbours, *kernel, options);
-  LinearSecondOrderSystem& system = method.system;
-
-  // the clamp: both components of the -x face held at zero (eq. 30)
-  std::vector<Index> clamped;
-  const std::uint8_t minusX = faceBit(BoxFace::MinusX);
-  for (Index a = 0; a < n; ++a)
-    if (particles.faceMask[static_cast<std::size_t>(a)] & minusX) {
-      clamped.push_back(D * a);
-      clamped.push_back(D * a + 1);
-    }
-  result.fixedParticles = static_cast<Index>(clamped.size()) / D;
+  // the consistent variant (patch-test exact rows; the state is the nodal displacement), the clamp
+  // (both components of the -x face held at zero, eq. (30)) and the second-order smoothing filter
+  VeryWeakSphProblemSettings<D> problemSettings;
+  problemSettings.options.material = material;
+  problemSettings.options.variant = VeryWeakSphVariant::Consistent;
+  problemSettings.smoothingLength = result.smoothingLength;
+  problemSettings.lower = lower;
+  problemSettings.upper = upper;
+  problemSettings.spacing = dx;
+  problemSettings.prescribed.push_back({faceBit(BoxFace::MinusX), Vec2::Zero(), nullptr});
+  problemSettings.smoothingRate = study.veryWeakSmoothingRate;
+  problemSettings.smoothingOrder = 2;
+  VeryWeakSphProblem<D> problem(particles, problemSettings);
+  LinearSecondOrderSystem& system = problem.system();
+  result.meanNeighbours = problem.neighbours().meanCount();
+  result.fixedParticles = static_cast<Index>(problem.prescribedDofs().size()) / D;
 
   // central differences at a fraction of the operator's stable step
   const StableTimeStep stable = centralDifferenceStableStep(system, 1e-6, 5000);
-  const Real stableStep = stable.converged ? stable.estimate() : stable.safe();
+  const Real stableStep = stable.usable();
   if (!stable.converged)
     result.notes.push_back(settings.name + ": power iteration did not converge; the Gershgorin step is used");
   const long steps = std::max(1L, static_cast<long>(std::ceil(settings.endTime / (study.veryWeakCfl * stableStep))));
   const Real dt = settings.endTime / static_cast<Real>(steps);
   CentralDifference integrator;
-  integrator.setPrescribedDisplacement(clamped, [](Real, Vector& values) { values.setZero(); });
-  std::optional<ConservativeSmoothing> smoothing;
-  if (study.veryWeakSmoothingRate > 0) {
-    smoothing.emplace(smoothingMatrix<D>(particles, neighbours, *kernel, method.data.volume), D,
-                      study.veryWeakSmoothingRate, 2);
-    integrator.setVelocityFilter([&smoothing](Real step, Vector& v) { smoothing->apply(step, v); });
-  }
+  integrator.setPrescribedDisplacement(problem.prescribedDofs(),
+                                       [&problem](Real t, Vector& values) { problem.prescribedValues(t, values); });
+  ConservativeSmoothing* smoothing = problem.smoothing();
+  if (smoothing) integrator.setVelocityFilter([smoothing](Real step, Vector& v) { smoothing->apply(step, v); });
   Vector v0 = Vector::Zero(D * n);
   for (Index a = 0; a < n; ++a)
     v0[D * a + 1] = plate.initialVelocity(particles.position(a)[0], settings.velocityFactor);

@@ -19,6 +19,8 @@ struct StableTimeStep {
 
   Real estimate() const;  // 2 / sqrt(powerIterationOmegaSquared)
   Real safe() const;      // 2 / sqrt(gershgorinOmegaSquared)
+  // The step a run uses: the estimate when the iteration converged, else the safe bound.
+  Real usable() const { return converged ? estimate() : safe(); }
 };
 
 // The Gershgorin step alone: cheap (one pass over K), never above the true limit; exact for the

@@ -1,5 +1,8 @@
 #include "io/scene/Scene.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace mfwave {
 
 Scene readScene(SceneReader& reader) {
@@ -15,6 +18,15 @@ Scene readScene(SceneReader& reader) {
   scene.output = readOutput(reader, scene.info.name, scene.info.dimension);
   scene.stability = readStability(reader);
   return scene;
+}
+
+Real loadsQuietAfter(const Scene& scene) {
+  Real quiet = -std::numeric_limits<Real>::infinity();
+  for (const LoadSpec& load : scene.loads) quiet = std::max(quiet, load.timeFunction.quietAfter());
+  for (const BoundarySpec& b : scene.boundaries)
+    if (b.type == BoundaryType::Traction || b.type == BoundaryType::Displacement)
+      quiet = std::max(quiet, b.timeFunction.quietAfter());
+  return quiet;
 }
 
 }  // namespace mfwave

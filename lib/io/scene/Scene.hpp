@@ -42,4 +42,8 @@ struct Scene {
 // dimension and the geometry). Throws SceneError at the first problem.
 Scene readScene(SceneReader& reader);
 
+// The time after which no load, traction face or prescribed displacement acts any more
+// (TimeFunction::quietAfter); -infinity for a scene without any.
+Real loadsQuietAfter(const Scene& scene);
+
 }  // namespace mfwave

@@ -1,0 +1,137 @@
+#include "methods/very_weak_sph/VeryWeakSphProblem.hpp"
+
+#include "core/Error.hpp"
+#include "kernels/KernelFactory.hpp"
+#include "methods/very_weak_sph/Deconvolution.hpp"
+#include "methods/very_weak_sph/PatchLoad.hpp"
+#include "neighbours/CellList.hpp"
+#include "particles/BoxFace.hpp"
+
+#include <utility>
+
+namespace mfwave {
+namespace {
+
+Real compressedRowsMiB(const SparseMatrix& m) {
+  return (static_cast<Real>(m.nonZeros()) * (sizeof(Real) + sizeof(int)) +
+          static_cast<Real>(m.outerSize() + 1) * sizeof(int)) / (1024.0 * 1024.0);
+}
+
+}  // namespace
+
+void checkVeryWeakSphCombination(VeryWeakSphVariant variant, bool deconvolution, Real smoothingRate) {
+  if (variant != VeryWeakSphVariant::Galerkin) return;
+  if (deconvolution)
+    throw InputError("method.deconvolution", "the galerkin variant's state is the nodal displacement; there is no "
+                                             "kernel estimate to deconvolve (set it to false)");
+  if (smoothingRate > 0)
+    throw InputError("method.smoothing_rate", "the galerkin variant is stable without a filter and its kernel is not "
+                                              "the smoothing's; set it to 0");
+}
+
+template <int D>
+VeryWeakSphProblem<D>::VeryWeakSphProblem(const ParticleSet<D>& particles,
+                                          const VeryWeakSphProblemSettings<D>& settings) {
+  checkVeryWeakSphCombination(settings.options.variant, settings.deconvolution, settings.smoothingRate);
+  const bool galerkin = settings.options.variant == VeryWeakSphVariant::Galerkin;
+  const bool consistent = settings.options.variant == VeryWeakSphVariant::Consistent;
+  const Index n = particles.physicalCount();
+
+  // particles + neighbours
+  kernel_ = makeKernel(settings.kernel, D, settings.smoothingLength);
+  neighbours_ = buildNeighbourList(CellList<D>(particles, kernel_->supportRadius()), n);
+
+  // the operator (eqs. (21)-(22), corrected rows for the consistent variant) and the mass (rho /
+  // alpha, eqs. (28)-(29), for the published one)
+  method_ = assembleVeryWeakSph<D>(particles, neighbours_, *kernel_, settings.options);
+  if (!settings.keepOperatorMatrix) SparseMatrix().swap(method_.data.operatorMatrix);  // swap frees
+  LinearSecondOrderSystem& system = method_.system;
+  const VeryWeakSphData<D>& data = method_.data;
+  const Material& material = settings.options.material;
+
+  // dashpots (eqs. (31)-(32))
+  const std::uint8_t transmitting = settings.transmittingFaces;
+  if (transmitting != 0 && galerkin)
+    // int_face W_a rho Z v on the particle's own dofs: symmetric positive semi-definite.
+    system.setDamping(lumpedFacetDashpots<D>(data.facets, material, transmitting));
+  else if (transmitting != 0 && consistent)
+    // The dashpot tractions go through the corrected facet blocks, like every traction.
+    system.setDamping(dashpotsThroughTractionMatrix<D>(data.tractionMatrix, data.facets, material, transmitting));
+  else if (transmitting != 0)
+    system.setDamping(assembleTransmittingDamping<D>(particles, neighbours_, *kernel_, data.facets, material,
+                                                     transmitting, settings.dashpotLumping));
+
+  // loads (eq. (19)): fixed vectors T t scaled by their time functions, whole faces first
+  std::vector<Load> loads;
+  for (const FaceTraction<D>& face : settings.faceTractions) {
+    Vector t = Vector::Zero(D * data.facets.count());
+    for (Index f = 0; f < data.facets.count(); ++f)
+      if (face.faces & faceBit(data.facets.face[static_cast<std::size_t>(f)])) t.template segment<D>(D * f) = face.traction;
+    loads.push_back({data.tractionMatrix * t, face.history});
+  }
+  for (const PatchTraction<D>& patch : settings.patches) {
+    if (galerkin) {  // the exact int_patch W_a t of the tent kernel (GalerkinLattice.hpp)
+      const std::vector<Real> weights = patchTentWeights<D>(particles, patch.face, patch.centre, patch.halfWidths,
+                                                            settings.spacing, settings.lower, settings.upper);
+      loads.push_back({patchNodalForce<D>(weights, settings.spacing, patch.traction), patch.history});
+      continue;
+    }
+    const std::vector<Real> weights = patchLoadWeights<D>(particles, patch.face, patch.centre, patch.halfWidths,
+                                                          settings.spacing, settings.lower, settings.upper);
+    const Vector t = patchFacetTractions<D>(data.facets, patch.face, weights, patch.traction);
+    loads.push_back({data.tractionMatrix * t, patch.history});
+  }
+  if (!loads.empty())
+    system.setForce([loads = std::move(loads)](Real t, Vector& f) {
+      for (const Load& load : loads) {
+        const Real scale = (*load.history)(t);
+        if (scale != 0) f.noalias() += scale * load.force;
+      }
+    });
+
+  // prescribed displacements (eq. (30)), face by face, particle by particle, component by component
+  for (const PrescribedFaces<D>& faces : settings.prescribed)
+    for (Index a = 0; a < n; ++a) {
+      if ((particles.faceMask[static_cast<std::size_t>(a)] & faces.faces) == 0) continue;
+      for (int c = 0; c < D; ++c) {
+        prescribedDofs_.push_back(D * a + c);
+        prescribedValue_.push_back(faces.value[c]);
+        prescribedHistory_.push_back(faces.history);
+      }
+    }
+
+  // the smoothing filter (eq. (33)) and the deconvolution (eq. (35))
+  if (settings.smoothingRate > 0)
+    smoothing_ = std::make_unique<ConservativeSmoothing>(
+        smoothingMatrix<D>(particles, neighbours_, *kernel_, data.volume), D, settings.smoothingRate,
+        settings.smoothingOrder);
+  if (settings.deconvolution) deconvolution_ = deconvolutionMatrix<D>(particles, neighbours_, *kernel_, data.volume);
+}
+
+template <int D>
+void VeryWeakSphProblem<D>::prescribedValues(Real t, Vector& values) const {
+  for (std::size_t i = 0; i < prescribedDofs_.size(); ++i)
+    values[static_cast<Index>(i)] = prescribedHistory_[i] ? prescribedValue_[i] * (*prescribedHistory_[i])(t) : 0;
+}
+
+template <int D>
+Vector VeryWeakSphProblem<D>::initialDisplacement() const {
+  Vector u0 = Vector::Zero(method_.system.size());
+  Vector g0(static_cast<Index>(prescribedDofs_.size()));
+  prescribedValues(0, g0);
+  for (std::size_t i = 0; i < prescribedDofs_.size(); ++i) u0[prescribedDofs_[i]] = g0[static_cast<Index>(i)];
+  return u0;
+}
+
+template <int D>
+Real VeryWeakSphProblem<D>::operatorMiB() const {
+  const LinearSecondOrderSystem& s = method_.system;
+  return compressedRowsMiB(s.stiffness()) + compressedRowsMiB(method_.data.tractionMatrix) +
+         compressedRowsMiB(s.damping()) + compressedRowsMiB(s.mass());
+}
+
+template class VeryWeakSphProblem<1>;
+template class VeryWeakSphProblem<2>;
+template class VeryWeakSphProblem<3>;
+
+}  // namespace mfwave

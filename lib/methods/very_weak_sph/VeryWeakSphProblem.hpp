@@ -1,0 +1,131 @@
+#pragma once
+// The whole very weak form SPH set-up of one run behind one call: kernel, neighbours, assembly
+// (VeryWeakSph.hpp), transmitting dashpots chosen by variant (eqs. (31)-(32)), traction loads on
+// whole faces and on surface patches (eq. (19)), prescribed displacement dofs (eq. (30)), the
+// conservative smoothing filter (eq. (33)) and the deconvolution of reported values (eq. (35)).
+// A driver describes the problem (faces, loads, switches) and wires the result to an integrator
+// and observers; it never touches the method's matrices.
+//
+// The description holds plain values, not scene types, so that the method stays below the scene
+// reader; lib/study/VeryWeakSphScene turns a scene into it.
+
+#include "core/TimeFunction.hpp"
+#include "core/Types.hpp"
+#include "kernels/Kernel.hpp"
+#include "methods/very_weak_sph/ConservativeSmoothing.hpp"
+#include "methods/very_weak_sph/TransmittingBoundary.hpp"
+#include "methods/very_weak_sph/VeryWeakSph.hpp"
+#include "neighbours/NeighbourList.hpp"
+#include "particles/ParticleSet.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mfwave {
+
+// A traction t(x, s) = traction * history(s) on every facet of the faces in `faces` (eq. (19)).
+template <int D>
+struct FaceTraction {
+  std::uint8_t faces = 0;   // faceBit mask
+  Vec<D> traction = Vec<D>::Zero();
+  const TimeFunction* history = nullptr;  // must outlive the problem
+};
+
+// A traction on the part of one face within `halfWidths` of `centre` (PatchLoad.hpp).
+template <int D>
+struct PatchTraction {
+  int face = 0;             // BoxFace index
+  Vec<D> centre = Vec<D>::Zero();
+  Vec<D> halfWidths = Vec<D>::Zero();
+  Vec<D> traction = Vec<D>::Zero();
+  const TimeFunction* history = nullptr;  // must outlive the problem
+};
+
+// Every component of the particles on `faces` held at value * history(t) (eq. (30)); without a
+// history the face is fixed at zero.
+template <int D>
+struct PrescribedFaces {
+  std::uint8_t faces = 0;
+  Vec<D> value = Vec<D>::Zero();
+  const TimeFunction* history = nullptr;
+};
+
+template <int D>
+struct VeryWeakSphProblemSettings {
+  VeryWeakSphOptions options;            // variant, material, the boundary corrections
+  std::string kernel = "cubic_spline";   // kernelNames()
+  Real smoothingLength = 0;              // h
+  // The lattice box and spacing the particles were built on (patch weights are exact on it).
+  Vec<D> lower = Vec<D>::Zero(), upper = Vec<D>::Zero();
+  Real spacing = 0;
+  // Dashpots on these faces: lumped facet dashpots for the galerkin variant, through the corrected
+  // traction matrix for the consistent one, eq. (32) with `dashpotLumping` for the published one.
+  std::uint8_t transmittingFaces = 0;
+  DashpotLumping dashpotLumping = DashpotLumping::Particle;
+  std::vector<FaceTraction<D>> faceTractions;
+  std::vector<PatchTraction<D>> patches;
+  std::vector<PrescribedFaces<D>> prescribed;
+  Real smoothingRate = 0;                // 1/s; 0: no filter (eq. (33))
+  int smoothingOrder = 1;
+  bool deconvolution = false;            // build the matrix of eq. (35) for reported values
+  // The assembled K is kept in data().operatorMatrix only when asked: the system holds -K already.
+  bool keepOperatorMatrix = false;
+};
+
+// Throws InputError for what the method cannot combine: deconvolution ("method.deconvolution") or
+// the smoothing filter ("method.smoothing_rate") with the galerkin variant, whose state is nodal and
+// stable without a filter. Drivers call it when the scene is read; the problem calls it again.
+void checkVeryWeakSphCombination(VeryWeakSphVariant variant, bool deconvolution, Real smoothingRate);
+
+template <int D>
+class VeryWeakSphProblem {
+ public:
+  // Assembles everything the settings ask for. The particle set must outlive the problem. Throws
+  // what checkVeryWeakSphCombination and assembleVeryWeakSph throw.
+  VeryWeakSphProblem(const ParticleSet<D>& particles, const VeryWeakSphProblemSettings<D>& settings);
+
+  LinearSecondOrderSystem& system() { return method_.system; }
+  const LinearSecondOrderSystem& system() const { return method_.system; }
+  const VeryWeakSphData<D>& data() const { return method_.data; }
+  const Kernel& kernel() const { return *kernel_; }
+  const NeighbourList& neighbours() const { return neighbours_; }
+
+  // Eq. (30): the prescribed dofs (particle * D + component) and their values at time t, in that
+  // order; the displacement at rest with the prescribed dofs at their values at t = 0.
+  const std::vector<Index>& prescribedDofs() const { return prescribedDofs_; }
+  void prescribedValues(Real t, Vector& values) const;
+  Vector initialDisplacement() const;
+
+  // Eq. (33) when settings.smoothingRate > 0, else null. The caller applies it as the
+  // integrator's velocity filter.
+  ConservativeSmoothing* smoothing() { return smoothing_.get(); }
+  // Eq. (35) when settings.deconvolution, else null.
+  const ParticleMatrix* deconvolution() const { return deconvolution_ ? &*deconvolution_ : nullptr; }
+
+  // Storage of the step's matrices (stiffness, traction, damping, mass) in compressed rows, MiB.
+  Real operatorMiB() const;
+
+ private:
+  struct Load {
+    Vector force;  // T t for the unit history
+    const TimeFunction* history;
+  };
+
+  std::unique_ptr<Kernel> kernel_;
+  NeighbourList neighbours_;
+  VeryWeakSph<D> method_;
+  std::vector<Index> prescribedDofs_;
+  std::vector<Real> prescribedValue_;
+  std::vector<const TimeFunction*> prescribedHistory_;
+  std::unique_ptr<ConservativeSmoothing> smoothing_;
+  std::optional<ParticleMatrix> deconvolution_;
+};
+
+extern template class VeryWeakSphProblem<1>;
+extern template class VeryWeakSphProblem<2>;
+extern template class VeryWeakSphProblem<3>;
+
+}  // namespace mfwave
