@@ -1,13 +1,12 @@
 #include "BarCase.hpp"
 
-#include "EnergyLedger.hpp"
-#include "SolidStateAdapter.hpp"
-
 #include "analytic/SymmetricBarImpact.hpp"
 #include "core/AtomicFile.hpp"
 #include "io/vtk/VtkFrameWriter.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
 #include "observers/TimeLoop.hpp"
+#include "study/EnergyLedger.hpp"
+#include "study/SolidStateAdapter.hpp"
 
 #include <cmath>
 #include <iomanip>

@@ -2,10 +2,9 @@
 // One case of the bar1d-sph study: the two bars at one particle spacing, run to the end time, and
 // its errors against the exact solution.
 
-#include "SolidIntegration.hpp"
-
 #include "io/scene/OutputSpec.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSphOptions.hpp"
+#include "study/SolidIntegration.hpp"
 
 #include <string>
 #include <vector>

@@ -1,9 +1,6 @@
 #include "PlateCase.hpp"
 
-#include "EnergyLedger.hpp"
 #include "PlateLattice.hpp"
-#include "SolidIntegration.hpp"
-#include "SolidStateAdapter.hpp"
 #include "TipRecorder.hpp"
 #include "VeryWeakPlate.hpp"
 
@@ -15,6 +12,9 @@
 #include "io/vtk/VtkFrameWriter.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
 #include "observers/TimeLoop.hpp"
+#include "study/EnergyLedger.hpp"
+#include "study/SolidIntegration.hpp"
+#include "study/SolidStateAdapter.hpp"
 
 #include <algorithm>
 #include <cmath>

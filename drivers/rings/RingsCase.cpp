@@ -1,15 +1,7 @@
 #include "RingsCase.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <iomanip>
-#include <limits>
-#include <memory>
-#include <optional>
-
-#include "EnergyLedger.hpp"
 #include "Fragments.hpp"
-#include "SolidStateAdapter.hpp"
+
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
@@ -24,6 +16,15 @@
 #include "observers/TimeLoop.hpp"
 #include "observers/TimeSeries.hpp"
 #include "particles/Annulus.hpp"
+#include "study/EnergyLedger.hpp"
+#include "study/SolidStateAdapter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <memory>
+#include <optional>
 
 namespace mfwave::rings {
 namespace {

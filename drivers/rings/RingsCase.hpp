@@ -3,13 +3,13 @@
 // the updated-Lagrangian SPH, with or without the Monaghan-Gray artificial stress; what it
 // measures to tell an intact rebound from fragmentation.
 
-#include <string>
-#include <vector>
-
-#include "SolidIntegration.hpp"
 #include "core/Stopwatch.hpp"
 #include "io/scene/Scene.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
+#include "study/SolidIntegration.hpp"
+
+#include <string>
+#include <vector>
 
 namespace mfwave::rings {
 

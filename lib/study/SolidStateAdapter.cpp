@@ -1,4 +1,4 @@
-#include "SolidStateAdapter.hpp"
+#include "study/SolidStateAdapter.hpp"
 
 namespace mfwave {
 

@@ -1,4 +1,4 @@
-#include "SolidIntegration.hpp"
+#include "study/SolidIntegration.hpp"
 
 #include "core/Error.hpp"
 #include "integrators/FirstOrderIntegratorFactory.hpp"

@@ -1,4 +1,4 @@
-#include "EnergyLedger.hpp"
+#include "study/EnergyLedger.hpp"
 
 #include "core/Error.hpp"
 
