@@ -142,11 +142,11 @@ std::vector<Real> kernelSmoothedExact(const LambSquareLoad& exact, const Kernel&
 }
 
 // What makes this variant's energy grow, for the stop message (docs/theory/very-weak-sph.md).
-std::string likelyGrowthCause(const VeryWeakSphSpec& spec) {
-  if (spec.variant == "galerkin")
+std::string likelyGrowthCause(VeryWeakSphVariant variant) {
+  if (variant == VeryWeakSphVariant::Galerkin)
     return "the galerkin variant's operator is symmetric positive semi-definite and its dashpots dissipative, so its "
            "energy cannot grow at a stable step: look for a step above the stable limit (integrator.cfl) or a defect";
-  if (spec.variant == "consistent")
+  if (variant == VeryWeakSphVariant::Consistent)
     return "the consistent variant's corrected boundary rows are not symmetric and feed slowly growing modes, "
            "faster as the spacing falls (docs/theory/very-weak-sph.md); method.smoothing_rate only delays it. "
            "stability.allow_growth = true runs on to show it";
@@ -233,7 +233,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   const bool movingFaces = facesWith(caseScene.boundaries, BoundaryType::Displacement) != 0;
   ledgerOptions.balanceLimit = movingFaces ? 0 : scene.stability.energyBalanceLimit;
   ledgerOptions.components = D;
-  ledgerOptions.likelyCause = likelyGrowthCause(spec);
+  ledgerOptions.likelyCause = likelyGrowthCause(spec.options.variant);
   ledgerOptions.stop = !scene.stability.allowGrowth;
   LinearEnergyLedger ledger(system, ledgerOptions);
 

@@ -82,7 +82,7 @@ std::string caseName(const std::string& variant, Real dx) {
 // boundary corrections as the scene sets them).
 VeryWeakSphSpec publishedSpec(const VeryWeakSphSpec& scene, Real rate) {
   VeryWeakSphSpec spec = scene;
-  spec.variant = "published";
+  spec.options.variant = VeryWeakSphVariant::Published;
   spec.smoothingRate = rate;
   spec.smoothingOrder = 1;
   spec.smoothingScalesWithSpacing = false;
@@ -111,7 +111,7 @@ Plan readPlan(SceneReader& reader) {
   for (std::size_t i = 0; i < scene.loads.size(); ++i)
     if (scene.loads[i].type != LoadType::SurfacePatch)
       reader.fail("load[" + std::to_string(i) + "].type", "lamb3d takes surface_patch loads");
-  const bool comparePublished = reader.boolean("study.compare_published") && main.variant != "published";
+  const bool comparePublished = reader.boolean("study.compare_published") && main.options.variant != VeryWeakSphVariant::Published;
   const VeryWeakSphSpec published = publishedSpec(main, reader.number("study.published_smoothing_rate"));
   const Real strong = reader.number("study.strong_smoothing_rate");
 
@@ -134,10 +134,10 @@ Plan readPlan(SceneReader& reader) {
 
   // At the scene's spacing: the main variant (with frames), the published figure cases, the free
   // block; then every other spacing, for each variant, cheapest first.
-  plan.cases.push_back({caseName(main.variant, g.spacing), g, false, atSpacing(main, g.spacing, g.spacing), true});
+  plan.cases.push_back({caseName(main.variantName(), g.spacing), g, false, atSpacing(main, g.spacing, g.spacing), true});
   if (comparePublished) plan.cases.push_back({caseName("published", g.spacing), g, false, published, false});
-  if (strong > 0 && (comparePublished || main.variant == "published")) {
-    VeryWeakSphSpec strongSpec = main.variant == "published" ? atSpacing(main, g.spacing, g.spacing) : published;
+  if (strong > 0 && (comparePublished || main.options.variant == VeryWeakSphVariant::Published)) {
+    VeryWeakSphSpec strongSpec = main.options.variant == VeryWeakSphVariant::Published ? atSpacing(main, g.spacing, g.spacing) : published;
     strongSpec.smoothingRate = strong;
     plan.cases.push_back({"strong_filter", g, false, strongSpec, false});
   }
@@ -156,7 +156,7 @@ Plan readPlan(SceneReader& reader) {
   }
   for (std::size_t i = 1; i < grids.size(); ++i) {
     const Real dx = grids[i].spacing;
-    plan.cases.push_back({caseName(main.variant, dx), grids[i], false, atSpacing(main, dx, g.spacing), false});
+    plan.cases.push_back({caseName(main.variantName(), dx), grids[i], false, atSpacing(main, dx, g.spacing), false});
     if (comparePublished) plan.cases.push_back({caseName("published", dx), grids[i], false, published, false});
   }
   // Every case's combination of variant, filter, deconvolution, faces and integrator, before any work.
@@ -177,7 +177,7 @@ void writeCases(const std::string& path, const std::vector<CaseResult>& results)
   for (const ProbeResult& p : results.front().probes) out << ',' << p.name << "_kernel_floor_relative_l2";
   out << '\n' << std::setprecision(8);
   for (const CaseResult& r : results) {
-    out << r.settings.name << ',' << r.settings.method.variant << ',' << r.settings.method.smoothingRate << ','
+    out << r.settings.name << ',' << r.settings.method.variantName() << ',' << r.settings.method.smoothingRate << ','
         << r.settings.geometry.spacing << ',' << r.smoothingLength << ',' << r.particles
         << ',' << r.ghosts << ',' << r.meanNeighbours << ',' << r.operatorNonZeros << ',' << r.operatorMiB << ','
         << r.stableStepEstimate << ',' << r.stableStepGershgorin << ',' << r.timeStep << ',' << r.steps << ','

@@ -5,12 +5,6 @@
 namespace mfwave {
 namespace {
 
-VeryWeakSphVariant variantNamed(const std::string& name) {
-  if (name == "galerkin") return VeryWeakSphVariant::Galerkin;
-  if (name == "consistent") return VeryWeakSphVariant::Consistent;
-  return VeryWeakSphVariant::Published;  // readVeryWeakSph accepts no other name
-}
-
 template <int D>
 Vec<D> vectorOf(const std::vector<Real>& values) {
   Vec<D> v = Vec<D>::Zero();
@@ -25,7 +19,7 @@ void checkVeryWeakSphScene(const Scene& scene, const VeryWeakSphSpec& spec, cons
     if (scene.loads[i].type != LoadType::SurfacePatch)
       throw InputError("load[" + std::to_string(i) + "].type",
                        program + " takes surface_patch loads (point and body forces have no very weak form here)");
-  checkVeryWeakSphCombination(variantNamed(spec.variant), spec.deconvolution, spec.smoothingRate);
+  checkVeryWeakSphCombination(spec.options.variant, spec.deconvolution, spec.smoothingRate);
   if (scene.integrator.name == "central_difference") return;
   if (spec.smoothingRate > 0)
     throw InputError("method.smoothing_rate", "conservative smoothing is applied by the central_difference "
@@ -39,13 +33,12 @@ VeryWeakSphProblemSettings<D> veryWeakSphProblemSettings(const Scene& scene, con
                                                          const VeryWeakSphSpec& spec, bool withBoundaries) {
   VeryWeakSphProblemSettings<D> s;
   s.options = spec.options;
-  s.options.variant = variantNamed(spec.variant);
   s.kernel = spec.kernel;
   s.smoothingLength = spec.smoothingLengthRatio * geometry.spacing;
   s.lower = vectorOf<D>(geometry.lower);
   s.upper = vectorOf<D>(geometry.upper);
   s.spacing = geometry.spacing;
-  s.dashpotLumping = spec.dashpotLumping == "consistent" ? DashpotLumping::Consistent : DashpotLumping::Particle;
+  s.dashpotLumping = spec.dashpotLumping;
   if (withBoundaries) {
     s.transmittingFaces = facesWith(scene.boundaries, BoundaryType::Transmitting);
     for (const BoundarySpec& b : scene.boundaries) {

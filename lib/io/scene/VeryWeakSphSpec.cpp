@@ -40,7 +40,10 @@ void addVeryWeakSphKeys(SceneSchema& schema) {
 VeryWeakSphSpec readVeryWeakSph(SceneReader& reader, const Material& material) {
   const SceneTable method = reader.section("method");
   VeryWeakSphSpec spec;
-  spec.variant = method.string("variant");
+  const std::string variant = method.string("variant");  // one of the three (the schema's oneOf)
+  spec.options.variant = variant == "galerkin"     ? VeryWeakSphVariant::Galerkin
+                         : variant == "consistent" ? VeryWeakSphVariant::Consistent
+                                                   : VeryWeakSphVariant::Published;
   spec.kernel = method.string("kernel");
   spec.smoothingLengthRatio = method.number("smoothing_length_ratio");
   spec.options.material = material;
@@ -48,7 +51,8 @@ VeryWeakSphSpec readVeryWeakSph(SceneReader& reader, const Material& material) {
   spec.options.boundaryAreaCorrection = method.boolean("boundary_area_correction");
   spec.options.boundaryKernelCorrection = method.boolean("kernel_correction");
   spec.options.boundaryIntegral = method.boolean("boundary_integral");
-  spec.dashpotLumping = method.string("dashpot_lumping");
+  spec.dashpotLumping =
+      method.string("dashpot_lumping") == "consistent" ? DashpotLumping::Consistent : DashpotLumping::Particle;
   spec.smoothingRate = method.number("smoothing_rate");
   spec.smoothingOrder = static_cast<int>(method.integer("smoothing_order"));
   spec.smoothingScalesWithSpacing = method.boolean("smoothing_rate_scales_with_spacing");

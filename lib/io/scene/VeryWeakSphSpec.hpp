@@ -13,15 +13,18 @@
 namespace mfwave {
 
 struct VeryWeakSphSpec {
-  std::string variant = "galerkin";      // "galerkin" (symmetric, stable by construction), "consistent" or "published"
   std::string kernel = "cubic_spline";   // kernelNames()
   Real smoothingLengthRatio = 1;         // h / dx
-  VeryWeakSphOptions options;            // material and the four correction switches
-  std::string dashpotLumping = "particle";  // published variant: "particle" (eq. 32) or "consistent"
+  // The variant (method.variant: galerkin, the default, symmetric and stable by construction;
+  // consistent; published), the material and the four correction switches.
+  VeryWeakSphOptions options;
+  DashpotLumping dashpotLumping = DashpotLumping::Particle;  // published variant: eq. (32) or "consistent"
   Real smoothingRate = 0;                // 1/s; per step alpha = 1 - exp(-rate dt) (eq. 33)
   int smoothingOrder = 1;                // 1: eq. (33); 2: v <- v - alpha (I - S)^2 v
   bool smoothingScalesWithSpacing = false;  // rate given at geometry.spacing, scaled as 1 / dx
   bool deconvolution = true;             // report probes sharpened by eq. (35)
+
+  std::string variantName() const { return veryWeakSphVariantName(options.variant); }
 
   // The smoothing rate at lattice spacing dx, for a scene whose geometry.spacing is dx0.
   Real smoothingRateAt(Real dx, Real dx0) const {

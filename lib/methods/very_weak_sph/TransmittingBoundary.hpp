@@ -18,6 +18,7 @@
 #include "core/Types.hpp"
 #include "kernels/Kernel.hpp"
 #include "methods/very_weak_sph/BoundaryFacets.hpp"
+#include "methods/very_weak_sph/VeryWeakSphOptions.hpp"
 #include "neighbours/NeighbourList.hpp"
 #include "particles/ParticleSet.hpp"
 #include "systems/LinearSecondOrderSystem.hpp"
@@ -25,19 +26,6 @@
 #include <cstdint>
 
 namespace mfwave {
-
-enum class DashpotLumping {
-  // The paper's eq. (32): a transmitting particle a (one with a facet on a transmitting face k) gets
-  // rho Z_k (sum over its neighbours b with a facet g on face k of W_ab A_g) times its own velocity,
-  // once per such facet. Block-diagonal, symmetric positive semi-definite; interior particles whose
-  // support reaches the face get nothing (their share of eq. (19) is dropped).
-  Particle,
-  // The traction term of eq. (19) with the dashpot traction of each neighbour facet:
-  // C_ab = sum over facets g of b on transmitting faces of W_ab A_g rho Z_g. It couples neighbours
-  // and has rows for interior particles within the kernel support of the face; not symmetric.
-  // Particle is its row-sum lumping on the transmitting particles.
-  Consistent,
-};
 
 // Z = c_p n n^T + c_s (I - n n^T) (Ding-Long-Wu eq. (31) in the global frame), n a unit normal.
 template <int D>

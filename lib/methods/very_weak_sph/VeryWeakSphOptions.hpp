@@ -14,6 +14,34 @@ namespace mfwave {
 // without any filter; needs a full box lattice and ignores the kernel and the boundary options.
 enum class VeryWeakSphVariant { Published, Consistent, Galerkin };
 
+// The name scenes and outputs use: "published", "consistent", "galerkin".
+inline const char* veryWeakSphVariantName(VeryWeakSphVariant variant) {
+  switch (variant) {
+    case VeryWeakSphVariant::Consistent:
+      return "consistent";
+    case VeryWeakSphVariant::Galerkin:
+      return "galerkin";
+    default:
+      return "published";
+  }
+}
+
+// How the published variant's transmitting dashpots (eqs. (31)-(32)) are lumped
+// (TransmittingBoundary.hpp).
+enum class DashpotLumping {
+  // The paper's eq. (32): a transmitting particle a (one with a facet on a transmitting face k) gets
+  // rho Z_k (sum over its neighbours b with a facet g on face k of W_ab A_g) times its own velocity,
+  // once per such facet. Block-diagonal, symmetric positive semi-definite; interior particles whose
+  // support reaches the face get nothing (their share of eq. (19) is dropped).
+  Particle,
+  // The traction term of eq. (19) with the dashpot traction of each neighbour facet:
+  // C_ab = sum over facets g of b on transmitting faces of W_ab A_g rho Z_g. It couples neighbours
+  // and has rows for interior particles within the kernel support of the face; not symmetric.
+  // Particle is its row-sum lumping on the transmitting particles.
+  Consistent,
+};
+
+
 struct VeryWeakSphOptions {
   VeryWeakSphVariant variant = VeryWeakSphVariant::Published;
   // Lame constants and density of eq. (5), (15), (23).
