@@ -305,10 +305,10 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   }
 
   // errors against the exact half-space response, for probes on the loaded face along its normal
-  const std::string problem = exactReferenceProblem(scene);
+  const std::string referenceProblem = exactReferenceProblem(scene);
   std::optional<LambSquareLoad> exact;
-  if (problem.empty()) exact.emplace(exactReference(scene));
-  else result.notes.push_back(problem);
+  if (referenceProblem.empty()) exact.emplace(exactReference(scene));
+  else result.notes.push_back(referenceProblem);
   std::vector<std::vector<Real>> exactSeries(probes.size());
   std::vector<std::array<Real, 2>> surfacePoint(probes.size());  // probe relative to the load centre, in the face
   for (std::size_t i = 0; i < probes.size(); ++i) {

@@ -17,6 +17,13 @@ Real compressedRowsMiB(const SparseMatrix& m) {
           static_cast<Real>(m.outerSize() + 1) * sizeof(int)) / (1024.0 * 1024.0);
 }
 
+// The settings' combination checked before anything is built, then the kernel.
+template <int D>
+std::unique_ptr<Kernel> checkedKernel(const VeryWeakSphProblemSettings<D>& settings) {
+  checkVeryWeakSphCombination(settings.options.variant, settings.deconvolution, settings.smoothingRate);
+  return makeKernel(settings.kernel, D, settings.smoothingLength);
+}
+
 }  // namespace
 
 void checkVeryWeakSphCombination(VeryWeakSphVariant variant, bool deconvolution, Real smoothingRate) {
@@ -29,21 +36,17 @@ void checkVeryWeakSphCombination(VeryWeakSphVariant variant, bool deconvolution,
                                               "the smoothing's; set it to 0");
 }
 
+// Neighbours, then the operator (eqs. (21)-(22), corrected rows for the consistent variant) and the
+// mass (rho / alpha, eqs. (28)-(29), for the published one), in the members' order.
 template <int D>
 VeryWeakSphProblem<D>::VeryWeakSphProblem(const ParticleSet<D>& particles,
-                                          const VeryWeakSphProblemSettings<D>& settings) {
-  checkVeryWeakSphCombination(settings.options.variant, settings.deconvolution, settings.smoothingRate);
+                                          const VeryWeakSphProblemSettings<D>& settings)
+    : kernel_(checkedKernel(settings)),
+      neighbours_(buildNeighbourList(CellList<D>(particles, kernel_->supportRadius()), particles.physicalCount())),
+      method_(assembleVeryWeakSph<D>(particles, neighbours_, *kernel_, settings.options)) {
   const bool galerkin = settings.options.variant == VeryWeakSphVariant::Galerkin;
   const bool consistent = settings.options.variant == VeryWeakSphVariant::Consistent;
   const Index n = particles.physicalCount();
-
-  // particles + neighbours
-  kernel_ = makeKernel(settings.kernel, D, settings.smoothingLength);
-  neighbours_ = buildNeighbourList(CellList<D>(particles, kernel_->supportRadius()), n);
-
-  // the operator (eqs. (21)-(22), corrected rows for the consistent variant) and the mass (rho /
-  // alpha, eqs. (28)-(29), for the published one)
-  method_ = assembleVeryWeakSph<D>(particles, neighbours_, *kernel_, settings.options);
   if (!settings.keepOperatorMatrix) SparseMatrix().swap(method_.data.operatorMatrix);  // swap frees
   LinearSecondOrderSystem& system = method_.system;
   const VeryWeakSphData<D>& data = method_.data;
