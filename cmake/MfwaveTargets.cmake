@@ -16,14 +16,25 @@ endfunction()
 function(mfwave_add_library folder)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
   set(target mfwave_${folder})
+  # The layering, enforced: a library's include directory shows its own folder only, as one link
+  # <build>/include/<target>/<folder under lib/> -> lib/<folder>. Includes keep their usual form
+  # ("io/run/RunSummary.hpp"), and a file finds the headers of its own folder and of the libraries
+  # it links (their directories are PUBLIC, so they pass along the DEPENDS chain) and no others:
+  # including what a target does not link fails to compile. Libraries that share a folder (the
+  # analysis_* ones) share its headers.
+  file(RELATIVE_PATH relative ${PROJECT_SOURCE_DIR}/lib ${CMAKE_CURRENT_SOURCE_DIR})
+  set(includes ${PROJECT_BINARY_DIR}/include/${target})
+  get_filename_component(parent ${includes}/${relative} DIRECTORY)
+  file(MAKE_DIRECTORY ${parent})
+  file(CREATE_LINK ${CMAKE_CURRENT_SOURCE_DIR} ${includes}/${relative} SYMBOLIC)
   if(ARG_SOURCES)
     add_library(${target} STATIC ${ARG_SOURCES})
-    target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR}/lib)
+    target_include_directories(${target} PUBLIC ${includes})
     target_link_libraries(${target} PUBLIC ${ARG_DEPENDS})
     mfwave_set_warnings(${target})
   else()
     add_library(${target} INTERFACE)
-    target_include_directories(${target} INTERFACE ${PROJECT_SOURCE_DIR}/lib)
+    target_include_directories(${target} INTERFACE ${includes})
     target_link_libraries(${target} INTERFACE ${ARG_DEPENDS})
   endif()
   add_library(mfwave::${folder} ALIAS ${target})

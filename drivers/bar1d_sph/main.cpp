@@ -21,7 +21,7 @@
 #include "io/run/SceneDriver.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
-#include "io/scene/UpdatedLagrangianSphSpec.hpp"
+#include "study/UpdatedLagrangianSphSpec.hpp"
 
 #include <cmath>
 #include <iomanip>

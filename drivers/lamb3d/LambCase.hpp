@@ -6,7 +6,7 @@
 #include "analysis/SignalComparison.hpp"
 #include "core/Stopwatch.hpp"
 #include "io/scene/Scene.hpp"
-#include "io/scene/VeryWeakSphSpec.hpp"
+#include "study/VeryWeakSphSpec.hpp"
 
 #include <limits>
 #include <string>

@@ -23,10 +23,10 @@
 //   plate --scene data/scenes/plate.toml [--set 'study.resolutions=[5, 7, 10, 14]'] [--out DIR]
 
 #include "PlateCase.hpp"
+
 #include "PlateModes.hpp"
 
 #include "analysis/RichardsonExtrapolation.hpp"
-
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "io/run/DriverCommandLine.hpp"
@@ -36,7 +36,7 @@
 #include "io/scene/Format.hpp"
 #include "io/scene/IntegratorSpec.hpp"
 #include "io/scene/LoadScene.hpp"
-#include "io/scene/UpdatedLagrangianSphSpec.hpp"
+#include "study/UpdatedLagrangianSphSpec.hpp"
 
 #include <algorithm>
 #include <cmath>

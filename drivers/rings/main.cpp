@@ -20,13 +20,8 @@
 //
 //   rings --scene data/scenes/rings.toml [--set geometry.spacing=0.0005] [--out DIR]
 
-#include <algorithm>
-#include <cmath>
-#include <iomanip>
-#include <iostream>
-#include <sstream>
-
 #include "RingsCase.hpp"
+
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "io/run/DriverCommandLine.hpp"
@@ -36,7 +31,13 @@
 #include "io/scene/Format.hpp"
 #include "io/scene/IntegratorSpec.hpp"
 #include "io/scene/LoadScene.hpp"
-#include "io/scene/UpdatedLagrangianSphSpec.hpp"
+#include "study/UpdatedLagrangianSphSpec.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
 
 using namespace mfwave;
 using namespace mfwave::rings;

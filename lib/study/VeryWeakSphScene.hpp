@@ -5,8 +5,8 @@
 // geometry gets the same set-up from its scene.
 
 #include "io/scene/Scene.hpp"
-#include "io/scene/VeryWeakSphSpec.hpp"
 #include "methods/very_weak_sph/VeryWeakSphProblem.hpp"
+#include "study/VeryWeakSphSpec.hpp"
 
 namespace mfwave {
 

@@ -8,18 +8,18 @@
 // they are read with that method's keys and the first-order integrators (as those drivers read
 // them), and stay out of malformed/ itself, whose files every driver must reject at their key.
 
-#include "io/scene/LoadScene.hpp"
-#include "io/scene/Scene.hpp"
-#include "io/scene/UpdatedLagrangianSphSpec.hpp"
 #include "SceneTestSupport.hpp"
 
-#include <gtest/gtest.h>
+#include "io/scene/LoadScene.hpp"
+#include "io/scene/Scene.hpp"
+#include "study/UpdatedLagrangianSphSpec.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <gtest/gtest.h>
 
 namespace mfwave {
 namespace {

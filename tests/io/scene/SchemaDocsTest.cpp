@@ -3,12 +3,11 @@
 
 #include "io/scene/IntegratorSpec.hpp"
 #include "io/scene/SceneSchema.hpp"
-#include "io/scene/UpdatedLagrangianSphSpec.hpp"
-#include "io/scene/VeryWeakSphSpec.hpp"
-
-#include <gtest/gtest.h>
+#include "study/UpdatedLagrangianSphSpec.hpp"
+#include "study/VeryWeakSphSpec.hpp"
 
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 
 namespace mfwave {

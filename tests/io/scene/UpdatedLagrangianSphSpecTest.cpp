@@ -2,15 +2,15 @@
 // defaults are the options struct's defaults, every key reaches its option, the body force takes
 // one entry per axis or 3, and the first-order integrator names replace the second-order ones.
 
+#include "SceneTestSupport.hpp"
+
 #include "integrators/FirstOrderIntegratorFactory.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
-#include "io/scene/UpdatedLagrangianSphSpec.hpp"
-#include "io/scene/VeryWeakSphSpec.hpp"
-#include "SceneTestSupport.hpp"
+#include "study/UpdatedLagrangianSphSpec.hpp"
+#include "study/VeryWeakSphSpec.hpp"
 
 #include <gtest/gtest.h>
-
 #include <stdexcept>
 
 namespace mfwave {

@@ -1,4 +1,4 @@
-#include "io/scene/UpdatedLagrangianSphSpec.hpp"
+#include "study/UpdatedLagrangianSphSpec.hpp"
 
 #include "io/scene/Format.hpp"
 #include "kernels/KernelFactory.hpp"

@@ -1,4 +1,4 @@
-#include "io/scene/VeryWeakSphSpec.hpp"
+#include "study/VeryWeakSphSpec.hpp"
 
 #include "kernels/KernelFactory.hpp"
 
