@@ -1,12 +1,12 @@
-"""Unit checks of analysis/tradeoff_pareto.py: the Pareto front and the cheapest point per target."""
+"""Unit checks of analysis/tradeoff/pareto.py: the Pareto front and the cheapest point per target."""
 import math
 import os
 import random
 import sys
 import unittest
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "analysis"))
-from tradeoff_pareto import cheapest_per_target, cheapest_reaching, dominates, pareto_front  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+from analysis.tradeoff.pareto import cheapest_per_target, cheapest_reaching, dominates, pareto_front  # noqa: E402
 
 
 def cost(p):

@@ -1,4 +1,4 @@
-"""Runs analysis/tradeoff.py --smoke (four wave1d points) as a user would and checks what it writes:
+"""Runs /usr/bin/python3 -m analysis.tradeoff --smoke (four wave1d points) as a user would and checks what it writes:
 the rows and their numbers, the Pareto front, the report, resuming, and the errors on bad input.
 
     tradeoff_sweep_test.py --build BUILD_DIR --wave1d PATH_OF_THE_WAVE1D_TARGET
@@ -12,16 +12,16 @@ import sys
 import tempfile
 import unittest
 
-ANALYSIS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "analysis")
-sys.path.insert(0, ANALYSIS)
-from tradeoff_pareto import pareto_front  # noqa: E402
-from tradeoff_table import read_rows  # noqa: E402
+TOP = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+sys.path.insert(0, TOP)
+from analysis.tradeoff.pareto import pareto_front  # noqa: E402
+from analysis.tradeoff.table import read_rows  # noqa: E402
 
 ARGS = None
 
 
 def tool(*args):
-    return subprocess.run([sys.executable, os.path.join(ANALYSIS, "tradeoff.py"), *args],
+    return subprocess.run([sys.executable, "-m", "analysis.tradeoff", *args], cwd=TOP,
                           capture_output=True, text=True, timeout=100)
 
 

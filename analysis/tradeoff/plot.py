@@ -6,9 +6,9 @@ import math
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 
-from plotting import save_atomically
-from tradeoff_pareto import pareto_front
-from tradeoff_report import TARGETS, cost, error, ok_rows
+from ..plotting import save_atomically
+from .pareto import pareto_front
+from .report import TARGETS, cost, error, ok_rows
 
 MARKERS = ["o", "s", "^", "D", "v", "P", "X", "*"]
 LARGEST_SHOWN = 10.0   # errors above this (blown-up runs) would squash the axis

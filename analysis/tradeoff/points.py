@@ -1,4 +1,4 @@
-"""The configurations of the speed-accuracy sweep (analysis/tradeoff.py).
+"""The configurations of the speed-accuracy sweep (analysis/tradeoff/).
 
 A Point is one driver process pinned to one configuration: one problem, one resolution, one
 kernel and support, one integrator, one time-step fraction. Everything else in the problem's scene

@@ -1,7 +1,8 @@
-#!/usr/bin/python3
 """Speed-accuracy sweep over methods, resolutions, kernels and supports, integrators and step fractions.
 
-    /usr/bin/python3 analysis/tradeoff.py --build build/release --out out/tradeoff [--full] [--jobs N]
+    /usr/bin/python3 -m analysis.tradeoff --build build/release --out out/tradeoff [--full] [--jobs N]
+
+(from the repository's top folder; the package is analysis/tradeoff/).
 
 Each point is one driver process (wave1d, bar1d, plane2d, bar1d-sph, lamb3d) pinned by --set to one
 configuration, on one core; the sweep runs --jobs of them at once. Writes into --out:
@@ -19,17 +20,17 @@ import sys
 import threading
 import time
 
-from tradeoff_points import SWEEPS
-from tradeoff_plot import plot
-from tradeoff_report import report_text
-from tradeoff_run import run_point
-from tradeoff_table import Table
+from .points import SWEEPS
+from .plot import plot
+from .report import report_text
+from .run import run_point
+from .table import Table
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 def parse_args(argv):
-    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p = argparse.ArgumentParser(prog="python3 -m analysis.tradeoff", description=__doc__.split("\n\n")[0])
     p.add_argument("--build", required=True, help="CMake build folder holding drivers/ (e.g. build/release)")
     p.add_argument("--out", default="out/tradeoff", help="output folder (default: out/tradeoff)")
     size = p.add_mutually_exclusive_group()
@@ -38,7 +39,7 @@ def parse_args(argv):
     p.add_argument("--jobs", type=int, default=os.cpu_count() or 2,
                    help="driver processes at once (default: the number of cores)")
     p.add_argument("--timeout", type=float, default=1800, help="seconds before a point is killed (default 1800)")
-    p.add_argument("--scenes", default=os.path.join(HERE, "..", "data", "scenes"), help=argparse.SUPPRESS)
+    p.add_argument("--scenes", default=os.path.join(HERE, "..", "..", "data", "scenes"), help=argparse.SUPPRESS)
     args = p.parse_args(argv)
     if args.jobs < 1:
         p.error("--jobs must be at least 1")

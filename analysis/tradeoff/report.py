@@ -1,7 +1,7 @@
 """tradeoff.txt: which configuration is cheapest for 10 %, 1 % and 0.1 % error, from the CSV rows."""
 from collections import Counter
 
-from tradeoff_pareto import cheapest_per_target, pareto_front
+from .pareto import cheapest_per_target, pareto_front
 
 TARGETS = (0.1, 0.01, 0.001)
 

@@ -1,6 +1,6 @@
 """Starts one driver of the tradeoff sweep and reports its wall time and its own peak memory.
 
-    /usr/bin/python3 -I -S analysis/tradeoff_launch.py LOG TIMEOUT EXECUTABLE [ARGS...]
+    /usr/bin/python3 -I -S analysis/tradeoff/launch.py LOG TIMEOUT EXECUTABLE [ARGS...]
 
 Prints one JSON line: exit_code (negative: the signal that ended it), wall_s, peak_mib, killed
 (why it was stopped, or null). The driver's stdout and stderr go to LOG.

@@ -1,6 +1,6 @@
 """Runs one point of the speed-accuracy sweep as its own driver process and reads what it reports.
 
-The driver is started by a small launcher process (tradeoff_launch.py) that times it and reaps it
+The driver is started by a small launcher process (launch.py) that times it and reaps it
 with os.wait4, whose ru_maxrss is that driver's own peak resident memory (no /usr/bin/time).
 OMP_NUM_THREADS=1 and --threads 1 keep each point on one core, so that points running side by
 side do not compete for cores and the wall times are per-core figures.
@@ -15,9 +15,9 @@ import subprocess
 import sys
 import threading
 
-from tradeoff_points import ERROR_MEASURES
+from .points import ERROR_MEASURES
 
-LAUNCHER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "tradeoff_launch.py")
+LAUNCHER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "launch.py")
 
 
 def slug(point):
@@ -60,7 +60,7 @@ def command_for(point, executable, scene, out_dir):
 
 
 def launch(argv, log, timeout, children):
-    """Runs argv through tradeoff_launch.py; returns its report {exit_code, wall_s, peak_mib, killed}.
+    """Runs argv through launch.py; returns its report {exit_code, wall_s, peak_mib, killed}.
     `children` is a set shared with the caller, which terminates what is in it when interrupted."""
     launcher = [sys.executable, "-I", "-S", LAUNCHER, log, repr(timeout)] + argv
     proc = subprocess.Popen(launcher, stdout=subprocess.PIPE, env=dict(os.environ, OMP_NUM_THREADS="1"), text=True)
