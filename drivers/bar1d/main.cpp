@@ -21,8 +21,7 @@
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/StepLimitCheck.hpp"
 #include "io/scene/Scene.hpp"
-#include "integrators/CentralDifference.hpp"
-#include "methods/collocation/CollocationNewmark.hpp"
+#include "methods/collocation/CollocationIntegrators.hpp"
 #include "methods/collocation/CollocationSystem.hpp"
 #include "methods/collocation/ConstrainedCollocationSystem.hpp"
 #include "methods/collocation/RadialBasisShapeFunctions.hpp"
@@ -31,6 +30,7 @@
 #include "observers/TimeLoop.hpp"
 #include "observers/TimeSeries.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -192,13 +192,8 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
   // Initial state at interior points: u = 0, v = v0 (the boundary rows enforce u(0) = 0).
   const Vector U0 = Vector::Zero(system.size());
   const Vector V0 = Vector::Constant(system.size(), study.v0);
-  std::unique_ptr<SecondOrderIntegrator> integrator;
-  const bool implicit = scene.integrator.name == "newmark" && scene.integrator.options.newmarkBeta > 0;
-  if (implicit)
-    integrator = std::make_unique<CollocationNewmark>(scene.integrator.options.newmarkBeta,
-                                                      scene.integrator.options.newmarkGamma);
-  else
-    integrator = std::make_unique<CentralDifference>();
+  const std::unique_ptr<SecondOrderIntegrator> integrator =
+      makeCollocationIntegrator(scene.integrator.name, scene.integrator.options);
   integrator->initialise(system, 0, U0, V0, dt);
 
   std::vector<Vec1> errorPoints;
@@ -252,8 +247,8 @@ Study readStudy(SceneReader& reader) {
       facesWith(study.scene.boundaries, BoundaryType::Traction) != 0)
     reader.fail("boundary", "bar1d is the fixed-free bar: faces = [\"-x\"], type = \"fixed\"; +x free");
   if (!study.scene.loads.empty()) reader.fail("load", "bar1d takes no loads");
-  const std::string& integrator = study.scene.integrator.name;
-  if (integrator != "central_difference" && integrator != "newmark")
+  const std::vector<std::string> integrators = collocationIntegratorNames();
+  if (std::find(integrators.begin(), integrators.end(), study.scene.integrator.name) == integrators.end())
     reader.fail("integrator.name", "bar1d runs central_difference or newmark");
   study.v0 = reader.number("study.initial_velocity");
   for (Real n : reader.numbers("study.nodes")) {

@@ -11,7 +11,6 @@
 #include "analysis/MethodLatticeStencils.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
-#include "integrators/CentralDifference.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/SceneDriver.hpp"
@@ -19,13 +18,14 @@
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/StepLimitCheck.hpp"
 #include "io/scene/Scene.hpp"
-#include "methods/collocation/CollocationNewmark.hpp"
+#include "methods/collocation/CollocationIntegrators.hpp"
 #include "methods/collocation/CollocationSystem.hpp"
 #include "methods/collocation/ConstrainedCollocationSystem.hpp"
 #include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -138,12 +138,8 @@ CaseResult runCase(const Scene& scene, int order, Real ratio, Real w, int cells,
     U0.segment<2>(r) = exact.u(x, 0);
     V0.segment<2>(r) = exact.v(x, 0);
   }
-  std::unique_ptr<SecondOrderIntegrator> integrator;
-  if (scene.integrator.name == "newmark" && scene.integrator.options.newmarkBeta > 0)
-    integrator = std::make_unique<CollocationNewmark>(scene.integrator.options.newmarkBeta,
-                                                      scene.integrator.options.newmarkGamma);
-  else
-    integrator = std::make_unique<CentralDifference>();
+  const std::unique_ptr<SecondOrderIntegrator> integrator =
+      makeCollocationIntegrator(scene.integrator.name, scene.integrator.options);
   integrator->initialise(system, 0, U0, V0, dt);
   StabilityMonitor monitor(scene.stability.options(2));
   TimeLoop loop;
@@ -202,7 +198,8 @@ int main(int argc, char** argv) {
     const Scene scene = readScene(reader);
     if (scene.info.dimension != 2) reader.fail("scene.dimension", "plane2d is a 2-D study");
     if (scene.method.name != "reproducing_kernel") reader.fail("method.name", "plane2d uses reproducing_kernel");
-    if (scene.integrator.name != "central_difference" && scene.integrator.name != "newmark")
+    const std::vector<std::string> integrators = collocationIntegratorNames();
+    if (std::find(integrators.begin(), integrators.end(), scene.integrator.name) == integrators.end())
       reader.fail("integrator.name", "plane2d runs central_difference or newmark");
     if (!scene.loads.empty()) reader.fail("load", "plane2d sets its own body force");
     const int order = static_cast<int>(reader.integer("method.order"));
