@@ -3,16 +3,16 @@
 #include "PlateLattice.hpp"
 
 #include "analysis/RestModes.hpp"
+#include "core/Stopwatch.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace mfwave::plate {
 
 PlateModesResult linearisedPlateModes(const PlateStudy& study, Index rows) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   const PlateLattice lattice = cellCentredPlate(study.length, study.thickness, study.lowerY, rows, study.clampLayers);
   UpdatedLagrangianSphOptions options = study.sph;
   options.viscosity.alpha = 0;  // no velocity at rest: the viscosity has nothing to act on anyway
@@ -44,7 +44,7 @@ PlateModesResult linearisedPlateModes(const PlateStudy& study, Index rows) {
   result.secondPeriod = bending.size() < 2 ? std::nan("") : 2 * kPi / bending[1];
   result.largestGrowthRate = modes.largestGrowthRate;
   result.zeroModes = modes.zeroModes + static_cast<Index>(modes.frequencies.size() - bending.size());
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.seconds = clock.seconds();
   return result;
 }
 

@@ -2,6 +2,7 @@
 
 #include "analysis/RestModes.hpp"
 #include "core/Error.hpp"
+#include "core/Stopwatch.hpp"
 #include "kernels/KernelFactory.hpp"
 #include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
@@ -14,7 +15,6 @@
 #include <Eigen/LU>
 
 #include <algorithm>
-#include <chrono>
 #include <complex>
 #include <cmath>
 #include <random>
@@ -255,7 +255,7 @@ JitteredCloudReport jitteredCloudSpectrum(const std::string& method, const Latti
   }
   if (!(jitter >= 0 && jitter < 0.5)) throw InputError("jitter", "must be in [0, 0.5) of the spacing");
   if (cells < 4 || cells > 64) throw InputError("cells", "must be 4 to 64 per axis");
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   JitteredCloudReport report;
   report.cells = cells;
   Index sites = 1;
@@ -343,7 +343,7 @@ JitteredCloudReport jitteredCloudSpectrum(const std::string& method, const Latti
   } catch (const Error& e) {
     report.status = std::string("fails: ") + e.what();
   }
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.seconds = clock.seconds();
   return report;
 }
 

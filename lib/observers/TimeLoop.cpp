@@ -1,8 +1,8 @@
 #include "observers/TimeLoop.hpp"
 
 #include "core/Error.hpp"
+#include "core/Stopwatch.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -15,7 +15,7 @@ void TimeLoop::add(Observer& observer, long every) {
 
 RunStatistics TimeLoop::run(Integrator& integrator, Real endTime) {
   if (!std::isfinite(endTime)) throw InputError("end_time", "must be finite");
-  const auto wallStart = std::chrono::steady_clock::now();
+  const Stopwatch wall;
   RunStatistics stats;
   stats.startTime = integrator.time();
   const long firstStep = integrator.stepCount();
@@ -35,7 +35,7 @@ RunStatistics TimeLoop::run(Integrator& integrator, Real endTime) {
   }
   stats.steps = taken;
   stats.endTime = integrator.time();
-  stats.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
+  stats.wallSeconds = wall.seconds();
   return stats;
 }
 
