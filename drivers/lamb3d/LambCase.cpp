@@ -367,9 +367,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     result.files.push_back("exact.csv");
   }
   result.files.push_back(settings.name + "-probes.csv");
-  const FrameOutputReport frameReport = frameOutputReport(settings.name, frames, images);
-  result.files.insert(result.files.end(), frameReport.files.begin(), frameReport.files.end());
-  result.notes.insert(result.notes.end(), frameReport.notes.begin(), frameReport.notes.end());
+  frameOutputReport(settings.name, frames, images).appendTo(result.files, result.notes);
   result.peakMemoryMiB = peakMemoryMiB();
   return result;
 }

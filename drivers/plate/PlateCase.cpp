@@ -124,9 +124,7 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
   energy.writeCsv(folder + "/" + settings.name + "-energy.csv");
   result.files.push_back(settings.name + "-tip.csv");
   result.files.push_back(settings.name + "-energy.csv");
-  const FrameOutputReport frameReport = frameOutputReport(settings.name, frames, images);
-  result.files.insert(result.files.end(), frameReport.files.begin(), frameReport.files.end());
-  result.notes.insert(result.notes.end(), frameReport.notes.begin(), frameReport.notes.end());
+  frameOutputReport(settings.name, frames, images).appendTo(result.files, result.notes);
   analyseTip(result, tip.series(), plate, study.shearCoefficient);
   return result;
 }

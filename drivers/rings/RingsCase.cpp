@@ -384,9 +384,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     probeRecorder.series().writeCsv(folder + "/" + settings.name + "-probes.csv");
     result.files.push_back(settings.name + "-probes.csv");
   }
-  const FrameOutputReport frameReport = frameOutputReport(settings.name, frames, images);
-  result.files.insert(result.files.end(), frameReport.files.begin(), frameReport.files.end());
-  result.notes.insert(result.notes.end(), frameReport.notes.begin(), frameReport.notes.end());
+  frameOutputReport(settings.name, frames, images).appendTo(result.files, result.notes);
   if (!result.failure.empty()) result.notes.push_back(settings.name + " stopped early: " + result.failure);
   result.peakMemoryMiB = peakMemoryMiB();
   return result;

@@ -64,6 +64,15 @@ struct RunSummary {
   void print(std::ostream& out) const;
   // Writes the summary as JSON (atomically).
   void writeJson(const std::string& path) const;
+  // The notes and files of every case of a multi-case study, in case order (each listed once):
+  // `Case` has `notes` and `files`, string lists.
+  template <class Case>
+  void addCases(const std::vector<Case>& cases) {
+    for (const Case& c : cases) {
+      notes.addAll(c.notes);
+      files.addAll(c.files);
+    }
+  }
   // The end every driver shares: finish(), "<folder>/summary.json", and the terminal summary
   // on `terminal` when it is given.
   void conclude(const std::string& folder, std::ostream* terminal);

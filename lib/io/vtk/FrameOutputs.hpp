@@ -21,6 +21,12 @@ PngOptions pngOptionsFor(const OutputSpec& output);
 struct FrameOutputReport {
   std::vector<std::string> files;
   std::vector<std::string> notes;
+
+  // Appends the lines to a case's own lists.
+  void appendTo(std::vector<std::string>& caseFiles, std::vector<std::string>& caseNotes) const {
+    caseFiles.insert(caseFiles.end(), files.begin(), files.end());
+    caseNotes.insert(caseNotes.end(), notes.begin(), notes.end());
+  }
 };
 
 template <int D>
