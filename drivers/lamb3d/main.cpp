@@ -108,9 +108,6 @@ Plan readPlan(SceneReader& reader) {
   study.errorWindow = reader.number("study.error_window");
   study.arrivalFraction = reader.number("study.arrival_fraction");
   study.kernelFloor = reader.boolean("study.kernel_floor");
-  for (std::size_t i = 0; i < scene.loads.size(); ++i)
-    if (scene.loads[i].type != LoadType::SurfacePatch)
-      reader.fail("load[" + std::to_string(i) + "].type", "lamb3d takes surface_patch loads");
   const bool comparePublished = reader.boolean("study.compare_published") && main.options.variant != VeryWeakSphVariant::Published;
   const VeryWeakSphSpec published = publishedSpec(main, reader.number("study.published_smoothing_rate"));
   const Real strong = reader.number("study.strong_smoothing_rate");
@@ -160,7 +157,7 @@ Plan readPlan(SceneReader& reader) {
     if (comparePublished) plan.cases.push_back({caseName("published", dx), grids[i], false, published, false});
   }
   // Every case's combination of variant, filter, deconvolution, faces and integrator, before any work.
-  for (const CaseSettings& c : plan.cases) checkVeryWeakSphScene(scene, c.method, kProgram);
+  for (const CaseSettings& c : plan.cases) checkVeryWeakSphScene(reader, scene, c.method, kProgram);
   return plan;
 }
 
@@ -273,10 +270,7 @@ int main(int argc, char** argv) {
     }
     summary.notes.add("particles, neighbours and dt of the first case (" + paper.settings.name +
                       "); steps and wall time summed over " + std::to_string(results.size()) + " cases");
-    for (const CaseResult& r : results) {
-      summary.notes.addAll(r.notes);
-      summary.files.addAll(r.files);
-    }
+    summary.addCases(results);
     summary.conclude(folder, &std::cout);
     return 0;
   });

@@ -14,18 +14,19 @@ Vec<D> vectorOf(const std::vector<Real>& values) {
 
 }  // namespace
 
-void checkVeryWeakSphScene(const Scene& scene, const VeryWeakSphSpec& spec, const std::string& program) {
+void checkVeryWeakSphScene(const SceneReader& reader, const Scene& scene, const VeryWeakSphSpec& spec,
+                           const std::string& program) {
   for (std::size_t i = 0; i < scene.loads.size(); ++i)
     if (scene.loads[i].type != LoadType::SurfacePatch)
-      throw InputError("load[" + std::to_string(i) + "].type",
-                       program + " takes surface_patch loads (point and body forces have no very weak form here)");
+      reader.fail("load[" + std::to_string(i) + "].type",
+                  program + " takes surface_patch loads (point and body forces have no very weak form here)");
   checkVeryWeakSphCombination(spec.options.variant, spec.deconvolution, spec.smoothingRate);
   if (scene.integrator.name == "central_difference") return;
   if (spec.smoothingRate > 0)
-    throw InputError("method.smoothing_rate", "conservative smoothing is applied by the central_difference "
-                                              "integrator only; set it to 0 to run " + scene.integrator.name);
+    reader.fail("method.smoothing_rate", "conservative smoothing is applied by the central_difference "
+                                         "integrator only; set it to 0 to run " + scene.integrator.name);
   if (facesWith(scene.boundaries, BoundaryType::Fixed) != 0 || facesWith(scene.boundaries, BoundaryType::Displacement) != 0)
-    throw InputError("boundary", "fixed and displacement faces (eq. 30) need the central_difference integrator");
+    reader.fail("boundary", "fixed and displacement faces (eq. 30) need the central_difference integrator");
 }
 
 template <int D>

@@ -15,7 +15,10 @@ namespace mfwave {
 // integrator other than central_difference (InputError "method.smoothing_rate" / "boundary"),
 // deconvolution or smoothing with the galerkin variant ("method.deconvolution" /
 // "method.smoothing_rate"). `spec` is the case's (its smoothing rate may differ from the scene's).
-void checkVeryWeakSphScene(const Scene& scene, const VeryWeakSphSpec& spec, const std::string& program);
+// Called while the scene is read: the scene's own refusals go through `reader`, so they name the
+// file and line of the key.
+void checkVeryWeakSphScene(const SceneReader& reader, const Scene& scene, const VeryWeakSphSpec& spec,
+                           const std::string& program);
 
 // The problem settings of one case: `geometry` is the case's lattice (its spacing may differ from
 // the scene's), `spec` its method options. `withBoundaries` false drops every [[boundary]] (all

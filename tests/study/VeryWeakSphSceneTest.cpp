@@ -5,6 +5,7 @@
 #include "core/Error.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
+#include "io/scene/SceneError.hpp"
 #include "particles/BoxFace.hpp"
 #include "study/VeryWeakSphScene.hpp"
 #include "study/VeryWeakSphSpec.hpp"
@@ -62,6 +63,7 @@ time_function = { type = "triangle", start = 0.0, rise = 1.0, fall = 1.0 }
 )";
 
 struct Read {
+  SceneReader reader;
   Scene scene;
   VeryWeakSphSpec spec;
 };
@@ -69,19 +71,19 @@ struct Read {
 Read read(const std::string& method, const std::string& integrator = "central_difference") {
   SceneSchema schema = SceneSchema::common();
   addVeryWeakSphKeys(schema);
-  SceneReader reader = parseScene(kBlock + "[method]\nname = \"very_weak_sph\"\n" + method +
-                                      "\n[integrator]\nname = \"" + integrator + "\"\nend_time = 1.0\n",
-                                  "strip.toml", {}, schema);
-  Read r;
-  r.scene = readScene(reader);
-  r.spec = readVeryWeakSph(reader, r.scene.material.material());
-  reader.checkAllKeysRead();
+  Read r{parseScene(kBlock + "[method]\nname = \"very_weak_sph\"\n" + method + "\n[integrator]\nname = \"" +
+                        integrator + "\"\nend_time = 1.0\n",
+                    "strip.toml", {}, schema),
+         {}, {}};
+  r.scene = readScene(r.reader);
+  r.spec = readVeryWeakSph(r.reader, r.scene.material.material());
+  r.reader.checkAllKeysRead();
   return r;
 }
 
 std::string refusedKey(const Read& r) {
   try {
-    checkVeryWeakSphScene(r.scene, r.spec, "test");
+    checkVeryWeakSphScene(r.reader, r.scene, r.spec, "test");
   } catch (const InputError& e) {
     return e.key();
   }
@@ -132,8 +134,14 @@ TEST(VeryWeakSphScene, RefusesBeforeAnyWorkWhatCannotRun) {
   EXPECT_EQ(refusedKey(read("variant = \"galerkin\"\ndeconvolution = false\nsmoothing_rate = 0.2\n")),
             "method.smoothing_rate");
   EXPECT_EQ(refusedKey(read("variant = \"consistent\"\nsmoothing_rate = 0.2\n", "newmark")), "method.smoothing_rate");
-  // prescribed faces (eq. 30) are the central difference's
-  EXPECT_EQ(refusedKey(read("variant = \"galerkin\"\ndeconvolution = false\n", "newmark")), "boundary");
+  // prescribed faces (eq. 30) are the central difference's; the scene's refusals name where
+  const Read newmark = read("variant = \"galerkin\"\ndeconvolution = false\n", "newmark");
+  EXPECT_EQ(refusedKey(newmark), "boundary");
+  try {
+    checkVeryWeakSphScene(newmark.reader, newmark.scene, newmark.spec, "test");
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("strip.toml"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
