@@ -270,7 +270,7 @@ int main(int argc, char** argv) {
     }
     summary.notes.add("particles, neighbours and dt of the first case (" + paper.settings.name +
                       "); steps and wall time summed over " + std::to_string(results.size()) + " cases");
-    summary.addCases(results);
+    summary.mergeNotesAndFiles(results);
     summary.conclude(folder, &std::cout);
     return 0;
   });

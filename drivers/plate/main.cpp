@@ -490,7 +490,7 @@ int main(int argc, char** argv) {
                       "); steps and wall time summed over " + std::to_string(results.size()) + " cases");
     summary.notes.add("errors: measured period / reference - 1 (thin plate, Timoshenko with kappa = " +
                       scene::formatNumber(plan.study.shearCoefficient) + ")");
-    summary.addCases(results);
+    summary.mergeNotesAndFiles(results);
     summary.conclude(folder, &std::cout);
     return 0;
   });

@@ -284,7 +284,7 @@ int main(int argc, char** argv) {
         "rings at the end (0 = both intact)");
     summary.notes.add("particles, neighbours and mean dt of the first case (" + first.settings.name +
                       "); steps and wall time summed over " + std::to_string(results.size()) + " cases");
-    summary.addCases(results);
+    summary.mergeNotesAndFiles(results);
     summary.conclude(folder, &std::cout);
     // Every case's outputs are written; a case the monitors stopped still makes the run fail
     // (exit 3), unless stability.allow_growth asked to run such a case on purpose.

@@ -10,9 +10,10 @@
 #include "analysis/ConvergenceOrders.hpp"
 #include "analysis/StableTimeStep.hpp"
 #include "analytic/StandingWave.hpp"
-#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
+#include "core/Stopwatch.hpp"
 #include "integrators/IntegratorFactory.hpp"
+#include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/SceneDriver.hpp"
@@ -28,9 +29,9 @@
 #include "observers/TimeLoop.hpp"
 #include "particles/Lattice.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -73,12 +74,49 @@ struct CaseResult {
   long steps;
   Real error;
   Real energyDrift;
-  double wallSeconds;
+  double setupSeconds, wallSeconds;  // wallSeconds: the time loop's
   std::vector<std::string> files;  // the time series written, relative to the output folder
+  Real order = std::nan("");       // against the next coarser case of the same integrator
+
+  // Kept as the study has always written it (a floor of 1 ns instead of 0 for no time).
+  double rate() const { return static_cast<double>(cells + 1) * static_cast<double>(steps) / std::max(wallSeconds, 1e-9); }
+  CaseRecord record(Real endTime) const {
+    CaseRecord c;
+    c.name = integrator + ", " + std::to_string(cells) + " cells";
+    c.particles = cells + 1;
+    c.steps = steps;
+    c.timeStep = dt;
+    c.stableTimeStep = criticalDt;
+    c.simulatedTime = endTime;
+    c.setupSeconds = setupSeconds;
+    c.loopSeconds = wallSeconds;
+    c.errors = {{"relative_l2", error}};
+    c.primaryError = "relative_l2";
+    return c;
+  }
 };
+
+// convergence.csv and the terminal table, one column each.
+CaseTable<CaseResult> convergenceTable() {
+  using R = const CaseResult&;
+  CaseTable<CaseResult> t;
+  t.column("integrator", [](R r) { return r.integrator; }, TerminalColumn("integrator", 20).left())
+      .column("cells", [](R r) { return r.cells; }, TerminalColumn("cells", 7))
+      .column("dx [m]", [](R r) { return r.dx; })
+      .column("dt [s]", [](R r) { return r.dt; }, TerminalColumn("dt", 10).precision(3))
+      .column("steps", [](R r) { return r.steps; })
+      .column("relative_l2_error", [](R r) { return r.error; }, TerminalColumn("L2 error", 13).scientific().precision(3))
+      .column("observed_order", [](R r) { return r.order; }, TerminalColumn("order", 8).precision(3))
+      .column("energy_drift", [](R r) { return r.energyDrift; }, TerminalColumn("energy", 12).scientific().precision(2))
+      .column("wall_time [s]", [](R r) { return r.wallSeconds; }, TerminalColumn("wall [s]", 11).precision(3))
+      .column("particle_steps_per_s", [](R r) { return r.rate(); },
+              TerminalColumn("part-steps/s", 14).scientific().precision(2));
+  return t;
+}
 
 CaseResult runCase(const Study& study, const std::string& integratorName, int cellCount, const std::string& folder,
                    bool writeSeries) {
+  const Stopwatch setup;
   const Scene& scene = study.scene;
   const Real x0 = scene.geometry.lower[0], length = scene.geometry.upper[0] - x0;
   const Real dx = length / cellCount;
@@ -118,6 +156,7 @@ CaseResult runCase(const Study& study, const std::string& integratorName, int ce
   loop.add(monitor);
   loop.add(energy);
   if (writeSeries) loop.add(probes);
+  const double setupSeconds = setup.seconds();
   const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
 
   // error at the end time, relative to the L2 norm of the mode shape (u(T) itself may be small)
@@ -129,7 +168,7 @@ CaseResult runCase(const Study& study, const std::string& integratorName, int ce
     normSquared += std::pow(std::sin(exact.wavenumber() * (x - x0)), 2);
   }
   CaseResult result{integratorName, cellCount, dx, dt, criticalDt, stats.steps, std::sqrt(errorSquared / normSquared),
-                    energy.maxRelativeDrift(), stats.wallSeconds, {}};
+                    energy.maxRelativeDrift(), setupSeconds, stats.wallSeconds, {}};
   if (writeSeries) {
     const std::string stem = integratorName + "-" + std::to_string(cellCount);
     probes.series().writeCsv(folder + "/" + stem + "-probe.csv");
@@ -202,42 +241,25 @@ int main(int argc, char** argv) {
         if (!cli.options().quiet) std::cerr << "  done " << name << " with " << study.cells[r] << " cells\n";
       }
 
-    AtomicFile table(folder + "/convergence.csv");
-    table.stream() << "integrator,cells,dx [m],dt [s],steps,relative_l2_error,observed_order,"
-                      "energy_drift,wall_time [s],particle_steps_per_s\n";
-    std::cout << std::left << std::setw(20) << "integrator" << std::right << std::setw(7) << "cells" << std::setw(10)
-              << "dt" << std::setw(13) << "L2 error" << std::setw(8) << "order" << std::setw(12) << "energy"
-              << std::setw(11) << "wall [s]" << std::setw(14) << "part-steps/s" << '\n';
+    const auto sameIntegrator = [](const CaseResult& a, const CaseResult& b) { return a.integrator == b.integrator; };
+    storeObservedOrders(results, &CaseResult::dx, &CaseResult::error, &CaseResult::order, sameIntegrator);
+    const CaseTable<CaseResult> table = convergenceTable();
+    table.writeCsv(folder + "/convergence.csv", results, 17);
+    table.print(std::cout, results);
     RunSummary summary;
     summary.program = kProgram;
     summary.scene = study.scene.info.name;
     summary.method = study.scene.method.name;
     summary.integrator = "several (see convergence.csv)";
-    const auto sameIntegrator = [](const CaseResult& a, const CaseResult& b) { return a.integrator == b.integrator; };
-    const std::vector<Real> orders = observedOrders(results, &CaseResult::dx, &CaseResult::error, sameIntegrator);
     for (std::size_t i = 0; i < results.size(); ++i) {
       const CaseResult& r = results[i];
-      const bool hasCoarser = i > 0 && sameIntegrator(results[i - 1], r);
-      const Real order = orders[i];
-      const double rate =
-          static_cast<double>(r.cells + 1) * static_cast<double>(r.steps) / std::max(r.wallSeconds, 1e-9);
-      table.stream() << r.integrator << ',' << r.cells << ',' << r.dx << ',' << r.dt << ',' << r.steps << ','
-                     << r.error << ',' << order << ',' << r.energyDrift << ',' << r.wallSeconds << ',' << rate << '\n';
-      std::cout << std::left << std::setw(20) << r.integrator << std::right << std::setw(7) << r.cells
-                << std::setw(10) << std::setprecision(3) << r.dt << std::setw(13) << std::scientific
-                << std::setprecision(3) << r.error << std::defaultfloat << std::setw(8) << std::setprecision(3)
-                << order << std::setw(12) << std::scientific << std::setprecision(2) << r.energyDrift
-                << std::defaultfloat << std::setw(11) << std::setprecision(3) << r.wallSeconds << std::setw(14)
-                << std::scientific << std::setprecision(2) << rate << std::defaultfloat << '\n';
-      summary.particles = std::max<Index>(summary.particles, r.cells + 1);
-      summary.steps += r.steps;
-      summary.wallSeconds += r.wallSeconds;
-      if (i + 1 == results.size() || results[i + 1].integrator != r.integrator) {
+      summary.addCase(r.record(study.scene.integrator.endTime));
+      if (i + 1 == results.size() || !sameIntegrator(results[i + 1], r)) {
         summary.errors.push_back({r.integrator + "_relative_l2_finest", r.error});
-        if (hasCoarser) summary.figures.push_back({r.integrator + "_observed_order", order});
+        if (i > 0 && sameIntegrator(results[i - 1], r)) summary.figures.push_back({r.integrator + "_observed_order", r.order});
       }
     }
-    table.commit();
+    summary.totalsFromCases();
     // The last case's step and the stable central-difference step it is a fraction of, so that a
     // one-case run (the tradeoff sweep's) reports both.
     summary.timeStep = results.back().dt;

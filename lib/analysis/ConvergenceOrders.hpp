@@ -36,4 +36,16 @@ std::vector<Real> observedOrders(const std::vector<Row>& rows, Spacing spacing, 
   return observedOrders(rows, spacing, error, [](const Row&, const Row&) { return true; });
 }
 
+// The same, stored in each row's `order` member (a table then reads one row per line).
+template <class Row, class Spacing, class Error, class SameSeries>
+void storeObservedOrders(std::vector<Row>& rows, Spacing spacing, Error error, Real Row::*order, SameSeries sameSeries) {
+  const std::vector<Real> orders = observedOrders(rows, spacing, error, sameSeries);
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i].*order = orders[i];
+}
+
+template <class Row, class Spacing, class Error>
+void storeObservedOrders(std::vector<Row>& rows, Spacing spacing, Error error, Real Row::*order) {
+  storeObservedOrders(rows, spacing, error, order, [](const Row&, const Row&) { return true; });
+}
+
 }  // namespace mfwave

@@ -40,3 +40,20 @@ TEST(ConvergenceOrders, StartEachSeriesAfresh) {
   EXPECT_TRUE(std::isnan(orders[2]));
   EXPECT_NEAR(orders[3], 1.0, 1e-12);
 }
+
+// The orders stored in the rows themselves, series by series.
+TEST(ConvergenceOrders, StoreEachRowsOrderInTheRow) {
+  struct Row {
+    std::string series;
+    Real h, error, order;
+  };
+  std::vector<Row> rows{{"a", 0.2, 0.04, 0}, {"a", 0.1, 0.01, 0}, {"b", 0.2, 0.2, 0}, {"b", 0.1, 0.1, 0}};
+  storeObservedOrders(rows, &Row::h, &Row::error, &Row::order,
+                      [](const Row& x, const Row& y) { return x.series == y.series; });
+  EXPECT_TRUE(std::isnan(rows[0].order));
+  EXPECT_NEAR(rows[1].order, 2.0, 1e-12);
+  EXPECT_TRUE(std::isnan(rows[2].order));
+  EXPECT_NEAR(rows[3].order, 1.0, 1e-12);
+  storeObservedOrders(rows, &Row::h, &Row::error, &Row::order);
+  EXPECT_NEAR(rows[2].order, std::log(0.01 / 0.2) / std::log(0.1 / 0.2), 1e-12);
+}

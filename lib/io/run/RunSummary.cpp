@@ -1,11 +1,13 @@
 #include "io/run/RunSummary.hpp"
 
 #include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
 
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <ostream>
 
@@ -33,6 +35,32 @@ double peakMemoryMiB() {
 
 double RunSummary::particleStepsPerSecond() const {
   return mfwave::particleStepsPerSecond(static_cast<double>(particles), static_cast<double>(steps), wallSeconds);
+}
+
+double CaseRecord::particleStepsPerSecond() const {
+  if (!(loopSeconds > 0)) return kUnknown;
+  return mfwave::particleStepsPerSecond(static_cast<double>(particles), static_cast<double>(steps), loopSeconds);
+}
+
+void RunSummary::addCase(CaseRecord record) {
+  if (!record.primaryError.empty() &&
+      std::none_of(record.errors.begin(), record.errors.end(),
+                   [&](const auto& e) { return e.first == record.primaryError; }))
+    throw Error("RunSummary::addCase: the primary error '" + record.primaryError + "' of case '" + record.name +
+                "' is not one of its errors");
+  record.peakMemoryMiB = mfwave::peakMemoryMiB();
+  cases.push_back(std::move(record));
+}
+
+void RunSummary::totalsFromCases() {
+  particles = 0;
+  steps = 0;
+  wallSeconds = 0;
+  for (const CaseRecord& c : cases) {
+    particles = std::max(particles, c.particles);
+    steps += c.steps;
+    if (std::isfinite(c.loopSeconds)) wallSeconds += c.loopSeconds;
+  }
 }
 
 void RunSummary::finish() { peakMemoryMiB = mfwave::peakMemoryMiB(); }
@@ -75,6 +103,34 @@ void RunSummary::writeJson(const std::string& path) const {
   j["figures"] = nlohmann::ordered_json::object();
   for (const auto& [name, value] : figures) j["figures"][name] = value;
   j["notes"] = notes.entries();
+  if (!cases.empty()) {
+    // nlohmann writes a non-finite number as null, which is what an unknown value should read as.
+    j["cases"] = nlohmann::ordered_json::array();
+    for (const CaseRecord& c : cases) {
+      nlohmann::ordered_json k;
+      k["case"] = c.name;
+      k["particles"] = c.particles;
+      k["steps"] = c.steps;
+      k["dt"] = c.timeStep;
+      k["stable_dt"] = c.stableTimeStep;
+      k["simulated_time"] = c.simulatedTime;
+      k["setup_seconds"] = c.setupSeconds;
+      k["loop_seconds"] = c.loopSeconds;
+      k["particle_steps_per_second"] = c.particleStepsPerSecond();
+      k["peak_memory_mib"] = c.peakMemoryMiB;
+      k["errors"] = nlohmann::ordered_json::object();
+      for (const auto& [name, value] : c.errors) k["errors"][name] = value;
+      if (c.primaryError.empty()) {
+        k["primary_error"] = nullptr;
+        k["primary_error_value"] = nullptr;
+      } else {
+        k["primary_error"] = c.primaryError;
+        for (const auto& [name, value] : c.errors)
+          if (name == c.primaryError) k["primary_error_value"] = value;
+      }
+      j["cases"].push_back(k);
+    }
+  }
   std::vector<std::string> written = files.entries();
   if (!files.contains("summary.json")) written.push_back("summary.json");
   j["files"] = written;

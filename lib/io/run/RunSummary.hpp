@@ -6,6 +6,7 @@
 #include "core/Types.hpp"
 
 #include <iosfwd>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,6 +36,29 @@ class GrowingList {
   std::vector<std::string> entries_;
 };
 
+// One case of a study in the layout every tool reads (summary.json's "cases", in run order): what
+// it cost and how accurate it was, whatever the driver. Times are split so that a speed is always
+// the time loop's: setup (particles, neighbours, assembly, stable-step estimate) and loop (the
+// steps and the observers). Unknown values stay NaN and are written as null.
+inline constexpr Real kUnknown = std::numeric_limits<Real>::quiet_NaN();
+
+struct CaseRecord {
+  std::string name;                 // e.g. "central_difference, 64 cells", "dx = 0.5, galerkin"
+  Index particles = 0;
+  long steps = 0;
+  Real timeStep = kUnknown;             // the step used (the last one when it varies)
+  Real stableTimeStep = kUnknown;       // the limit the step is a fraction of
+  Real simulatedTime = kUnknown;
+  double setupSeconds = kUnknown;
+  double loopSeconds = kUnknown;
+  // Named errors against the reference; `primaryError` names the one a tool ranks the case by.
+  std::vector<std::pair<std::string, Real>> errors;
+  std::string primaryError;
+  double peakMemoryMiB = kUnknown;      // the process's peak so far when the case was added
+
+  double particleStepsPerSecond() const;  // particles x steps / loop seconds
+};
+
 struct RunSummary {
   std::string program;
   std::string scene;           // scene name (or study name)
@@ -55,8 +79,17 @@ struct RunSummary {
   // Outputs written, relative to the output folder. scene.resolved.toml (written by
   // prepareOutputFolder) is listed from the start and summary.json is listed last by writeJson.
   GrowingList files;
+  // Every case in the canonical layout (empty: no "cases" in summary.json).
+  std::vector<CaseRecord> cases;
 
   RunSummary();
+
+  // Appends `record` with the process's peak memory so far; checks that its primary error is one
+  // of its errors (a programming error otherwise).
+  void addCase(CaseRecord record);
+  // The run's totals from its cases, for a study whose cases run one after another: particles of
+  // the largest case, steps and (loop) wall seconds summed over all cases.
+  void totalsFromCases();
 
   double particleStepsPerSecond() const;
   // Reads the peak resident memory of this process.
@@ -67,8 +100,8 @@ struct RunSummary {
   // The notes and files of every case of a multi-case study, in case order (each listed once):
   // `Case` has `notes` and `files`, string lists.
   template <class Case>
-  void addCases(const std::vector<Case>& cases) {
-    for (const Case& c : cases) {
+  void mergeNotesAndFiles(const std::vector<Case>& results) {
+    for (const Case& c : results) {
       notes.addAll(c.notes);
       files.addAll(c.files);
     }

@@ -97,12 +97,12 @@ TEST(RunSummary, ListsTheResolvedSceneFirstAndItselfLast) {
   std::filesystem::remove_all(folder);
 }
 
-TEST(RunSummary, AddCasesMergesNotesAndFilesInCaseOrder) {
+TEST(RunSummary, MergeNotesAndFilesInCaseOrder) {
   struct Case {
     std::vector<std::string> notes, files;
   };
   RunSummary s;
-  s.addCases(std::vector<Case>{{{"stopped early"}, {"a-tip.csv", "a.pvd"}}, {{"stopped early", "b: no period"}, {"b-tip.csv"}}});
+  s.mergeNotesAndFiles(std::vector<Case>{{{"stopped early"}, {"a-tip.csv", "a.pvd"}}, {{"stopped early", "b: no period"}, {"b-tip.csv"}}});
   EXPECT_EQ(s.notes.entries(), (std::vector<std::string>{"stopped early", "b: no period"}));
   EXPECT_EQ(s.files.entries(), (std::vector<std::string>{"scene.resolved.toml", "a-tip.csv", "a.pvd", "b-tip.csv"}));
 }
