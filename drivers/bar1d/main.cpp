@@ -14,6 +14,8 @@
 #include "analytic/FixedFreeBarImpact.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
+#include "core/Stopwatch.hpp"
+#include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/SceneDriver.hpp"
@@ -87,10 +89,45 @@ struct CaseResult {
   Real h, dt, criticalDt;
   long steps;
   Real errorU, errorV, maxErrorU;
-  double wallSeconds;
+  double setupSeconds, wallSeconds;  // wallSeconds: the time loop's
   std::string note;  // stability.allow_growth: what ran above a limit on purpose
   std::vector<std::string> files;  // the error series and profile written, relative to the output folder
+  Real orderU = std::nan(""), orderV = std::nan("");
+
+  CaseRecord record(Real endTime) const {
+    CaseRecord c;
+    c.name = std::to_string(nodes) + " nodes";
+    c.particles = nodes;
+    c.steps = steps;
+    c.timeStep = dt;
+    c.stableTimeStep = criticalDt;
+    c.simulatedTime = endTime;
+    c.setupSeconds = setupSeconds;
+    c.loopSeconds = wallSeconds;
+    c.errors = {{"relative_l2_u", errorU}, {"relative_l2_v", errorV}, {"max_relative_l2_u_over_time", maxErrorU}};
+    c.primaryError = "relative_l2_u";
+    return c;
+  }
 };
+
+// convergence.csv and the terminal table, one column each.
+CaseTable<CaseResult> convergenceTable() {
+  using R = const CaseResult&;
+  CaseTable<CaseResult> t;
+  t.column("nodes", [](R r) { return r.nodes; }, TerminalColumn("nodes", 6))
+      .column("h [m]", [](R r) { return r.h; }, TerminalColumn("h", 10))
+      .column("dt [s]", [](R r) { return r.dt; }, TerminalColumn("dt", 10))
+      .column("critical_dt [s]", [](R r) { return r.criticalDt; }, TerminalColumn("dt_crit", 12))
+      .column("steps", [](R r) { return r.steps; })
+      .column("relative_l2_u", [](R r) { return r.errorU; }, TerminalColumn("L2(u)", 12).precision(3))
+      .column("order_u", [](R r) { return r.orderU; }, TerminalColumn("order", 8).precision(3))
+      .column("relative_l2_v", [](R r) { return r.errorV; }, TerminalColumn("L2(v)", 12).precision(3))
+      .column("order_v", [](R r) { return r.orderV; }, TerminalColumn("order", 8).precision(3))
+      .column("max_relative_l2_u_over_time", [](R r) { return r.maxErrorU; },
+              TerminalColumn("max_t L2(u)", 12).precision(3))
+      .column("wall_time [s]", [](R r) { return r.wallSeconds; });
+  return t;
+}
 
 std::string describeMethod(const Study& study) {
   std::ostringstream s;
@@ -158,6 +195,7 @@ class ErrorSampler : public Observer {
 };
 
 CaseResult runCase(const Study& study, int nodeCount, const std::string& folder, bool writeSeries) {
+  const Stopwatch setup;
   const Scene& scene = study.scene;
   const Real x0 = scene.geometry.lower[0], length = scene.geometry.upper[0] - x0;
   const Real h = length / (nodeCount - 1);
@@ -205,11 +243,12 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
   TimeLoop loop;
   loop.add(monitor);
   loop.add(sampler, every);
+  const double setupSeconds = setup.seconds();
   const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
 
   const Errors e = sampler.errors(integrator->state());
   CaseResult result{nodeCount, h, dt, criticalDt, stats.steps, std::sqrt(e.u / e.uNorm), std::sqrt(e.v / e.vNorm),
-                    sampler.maxRelativeU(), stats.wallSeconds, note, {}};
+                    sampler.maxRelativeU(), setupSeconds, stats.wallSeconds, note, {}};
   if (writeSeries) {
     const std::string name = "nodes-" + std::to_string(nodeCount);
     const std::string stem = folder + "/" + name;
@@ -278,42 +317,28 @@ int main(int argc, char** argv) {
       results.push_back(runCase(study, study.nodes[r], folder, true));
       if (!cli.options().quiet) std::cerr << "  done " << study.nodes[r] << " nodes\n";
     }
-    AtomicFile table(folder + "/convergence.csv");
-    table.stream() << "nodes,h [m],dt [s],critical_dt [s],steps,relative_l2_u,order_u,relative_l2_v,order_v,"
-                      "max_relative_l2_u_over_time,wall_time [s]\n";
-    std::cout << std::right << std::setw(6) << "nodes" << std::setw(10) << "h" << std::setw(10) << "dt"
-              << std::setw(12) << "dt_crit" << std::setw(12) << "L2(u)" << std::setw(8) << "order" << std::setw(12)
-              << "L2(v)" << std::setw(8) << "order" << std::setw(12) << "max_t L2(u)" << '\n';
+    storeObservedOrders(results, &CaseResult::h, &CaseResult::errorU, &CaseResult::orderU);
+    storeObservedOrders(results, &CaseResult::h, &CaseResult::errorV, &CaseResult::orderV);
+    const CaseTable<CaseResult> table = convergenceTable();
+    table.writeCsv(folder + "/convergence.csv", results, 17);
+    table.print(std::cout, results);
     RunSummary summary;
     summary.program = kProgram;
     summary.scene = study.scene.info.name;
     summary.method = study.scene.method.name;
     summary.integrator = study.scene.integrator.name;
-    const std::vector<Real> ordersU = observedOrders(results, &CaseResult::h, &CaseResult::errorU);
-    const std::vector<Real> ordersV = observedOrders(results, &CaseResult::h, &CaseResult::errorV);
-    for (std::size_t i = 0; i < results.size(); ++i) {
-      const CaseResult& r = results[i];
-      const Real ou = ordersU[i], ov = ordersV[i];
-      table.stream() << r.nodes << ',' << r.h << ',' << r.dt << ',' << r.criticalDt << ',' << r.steps << ','
-                     << r.errorU << ',' << ou << ',' << r.errorV << ',' << ov << ',' << r.maxErrorU << ','
-                     << r.wallSeconds << '\n';
-      std::cout << std::setw(6) << r.nodes << std::setw(10) << std::setprecision(4) << r.h << std::setw(10) << r.dt
-                << std::setw(12) << r.criticalDt << std::setw(12) << std::setprecision(3) << r.errorU << std::setw(8)
-                << ou << std::setw(12) << r.errorV << std::setw(8) << ov << std::setw(12) << r.maxErrorU << '\n';
-      summary.particles = std::max<Index>(summary.particles, r.nodes);
-      summary.steps += r.steps;
-      summary.wallSeconds += r.wallSeconds;
+    for (const CaseResult& r : results) {
+      summary.addCase(r.record(study.scene.integrator.endTime));
       if (!r.note.empty()) summary.notes.add(r.note);
     }
-    table.commit();
+    summary.totalsFromCases();
     const CaseResult& finest = results.back();
     summary.timeStep = finest.dt;
     summary.errors.push_back({"relative_l2_u_finest", finest.errorU});
     summary.errors.push_back({"relative_l2_v_finest", finest.errorV});
     summary.errors.push_back({"max_relative_l2_u_over_time_finest", finest.maxErrorU});
     summary.figures.push_back({"critical_dt_first", results.front().criticalDt});
-    if (results.size() > 1)
-      summary.figures.push_back({"observed_order_u", ordersU.back()});
+    if (results.size() > 1) summary.figures.push_back({"observed_order_u", finest.orderU});
     summary.simulatedTime = study.scene.integrator.endTime;
     summary.notes.add("particles: nodes of the finest case; steps and wall time summed over all cases");
     summary.files.add("convergence.csv");

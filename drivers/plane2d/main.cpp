@@ -9,8 +9,9 @@
 #include "analysis/ConvergenceOrders.hpp"
 #include "analysis/InteriorStability.hpp"
 #include "analysis/MethodLatticeStencils.hpp"
-#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
+#include "core/Stopwatch.hpp"
+#include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/SceneDriver.hpp"
@@ -28,7 +29,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -76,8 +76,41 @@ struct CaseResult {
   Real h, dt, criticalDt;
   long steps;
   Real errorU, errorV;
-  double wallSeconds;
+  double setupSeconds, wallSeconds;  // wallSeconds: the time loop's
+  Real orderU = std::nan(""), orderV = std::nan("");
+
+  CaseRecord record(Real endTime) const {
+    CaseRecord c;
+    c.name = std::to_string(cells) + " cells";
+    c.particles = (cells + 1) * (cells + 1);
+    c.steps = steps;
+    c.timeStep = dt;
+    c.stableTimeStep = criticalDt;
+    c.simulatedTime = endTime;
+    c.setupSeconds = setupSeconds;
+    c.loopSeconds = wallSeconds;
+    c.errors = {{"relative_l2_u", errorU}, {"relative_l2_v", errorV}};
+    c.primaryError = "relative_l2_u";
+    return c;
+  }
 };
+
+// convergence.csv and the terminal table, one column each.
+CaseTable<CaseResult> convergenceTable() {
+  using R = const CaseResult&;
+  CaseTable<CaseResult> t;
+  t.column("cells", [](R r) { return r.cells; }, TerminalColumn("cells", 6))
+      .column("h [m]", [](R r) { return r.h; }, TerminalColumn("h", 10))
+      .column("dt [s]", [](R r) { return r.dt; }, TerminalColumn("dt", 11))
+      .column("critical_dt [s]", [](R r) { return r.criticalDt; })
+      .column("steps", [](R r) { return r.steps; })
+      .column("relative_l2_u", [](R r) { return r.errorU; }, TerminalColumn("L2(u)", 12).precision(3))
+      .column("order_u", [](R r) { return r.orderU; }, TerminalColumn("order", 8).precision(3))
+      .column("relative_l2_v", [](R r) { return r.errorV; }, TerminalColumn("L2(v)", 12).precision(3))
+      .column("order_v", [](R r) { return r.orderV; }, TerminalColumn("order", 8).precision(3))
+      .column("wall_time [s]", [](R r) { return r.wallSeconds; });
+  return t;
+}
 
 // Largest |eigenvalue| of K by power iteration on a(U) = -K U (zero loads), a fixed start.
 Real spectralRadius(ConstrainedCollocationSystem& system) {
@@ -101,6 +134,7 @@ Real spectralRadius(ConstrainedCollocationSystem& system) {
 }
 
 CaseResult runCase(const Scene& scene, int order, Real ratio, Real w, int cells, std::vector<std::string>& notes) {
+  const Stopwatch setup;
   const Vec2 lo(scene.geometry.lower[0], scene.geometry.lower[1]);
   const Real side = scene.geometry.upper[0] - lo[0];
   if (std::abs(scene.geometry.upper[1] - lo[1] - side) > 1e-12 * side)
@@ -144,6 +178,7 @@ CaseResult runCase(const Scene& scene, int order, Real ratio, Real w, int cells,
   StabilityMonitor monitor(scene.stability.options(2));
   TimeLoop loop;
   loop.add(monitor);
+  const double setupSeconds = setup.seconds();
   const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
 
   // Relative L2 errors on a 4x finer uniform grid (trapezoidal weights).
@@ -166,7 +201,7 @@ CaseResult runCase(const Scene& scene, int order, Real ratio, Real w, int cells,
     ev += weight[p] * (v.segment<2>(static_cast<Index>(p) * 2) - exact.v(x, s.time)).squaredNorm();
     nv += weight[p] * exact.v(x, s.time).squaredNorm();
   }
-  return {cells, h, dt, criticalDt, stats.steps, std::sqrt(eu / nu), std::sqrt(ev / nv), stats.wallSeconds};
+  return {cells, h, dt, criticalDt, stats.steps, std::sqrt(eu / nu), std::sqrt(ev / nv), setupSeconds, stats.wallSeconds};
 }
 
 // Before any step: the exact spectrum of the interior rows on a periodic lattice (at h = 1: with a / h
@@ -218,37 +253,23 @@ int main(int argc, char** argv) {
       results.push_back(runCase(scene, order, ratio, w, c, stabilityNotes));
       if (!cli.options().quiet) std::cerr << "  done " << c << " cells\n";
     }
-    AtomicFile table(folder + "/convergence.csv");
-    table.stream() << "cells,h [m],dt [s],critical_dt [s],steps,relative_l2_u,order_u,relative_l2_v,order_v,"
-                      "wall_time [s]\n";
-    std::cout << std::setw(6) << "cells" << std::setw(10) << "h" << std::setw(11) << "dt" << std::setw(12) << "L2(u)"
-              << std::setw(8) << "order" << std::setw(12) << "L2(v)" << std::setw(8) << "order" << '\n';
+    storeObservedOrders(results, &CaseResult::h, &CaseResult::errorU, &CaseResult::orderU);
+    storeObservedOrders(results, &CaseResult::h, &CaseResult::errorV, &CaseResult::orderV);
+    const CaseTable<CaseResult> table = convergenceTable();
+    table.writeCsv(folder + "/convergence.csv", results, 17);
+    table.print(std::cout, results);
     RunSummary summary;
     summary.program = kProgram;
     summary.scene = scene.info.name;
     summary.method = scene.method.name;
     summary.integrator = scene.integrator.name;
-    const std::vector<Real> ordersU = observedOrders(results, &CaseResult::h, &CaseResult::errorU);
-    const std::vector<Real> ordersV = observedOrders(results, &CaseResult::h, &CaseResult::errorV);
-    for (std::size_t i = 0; i < results.size(); ++i) {
-      const CaseResult& r = results[i];
-      const Real ou = ordersU[i], ov = ordersV[i];
-      table.stream() << r.cells << ',' << r.h << ',' << r.dt << ',' << r.criticalDt << ',' << r.steps << ','
-                     << r.errorU << ',' << ou << ',' << r.errorV << ',' << ov << ',' << r.wallSeconds << '\n';
-      std::cout << std::setw(6) << r.cells << std::setw(10) << std::setprecision(4) << r.h << std::setw(11) << r.dt
-                << std::setw(12) << std::setprecision(3) << r.errorU << std::setw(8) << ou << std::setw(12)
-                << r.errorV << std::setw(8) << ov << '\n';
-      summary.particles = std::max<Index>(summary.particles, (r.cells + 1) * (r.cells + 1));
-      summary.steps += r.steps;
-      summary.wallSeconds += r.wallSeconds;
-      if (i + 1 == results.size()) {
-        summary.timeStep = r.dt;
-        summary.errors.push_back({"relative_l2_u_finest", r.errorU});
-        summary.errors.push_back({"relative_l2_v_finest", r.errorV});
-        if (i > 0) summary.figures.push_back({"observed_order_u", ou});
-      }
-    }
-    table.commit();
+    for (const CaseResult& r : results) summary.addCase(r.record(scene.integrator.endTime));
+    summary.totalsFromCases();
+    const CaseResult& finest = results.back();
+    summary.timeStep = finest.dt;
+    summary.errors.push_back({"relative_l2_u_finest", finest.errorU});
+    summary.errors.push_back({"relative_l2_v_finest", finest.errorV});
+    if (results.size() > 1) summary.figures.push_back({"observed_order_u", finest.orderU});
     summary.notes.addAll(stabilityNotes);
     summary.simulatedTime = scene.integrator.endTime;
     summary.files.add("convergence.csv");
