@@ -2,6 +2,7 @@
 
 #include "analytic/SymmetricBarImpact.hpp"
 #include "core/AtomicFile.hpp"
+#include "core/Stopwatch.hpp"
 #include "io/vtk/VtkFrameWriter.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
 #include "observers/TimeLoop.hpp"
@@ -50,6 +51,7 @@ Real measuredFront(const std::vector<Real>& x, const std::vector<Real>& sigma, R
 }  // namespace
 
 CaseResult runCase(const Settings& settings, Real dx, const std::string& folder, bool writeFrames) {
+  const Stopwatch setup;
   CaseResult result;
   const ParticleSet<1> particles = twoBars(settings.halfLength, dx);
   result.dx = dx;
@@ -74,6 +76,7 @@ CaseResult runCase(const Settings& settings, Real dx, const std::string& folder,
     adapter.add(*frames);
     loop.add(adapter, settings.output.every);
   }
+  result.setupSeconds = setup.seconds();
   const RunStatistics stats = loop.run(*integrator, settings.endTime);
 
   // Errors at the end time, at the particles' current positions.
@@ -105,6 +108,8 @@ CaseResult runCase(const Settings& settings, Real dx, const std::string& folder,
   result.particles = n;
   result.steps = stats.steps;
   result.lastStep = integrator->stepSize();
+  // The step is cfl times the method's step criteria unless a fixed step was asked for.
+  if (settings.integration.fixedStep <= 0) result.stableStep = result.lastStep / settings.integration.cfl;
   result.meanNeighbours = system.meanNeighbourCount();
   result.l1Velocity = errorV / normV;
   result.l1Stress = errorS / normS;

@@ -6,6 +6,7 @@
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSphOptions.hpp"
 #include "study/SolidIntegration.hpp"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct CaseResult {
   Index particles = 0;
   long steps = 0;
   Real lastStep = 0;
+  Real stableStep = std::nan("");  // the method's step criteria at the last step (unknown for a fixed step)
   Real meanNeighbours = 0;
   Real l1Velocity = 0;          // ||v - v_exact||_1 / ||v_exact||_1 at the end time
   Real l1Stress = 0;            // ||sigma - sigma_exact||_1 / ||sigma_exact||_1
@@ -35,7 +37,9 @@ struct CaseResult {
   Real frontErrorOverDx = 0;    // (measured right front - c t) / dx
   Real balanceDrift = 0;        // EnergyLedger::largestBalanceDrift
   long framesWritten = 0;
-  double wallSeconds = 0;
+  double setupSeconds = 0;
+  double wallSeconds = 0;        // the time loop's
+  Real orderVelocity = std::nan(""), orderStress = std::nan("");
 };
 
 // "profile-<dx>.csv": x, v, v_exact, sigma, sigma_exact at the end time.

@@ -13,8 +13,8 @@
 #include "BarCase.hpp"
 
 #include "analysis/ConvergenceOrders.hpp"
-#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
+#include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/RunSummary.hpp"
@@ -24,7 +24,7 @@
 #include "study/UpdatedLagrangianSphSpec.hpp"
 
 #include <cmath>
-#include <iomanip>
+#include <sstream>
 #include <iostream>
 
 using namespace mfwave;
@@ -79,6 +79,45 @@ Settings readSettings(SceneReader& reader, Scene& scene) {
   return settings;
 }
 
+// cases.csv and the terminal table, one column each.
+CaseTable<CaseResult> casesTable() {
+  using R = const CaseResult&;
+  CaseTable<CaseResult> t;
+  t.column("dx [m]", [](R r) { return r.dx; }, TerminalColumn("dx", 9))
+      .column("particles", [](R r) { return r.particles; }, TerminalColumn("N", 7))
+      .column("steps", [](R r) { return r.steps; }, TerminalColumn("steps", 8))
+      .column("mean_neighbours", [](R r) { return r.meanNeighbours; })
+      .column("l1_velocity", [](R r) { return r.l1Velocity; }, TerminalColumn("L1(v)", 11))
+      .column("order_velocity", [](R r) { return r.orderVelocity; }, TerminalColumn("order", 7).precision(3))
+      .column("l1_stress", [](R r) { return r.l1Stress; }, TerminalColumn("L1(sig)", 11))
+      .column("order_stress", [](R r) { return r.orderStress; }, TerminalColumn("order", 7).precision(3))
+      .column("plateau_stress_error", [](R r) { return r.plateauStressError; }, TerminalColumn("plateau", 11))
+      .column("front_error_over_dx", [](R r) { return r.frontErrorOverDx; }, TerminalColumn("front/dx", 10))
+      .column("balance_drift", [](R r) { return r.balanceDrift; }, TerminalColumn("drift", 11))
+      .column("wall_time [s]", [](R r) { return r.wallSeconds; }, TerminalColumn("wall s", 9).precision(3));
+  return t;
+}
+
+CaseRecord caseRecord(const CaseResult& r, Real endTime) {
+  CaseRecord c;
+  std::ostringstream name;
+  name << "dx = " << r.dx;
+  c.name = name.str();
+  c.particles = r.particles;
+  c.steps = r.steps;
+  c.timeStep = r.lastStep;
+  c.stableTimeStep = r.stableStep;
+  c.simulatedTime = endTime;
+  c.setupSeconds = r.setupSeconds;
+  c.loopSeconds = r.wallSeconds;
+  c.errors = {{"l1_velocity", r.l1Velocity},
+              {"l1_stress", r.l1Stress},
+              {"plateau_stress_error", r.plateauStressError},
+              {"front_error_over_dx", r.frontErrorOverDx}};
+  c.primaryError = "l1_velocity";
+  return c;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -106,35 +145,17 @@ int main(int argc, char** argv) {
     summary.scene = scene.info.name;
     summary.method = scene.method.name;
     summary.integrator = settings.integration.integrator;
-    AtomicFile table(folder + "/cases.csv");
-    table.stream() << "dx [m],particles,steps,mean_neighbours,l1_velocity,order_velocity,l1_stress,order_stress,"
-                      "plateau_stress_error,front_error_over_dx,balance_drift,wall_time [s]\n";
-    std::cout << std::right << std::setw(9) << "dx" << std::setw(7) << "N" << std::setw(8) << "steps" << std::setw(11)
-              << "L1(v)" << std::setw(7) << "order" << std::setw(11) << "L1(sig)" << std::setw(7) << "order"
-              << std::setw(11) << "plateau" << std::setw(10) << "front/dx" << std::setw(11) << "drift" << std::setw(9)
-              << "wall s" << '\n';
-    const std::vector<Real> ordersV = observedOrders(results, &CaseResult::dx, &CaseResult::l1Velocity);
-    const std::vector<Real> ordersS = observedOrders(results, &CaseResult::dx, &CaseResult::l1Stress);
-    for (std::size_t i = 0; i < results.size(); ++i) {
-      const CaseResult& r = results[i];
-      const Real ov = ordersV[i], os = ordersS[i];
-      table.stream() << std::setprecision(10) << r.dx << ',' << r.particles << ',' << r.steps << ','
-                     << r.meanNeighbours << ',' << r.l1Velocity << ',' << ov << ',' << r.l1Stress << ',' << os << ','
-                     << r.plateauStressError << ',' << r.frontErrorOverDx << ',' << r.balanceDrift << ','
-                     << r.wallSeconds << '\n';
-      std::cout << std::setprecision(4) << std::setw(9) << r.dx << std::setw(7) << r.particles << std::setw(8)
-                << r.steps << std::setw(11) << r.l1Velocity << std::setw(7) << std::setprecision(3) << ov
-                << std::setw(11) << std::setprecision(4) << r.l1Stress << std::setw(7) << std::setprecision(3) << os
-                << std::setw(11) << std::setprecision(4) << r.plateauStressError << std::setw(10)
-                << r.frontErrorOverDx << std::setw(11) << r.balanceDrift << std::setw(9) << std::setprecision(3)
-                << r.wallSeconds << '\n';
-      summary.particles = std::max<Index>(summary.particles, r.particles);
-      summary.meanNeighbours = r.meanNeighbours;
-      summary.steps += r.steps;
-      summary.wallSeconds += r.wallSeconds;
+    storeObservedOrders(results, &CaseResult::dx, &CaseResult::l1Velocity, &CaseResult::orderVelocity);
+    storeObservedOrders(results, &CaseResult::dx, &CaseResult::l1Stress, &CaseResult::orderStress);
+    const CaseTable<CaseResult> table = casesTable();
+    table.writeCsv(folder + "/cases.csv", results, 10);
+    table.print(std::cout, results);
+    for (const CaseResult& r : results) {
+      summary.addCase(caseRecord(r, settings.endTime));
       summary.files.add(profileFileName(r.dx));
     }
-    table.commit();
+    summary.totalsFromCases();
+    summary.meanNeighbours = results.back().meanNeighbours;
     const CaseResult& finest = results.back();
     summary.timeStep = finest.lastStep;
     summary.simulatedTime = settings.endTime;
@@ -144,8 +165,8 @@ int main(int argc, char** argv) {
     summary.errors.push_back({"front_error_over_dx_finest", finest.frontErrorOverDx});
     summary.figures.push_back({"balance_drift_finest", finest.balanceDrift});
     if (results.size() > 1) {
-      summary.figures.push_back({"order_l1_velocity", ordersV.back()});
-      summary.figures.push_back({"order_l1_stress", ordersS.back()});
+      summary.figures.push_back({"order_l1_velocity", finest.orderVelocity});
+      summary.figures.push_back({"order_l1_stress", finest.orderStress});
     }
     summary.notes.add("particles: the finest case; steps and wall time summed over all cases");
     summary.notes.add("errors: relative L1 norms at the end time against SymmetricBarImpact; plateau error relative "

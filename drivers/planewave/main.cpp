@@ -12,11 +12,11 @@
 #include "analysis/DispersionSpectrum.hpp"
 #include "analysis/LatticeMethods.hpp"
 #include "analytic/PlaneWave.hpp"
-#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
 #include "integrators/IntegratorFactory.hpp"
 #include "integrators/StabilityLimit.hpp"
+#include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/RunSummary.hpp"
@@ -28,7 +28,6 @@
 #include <Eigen/SparseLU>
 
 #include <cmath>
-#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -91,6 +90,49 @@ struct Outcome {
   long steps = 0;
   Real dt = 0, criticalDt = 0, endTime = 0, error = 0, loopSeconds = 0, setupSeconds = 0;
 };
+
+// planewave.csv's one line: the settings and what they gave.
+struct Case {
+  Settings s;
+  Outcome out;
+
+  CaseRecord record() const {
+    CaseRecord c;
+    c.name = s.method + " " + std::to_string(s.dimension) + "-D, " + std::to_string(s.cells) + " cells, " +
+             s.integrator;
+    c.particles = out.particles;
+    c.steps = out.steps;
+    c.timeStep = out.dt;
+    c.stableTimeStep = out.criticalDt;
+    c.simulatedTime = out.endTime;
+    c.setupSeconds = out.setupSeconds;
+    c.loopSeconds = out.loopSeconds;
+    c.errors = {{"relative_l2_u", out.error}};
+    c.primaryError = "relative_l2_u";
+    return c;
+  }
+};
+
+CaseTable<Case> planeWaveTable() {
+  using R = const Case&;
+  CaseTable<Case> t;
+  t.column("method", [](R c) { return c.s.method; })
+      .column("dimension", [](R c) { return c.s.dimension; })
+      .column("cells", [](R c) { return c.s.cells; })
+      .column("particles", [](R c) { return c.out.particles; })
+      .column("direction", [](R c) { return c.s.direction; })
+      .column("polarisation", [](R c) { return c.s.polarisation; })
+      .column("integrator", [](R c) { return c.s.integrator; })
+      .column("cfl", [](R c) { return c.s.cfl; })
+      .column("dt", [](R c) { return c.out.dt; })
+      .column("critical_dt", [](R c) { return c.out.criticalDt; })
+      .column("steps", [](R c) { return c.out.steps; })
+      .column("end_time", [](R c) { return c.out.endTime; })
+      .column("relative_l2_u", [](R c) { return c.out.error; })
+      .column("setup_s", [](R c) { return c.out.setupSeconds; })
+      .column("loop_s", [](R c) { return c.out.loopSeconds; });
+  return t;
+}
 
 template <int D>
 Outcome run(const Settings& s) {
@@ -245,15 +287,8 @@ int main(int argc, char** argv) {
     else if (s.dimension == 2) out = run<2>(s);
     else out = run<3>(s);
 
-    AtomicFile table(folder + "/planewave.csv");
-    table.stream() << std::setprecision(10)
-                   << "method,dimension,cells,particles,direction,polarisation,integrator,cfl,dt,critical_dt,steps,"
-                      "end_time,relative_l2_u,setup_s,loop_s\n"
-                   << s.method << ',' << s.dimension << ',' << s.cells << ',' << out.particles << ',' << s.direction
-                   << ',' << s.polarisation << ',' << s.integrator << ',' << s.cfl << ',' << out.dt << ','
-                   << out.criticalDt << ',' << out.steps << ',' << out.endTime << ',' << out.error << ','
-                   << out.setupSeconds << ',' << out.loopSeconds << '\n';
-    table.commit();
+    const std::vector<Case> cases{{s, out}};
+    planeWaveTable().writeCsv(folder + "/planewave.csv", cases, 10);
     if (!opt.quiet)
       std::cout << s.method << " " << s.dimension << "-D, " << s.cells << " cells, " << s.wavelengths
               << " wavelengths along the " << s.direction << ", " << s.polarisation << ": " << s.integrator << " at "
@@ -269,6 +304,7 @@ int main(int argc, char** argv) {
     summary.timeStep = out.dt;
     summary.simulatedTime = out.endTime;
     summary.wallSeconds = wall.seconds();
+    summary.addCase(cases.front().record());
     summary.errors.push_back({"relative_l2_u", out.error});
     summary.figures.push_back({"critical_dt", out.criticalDt});
     summary.figures.push_back({"time_step", out.dt});
