@@ -18,8 +18,8 @@
 
 #include "LambCase.hpp"
 
-#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
+#include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/RunSummary.hpp"
@@ -161,57 +161,85 @@ Plan readPlan(SceneReader& reader) {
   return plan;
 }
 
-void writeCases(const std::string& path, const std::vector<CaseResult>& results) {
-  AtomicFile file(path);
-  std::ostream& out = file.stream();
-  out << "case,variant,smoothing_rate [1/s],spacing [m],h [m],particles,ghosts,mean_neighbours,operator_nonzeros,operator [MiB],"
-         "stable_step_estimate [s],stable_step_gershgorin [s],dt [s],steps,assembly [s],run [s],wall [s],"
-         "peak_memory [MiB],particle_steps_per_second,energy_final_fraction,energy_balance_drift";
-  for (const ProbeResult& p : results.front().probes)
-    for (const char* kind : {"raw", "reported"})
-      out << ',' << p.name << '_' << kind << "_relative_l2," << p.name << '_' << kind << "_peak_error,"
-          << p.name << '_' << kind << "_arrival_error [s]";
-  for (const ProbeResult& p : results.front().probes) out << ',' << p.name << "_kernel_floor_relative_l2";
-  out << '\n' << std::setprecision(8);
-  for (const CaseResult& r : results) {
-    out << r.settings.name << ',' << r.settings.method.variantName() << ',' << r.settings.method.smoothingRate << ','
-        << r.settings.geometry.spacing << ',' << r.smoothingLength << ',' << r.particles
-        << ',' << r.ghosts << ',' << r.meanNeighbours << ',' << r.operatorNonZeros << ',' << r.operatorMiB << ','
-        << r.stableStepEstimate << ',' << r.stableStepGershgorin << ',' << r.timeStep << ',' << r.steps << ','
-        << r.assemblySeconds << ',' << r.runSeconds << ',' << r.assemblySeconds + r.runSeconds << ','
-        << r.peakMemoryMiB << ',' << r.particleStepsPerSecond() << ',' << r.energyFinalFraction << ','
-        << r.energyBalanceDrift;
-    for (const ProbeResult& p : r.probes)
-      for (const SignalErrors* e : {&p.raw, &p.reported}) {
-        if (p.hasExact)
-          out << ',' << e->relativeL2 << ',' << e->peakError << ',' << e->arrivalError;
-        else
-          out << ",,,";
-      }
-    for (const ProbeResult& p : r.probes) out << ',' << p.kernelFloor;
-    out << '\n';
-  }
-  file.commit();
+// cases.csv and the terminal table, one column each; a group of columns per probe (the probes are
+// the same in every case).
+CaseTable<CaseResult> casesTable(const std::vector<ProbeResult>& probes) {
+  using R = const CaseResult&;
+  CaseTable<CaseResult> t;
+  t.column("case", [](R r) { return r.settings.name; }, TerminalColumn("case", 16).left())
+      .column("variant", [](R r) { return r.settings.method.variantName(); })
+      .column("smoothing_rate [1/s]", [](R r) { return r.settings.method.smoothingRate; })
+      .column("spacing [m]", [](R r) { return r.settings.geometry.spacing; }, TerminalColumn("dx", 8))
+      .column("h [m]", [](R r) { return r.smoothingLength; })
+      .column("particles", [](R r) { return r.particles; }, TerminalColumn("particles", 10))
+      .column("ghosts", [](R r) { return r.ghosts; })
+      .column("mean_neighbours", [](R r) { return r.meanNeighbours; })
+      .column("operator_nonzeros", [](R r) { return r.operatorNonZeros; })
+      .column("operator [MiB]", [](R r) { return r.operatorMiB; })
+      .column("stable_step_estimate [s]", [](R r) { return r.stableStepEstimate; })
+      .column("stable_step_gershgorin [s]", [](R r) { return r.stableStepGershgorin; })
+      .column("dt [s]", [](R r) { return r.timeStep; }, TerminalColumn("dt", 9))
+      .column("steps", [](R r) { return r.steps; }, TerminalColumn("steps", 7))
+      .column("assembly [s]", [](R r) { return r.assemblySeconds; })
+      .column("run [s]", [](R r) { return r.runSeconds; })
+      .column("wall [s]", [](R r) { return r.assemblySeconds + r.runSeconds; }, TerminalColumn("wall[s]", 9).precision(3))
+      .column("peak_memory [MiB]", [](R r) { return r.peakMemoryMiB; }, TerminalColumn("MiB", 9))
+      .column("particle_steps_per_second", [](R r) { return r.particleStepsPerSecond(); })
+      .column("energy_final_fraction", [](R r) { return r.energyFinalFraction; })
+      .column("energy_balance_drift", [](R r) { return r.energyBalanceDrift; });
+  for (std::size_t k = 0; k < probes.size(); ++k)
+    for (const bool reported : {false, true}) {
+      const std::string stem = probes[k].name + (reported ? "_reported" : "_raw");
+      const auto errors = [k, reported](R r) -> const SignalErrors& {
+        return reported ? r.probes[k].reported : r.probes[k].raw;
+      };
+      t.column(stem + "_relative_l2", [k, errors](R r) { return cellIf(r.probes[k].hasExact, errors(r).relativeL2); })
+          .column(stem + "_peak_error", [k, errors](R r) { return cellIf(r.probes[k].hasExact, errors(r).peakError); })
+          .column(stem + "_arrival_error [s]",
+                  [k, errors](R r) { return cellIf(r.probes[k].hasExact, errors(r).arrivalError); });
+    }
+  for (std::size_t k = 0; k < probes.size(); ++k)
+    t.column(probes[k].name + "_kernel_floor_relative_l2", [k](R r) { return r.probes[k].kernelFloor; });
+  // The terminal's probe columns: reported / raw L2, and the reported peak error.
+  for (std::size_t k = 0; k < probes.size(); ++k)
+    t.terminalOnly(TerminalColumn(probes[k].name + " L2", 14),
+                   [k](R r) -> TableCell {
+                     const ProbeResult& p = r.probes[k];
+                     if (!p.hasExact) return std::string("-");
+                     std::ostringstream l2;
+                     l2 << std::setprecision(3) << p.reported.relativeL2 << '/' << p.raw.relativeL2;
+                     return l2.str();
+                   })
+        .terminalOnly(TerminalColumn("peak", 9).precision(3), [k](R r) {
+          return r.probes[k].hasExact ? r.probes[k].reported.peakError : std::nan("");
+        });
+  return t;
 }
 
-void printTable(std::ostream& out, const std::vector<CaseResult>& results) {
-  out << std::left << std::setw(16) << "case" << std::right << std::setw(8) << "dx" << std::setw(10) << "particles"
-      << std::setw(9) << "dt" << std::setw(7) << "steps" << std::setw(9) << "wall[s]" << std::setw(9) << "MiB";
-  for (const ProbeResult& p : results.front().probes) out << std::setw(14) << (p.name + " L2") << std::setw(9) << "peak";
-  out << "   (reported / raw L2; reported = deconvolved for the published variant)\n";
-  for (const CaseResult& r : results) {
-    out << std::left << std::setw(16) << r.settings.name << std::right << std::setprecision(4) << std::setw(8)
-        << r.settings.geometry.spacing << std::setw(10) << r.particles << std::setw(9) << r.timeStep << std::setw(7)
-        << r.steps << std::setw(9) << std::setprecision(3) << r.assemblySeconds + r.runSeconds << std::setw(9)
-        << std::setprecision(4) << r.peakMemoryMiB;
-    for (const ProbeResult& p : r.probes) {
-      std::ostringstream l2;
-      l2 << std::setprecision(3) << p.reported.relativeL2 << '/' << p.raw.relativeL2;
-      out << std::setw(14) << (p.hasExact ? l2.str() : "-") << std::setw(9) << std::setprecision(3)
-          << (p.hasExact ? p.reported.peakError : std::nan(""));
+// The case in the layout every tool reads; its primary error is the largest reported relative L2
+// error over the probes that have an exact response.
+CaseRecord caseRecord(const CaseResult& r, Real endTime) {
+  CaseRecord c;
+  c.name = r.settings.name;
+  c.particles = r.particles;
+  c.steps = r.steps;
+  c.timeStep = r.timeStep;
+  c.stableTimeStep = r.stableStepEstimate;
+  c.simulatedTime = endTime;
+  c.setupSeconds = r.assemblySeconds;
+  c.loopSeconds = r.runSeconds;
+  c.peakMemoryMiB = r.peakMemoryMiB;
+  Real largest = -1;
+  for (const ProbeResult& p : r.probes)
+    if (p.hasExact) {
+      c.errors.push_back({p.name + "_relative_l2", p.reported.relativeL2});
+      largest = std::max(largest, p.reported.relativeL2);
     }
-    out << '\n';
+  if (largest >= 0) {
+    c.errors.push_back({"largest_relative_l2", largest});
+    c.primaryError = "largest_relative_l2";
   }
+  return c;
 }
 
 }  // namespace
@@ -234,8 +262,10 @@ int main(int argc, char** argv) {
       if (!cli.options().quiet)
         std::cerr << "  done " << settings.name << " (" << results.back().particles << " particles)\n";
     }
-    writeCases(folder + "/cases.csv", results);
-    printTable(std::cout, results);
+    const CaseTable<CaseResult> table = casesTable(results.front().probes);
+    table.writeCsv(folder + "/cases.csv", results, 8);
+    std::cout << "(probe L2: reported / raw; reported = deconvolved for the published variant)\n";
+    table.print(std::cout, results);
 
     const CaseResult& paper = results.front();  // the scene's variant at its spacing
     RunSummary summary;
@@ -249,6 +279,7 @@ int main(int argc, char** argv) {
     summary.timeStep = paper.timeStep;
     summary.simulatedTime = plan.study.scene.integrator.endTime;
     for (const CaseResult& r : results) {
+      summary.addCase(caseRecord(r, plan.study.scene.integrator.endTime));
       summary.steps += r.steps;
       summary.wallSeconds += r.assemblySeconds + r.runSeconds;
     }

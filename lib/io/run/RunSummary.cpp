@@ -48,7 +48,7 @@ void RunSummary::addCase(CaseRecord record) {
                    [&](const auto& e) { return e.first == record.primaryError; }))
     throw Error("RunSummary::addCase: the primary error '" + record.primaryError + "' of case '" + record.name +
                 "' is not one of its errors");
-  record.peakMemoryMiB = mfwave::peakMemoryMiB();
+  if (std::isnan(record.peakMemoryMiB)) record.peakMemoryMiB = mfwave::peakMemoryMiB();
   cases.push_back(std::move(record));
 }
 

@@ -54,7 +54,8 @@ struct CaseRecord {
   // Named errors against the reference; `primaryError` names the one a tool ranks the case by.
   std::vector<std::pair<std::string, Real>> errors;
   std::string primaryError;
-  double peakMemoryMiB = kUnknown;      // the process's peak so far when the case was added
+  double peakMemoryMiB = kUnknown;      // the process's peak when the case ended (cases run smallest
+                                        // first); addCase fills in the peak so far if unknown
 
   double particleStepsPerSecond() const;  // particles x steps / loop seconds
 };
@@ -84,7 +85,7 @@ struct RunSummary {
 
   RunSummary();
 
-  // Appends `record` with the process's peak memory so far; checks that its primary error is one
+  // Appends `record` (with the process's peak memory so far if it has none); checks that its primary error is one
   // of its errors (a programming error otherwise).
   void addCase(CaseRecord record);
   // The run's totals from its cases, for a study whose cases run one after another: particles of
