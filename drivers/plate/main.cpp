@@ -27,8 +27,8 @@
 #include "PlateModes.hpp"
 
 #include "analysis/RichardsonExtrapolation.hpp"
-#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
+#include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/RunSummary.hpp"
@@ -292,31 +292,73 @@ const char* methodName(PlateMethod method) {
   return method == PlateMethod::VeryWeak ? "very_weak_sph" : "updated_lagrangian_sph";
 }
 
-void writeCases(const std::string& path, const std::vector<PlateCaseResult>& results) {
-  AtomicFile file(path);
-  std::ostream& out = file.stream();
-  out << "case,method,H_over_dp,dp [m],V_f,particles,fixed_particles,h [m],mean_neighbours,neighbour_rebuilds,steps,"
-         "mean_dt [s],end_time [s],setup [s],run [s],wall [s],particle_steps_per_second,period [s],half_periods,"
-         "periods_run,early_period [s],shortest_period [s],longest_period [s],thin_period [s],timoshenko_period "
-         "[s],thin_error,timoshenko_error,tip_start_velocity [m/s],"
-         "first_amplitude [m],expected_amplitude [m],first_amplitude_ratio,last_amplitude [m],energy_drift,"
-         "viscous_fraction,artificial_stress_fraction,largest_zigzag,largest_zigzag_energy,smallest_spacing_ratio\n";
-  out << std::setprecision(8);
-  for (const PlateCaseResult& r : results) {
-    const PlateCaseSettings& s = r.settings;
-    out << s.name << ',' << methodName(s.method) << ',' << s.rows << ',' << r.spacing << ',' << s.velocityFactor << ','
-        << r.particles << ',' << r.fixedParticles << ',' << r.smoothingLength << ',' << r.meanNeighbours << ','
-        << r.neighbourRebuilds << ',' << r.steps << ',' << r.meanStep << ',' << s.endTime << ',' << r.setupSeconds
-        << ',' << r.runSeconds << ',' << r.setupSeconds + r.runSeconds << ',' << r.particleStepsPerSecond() << ','
-        << r.tip.period << ',' << r.tip.halfPeriods << ',' << r.periodsRun() << ','
-        << r.tip.earlyPeriod(PlateCaseResult::earlyPeriods) << ',' << r.tip.shortestPeriod() << ','
-        << r.tip.longestPeriod() << ',' << r.thinPeriod << ',' << r.timoshenkoPeriod << ',' << r.thinError() << ','
-        << r.timoshenkoError() << ',' << r.tipStartVelocity << ',' << r.tip.firstAmplitude() << ','
-        << r.expectedAmplitude << ',' << r.tip.firstAmplitude() / r.expectedAmplitude << ',' << r.tip.lastAmplitude()
-        << ',' << r.energyDrift << ',' << r.viscousFraction << ',' << r.artificialStressFraction << ','
-        << r.largestZigzag << ',' << r.largestZigzagEnergy << ',' << r.smallestSpacingRatio << '\n';
-  }
-  file.commit();
+// cases.csv and the terminal table, one column each.
+CaseTable<PlateCaseResult> casesTable() {
+  using R = const PlateCaseResult&;
+  CaseTable<PlateCaseResult> t;
+  t.column("case", [](R r) { return r.settings.name; }, TerminalColumn("case", 20).left())
+      .column("method", [](R r) { return methodName(r.settings.method); })
+      .column("H_over_dp", [](R r) { return r.settings.rows; }, TerminalColumn("H/dp", 6))
+      .column("dp [m]", [](R r) { return r.spacing; })
+      .column("V_f", [](R r) { return r.settings.velocityFactor; })
+      .column("particles", [](R r) { return r.particles; }, TerminalColumn("particles", 10))
+      .column("fixed_particles", [](R r) { return r.fixedParticles; })
+      .column("h [m]", [](R r) { return r.smoothingLength; })
+      .column("mean_neighbours", [](R r) { return r.meanNeighbours; })
+      .column("neighbour_rebuilds", [](R r) { return r.neighbourRebuilds; })
+      .column("steps", [](R r) { return r.steps; }, TerminalColumn("steps", 8))
+      .column("mean_dt [s]", [](R r) { return r.meanStep; })
+      .column("end_time [s]", [](R r) { return r.settings.endTime; })
+      .column("setup [s]", [](R r) { return r.setupSeconds; })
+      .column("run [s]", [](R r) { return r.runSeconds; })
+      .column("wall [s]", [](R r) { return r.setupSeconds + r.runSeconds; }, TerminalColumn("wall[s]", 9).precision(3))
+      .column("particle_steps_per_second", [](R r) { return r.particleStepsPerSecond(); })
+      .column("period [s]", [](R r) { return r.tip.period; }, TerminalColumn("period", 10).precision(5))
+      .column("half_periods", [](R r) { return r.tip.halfPeriods; })
+      .column("periods_run", [](R r) { return r.periodsRun(); }, TerminalColumn("periods", 8).precision(3))
+      .column("early_period [s]", [](R r) { return r.tip.earlyPeriod(PlateCaseResult::earlyPeriods); },
+              TerminalColumn("early", 9))
+      .terminalOnly(TerminalColumn("vs thin", 8).precision(3).titledIn(9).followedBy("%"),
+                    [](R r) { return 100 * r.thinError(); })
+      .terminalOnly(TerminalColumn("vs Tim.", 8).precision(3).titledIn(9).followedBy("%"),
+                    [](R r) { return 100 * r.timoshenkoError(); })
+      .column("shortest_period [s]", [](R r) { return r.tip.shortestPeriod(); })
+      .column("longest_period [s]", [](R r) { return r.tip.longestPeriod(); })
+      .column("thin_period [s]", [](R r) { return r.thinPeriod; })
+      .column("timoshenko_period [s]", [](R r) { return r.timoshenkoPeriod; })
+      .column("thin_error", [](R r) { return r.thinError(); })
+      .column("timoshenko_error", [](R r) { return r.timoshenkoError(); })
+      .column("tip_start_velocity [m/s]", [](R r) { return r.tipStartVelocity; })
+      .column("first_amplitude [m]", [](R r) { return r.tip.firstAmplitude(); }, TerminalColumn("amplitude", 10))
+      .column("expected_amplitude [m]", [](R r) { return r.expectedAmplitude; })
+      .column("first_amplitude_ratio", [](R r) { return r.tip.firstAmplitude() / r.expectedAmplitude; },
+              TerminalColumn("/ expect", 9))
+      .column("last_amplitude [m]", [](R r) { return r.tip.lastAmplitude(); })
+      .column("energy_drift", [](R r) { return r.energyDrift; }, TerminalColumn("drift", 10).precision(3))
+      .column("viscous_fraction", [](R r) { return r.viscousFraction; })
+      .column("artificial_stress_fraction", [](R r) { return r.artificialStressFraction; })
+      .column("largest_zigzag", [](R r) { return r.largestZigzag; })
+      .column("largest_zigzag_energy", [](R r) { return r.largestZigzagEnergy; },
+              TerminalColumn("zz energy", 10).precision(3))
+      .column("smallest_spacing_ratio", [](R r) { return r.smallestSpacingRatio; });
+  return t;
+}
+
+// The case in the layout every tool reads; ranked by the size of its period error against Timoshenko.
+CaseRecord caseRecord(const PlateCaseResult& r) {
+  CaseRecord c;
+  c.name = r.settings.name;
+  c.particles = r.particles;
+  c.steps = r.steps;
+  c.timeStep = r.meanStep;
+  c.simulatedTime = r.settings.endTime;
+  c.setupSeconds = r.setupSeconds;
+  c.loopSeconds = r.runSeconds;
+  c.errors = {{"period_error_thin", r.thinError()},
+              {"period_error_timoshenko", r.timoshenkoError()},
+              {"abs_period_error_timoshenko", std::abs(r.timoshenkoError())}};
+  c.primaryError = "abs_period_error_timoshenko";
+  return c;
 }
 
 // Prints and records (summary errors and figures under `prefix`) the observed order and the
@@ -342,29 +384,22 @@ void reportConvergence(const std::vector<ConvergenceSample>& samples, const std:
                     ", limit from the two finest");
 }
 
-void writeModes(const std::string& path, const std::vector<PlateModesResult>& modes, Real timoshenko) {
-  AtomicFile file(path);
-  std::ostream& out = file.stream();
-  out << "H_over_dp,unknowns,first_period [s],timoshenko_error,second_period [s],largest_growth_rate [1/s],"
-         "zero_modes,seconds\n";
-  out << std::setprecision(8);
-  for (const PlateModesResult& m : modes)
-    out << m.rows << ',' << m.unknowns << ',' << m.firstPeriod << ',' << m.firstPeriod / timoshenko - 1 << ','
-        << m.secondPeriod << ',' << m.largestGrowthRate << ',' << m.zeroModes << ',' << m.seconds << '\n';
-  file.commit();
-}
-
-void printModes(std::ostream& out, const std::vector<PlateModesResult>& modes, Real timoshenko) {
-  out << "linearised about rest (no amplitude, no artificial terms, no time integration):\n";
-  out << std::left << std::setw(8) << "H/dp" << std::right << std::setw(10) << "unknowns" << std::setw(12)
-      << "1st period" << std::setw(9) << "vs Tim." << std::setw(12) << "2nd period" << std::setw(12) << "growth"
-      << std::setw(8) << "zero" << std::setw(9) << "wall[s]" << '\n';
-  for (const PlateModesResult& m : modes)
-    out << std::left << std::setw(8) << m.rows << std::right << std::setw(10) << m.unknowns << std::setw(12)
-        << std::setprecision(5) << m.firstPeriod << std::setw(8) << std::setprecision(3)
-        << 100 * (m.firstPeriod / timoshenko - 1) << '%' << std::setw(12) << std::setprecision(5) << m.secondPeriod
-        << std::setw(12) << std::setprecision(3) << m.largestGrowthRate << std::setw(8) << m.zeroModes << std::setw(9)
-        << m.seconds << '\n';
+// modes.csv and its terminal table.
+CaseTable<PlateModesResult> modesTable(Real timoshenko) {
+  using R = const PlateModesResult&;
+  CaseTable<PlateModesResult> t;
+  t.column("H_over_dp", [](R m) { return m.rows; }, TerminalColumn("H/dp", 8).left())
+      .column("unknowns", [](R m) { return m.unknowns; }, TerminalColumn("unknowns", 10))
+      .column("first_period [s]", [](R m) { return m.firstPeriod; }, TerminalColumn("1st period", 12).precision(5))
+      .column("timoshenko_error", [timoshenko](R m) { return m.firstPeriod / timoshenko - 1; })
+      .terminalOnly(TerminalColumn("vs Tim.", 8).precision(3).titledIn(9).followedBy("%"),
+                    [timoshenko](R m) { return 100 * (m.firstPeriod / timoshenko - 1); })
+      .column("second_period [s]", [](R m) { return m.secondPeriod; }, TerminalColumn("2nd period", 12).precision(5))
+      .column("largest_growth_rate [1/s]", [](R m) { return m.largestGrowthRate; },
+              TerminalColumn("growth", 12).precision(3))
+      .column("zero_modes", [](R m) { return m.zeroModes; }, TerminalColumn("zero", 8))
+      .column("seconds", [](R m) { return m.seconds; }, TerminalColumn("wall[s]", 9).precision(3));
+  return t;
 }
 
 void printTable(std::ostream& out, const std::vector<PlateCaseResult>& results) {
@@ -376,21 +411,7 @@ void printTable(std::ostream& out, const std::vector<PlateCaseResult>& results) 
       << PlateCaseResult::earlyPeriods
       << " periods; amplitude: first peak of the tip, / expect: over"
          " v_tip(0) T / (2 pi)\n";
-  out << std::left << std::setw(20) << "case" << std::right << std::setw(6) << "H/dp" << std::setw(10) << "particles"
-      << std::setw(8) << "steps" << std::setw(9) << "wall[s]" << std::setw(10) << "period" << std::setw(8) << "periods"
-      << std::setw(9) << "early" << std::setw(9) << "vs thin" << std::setw(9) << "vs Tim." << std::setw(10)
-      << "amplitude" << std::setw(9) << "/ expect" << std::setw(10) << "drift" << std::setw(10) << "zz energy" << '\n';
-  for (const PlateCaseResult& r : results) {
-    out << std::left << std::setw(20) << r.settings.name << std::right << std::setw(6) << r.settings.rows
-        << std::setw(10) << r.particles << std::setw(8) << r.steps << std::setw(9) << std::setprecision(3)
-        << r.setupSeconds + r.runSeconds << std::setw(10) << std::setprecision(5) << r.tip.period << std::setw(8)
-        << std::setprecision(3) << r.periodsRun() << std::setw(9) << std::setprecision(4)
-        << r.tip.earlyPeriod(PlateCaseResult::earlyPeriods) << std::setw(9) << std::setprecision(3)
-        << 100 * r.thinError() << '%' << std::setw(8) << 100 * r.timoshenkoError() << '%' << std::setw(10)
-        << std::setprecision(4) << r.tip.firstAmplitude() << std::setw(9) << std::setprecision(4)
-        << r.tip.firstAmplitude() / r.expectedAmplitude << std::setw(10) << std::setprecision(3) << r.energyDrift
-        << std::setw(10) << r.largestZigzagEnergy << '\n';
-  }
+  casesTable().print(out, results);
 }
 
 }  // namespace
@@ -417,7 +438,7 @@ int main(int argc, char** argv) {
         std::cerr << "  done " << settings.name << " (" << results.back().particles << " particles, "
                   << results.back().steps << " steps)\n";
     }
-    writeCases(folder + "/cases.csv", results);
+    casesTable().writeCsv(folder + "/cases.csv", results, 8);
     printTable(std::cout, results);
 
     const PlateCaseResult& main = results.front();
@@ -432,6 +453,7 @@ int main(int argc, char** argv) {
     summary.timeStep = main.meanStep;
     summary.simulatedTime = main.settings.endTime;
     for (const PlateCaseResult& r : results) {
+      summary.addCase(caseRecord(r));
       summary.steps += r.steps;
       summary.wallSeconds += r.setupSeconds + r.runSeconds;
     }
@@ -473,8 +495,10 @@ int main(int argc, char** argv) {
         if (!cli.options().quiet)
           std::cerr << "  done linearised modes at H/dp = " << rows << " (" << modes.back().unknowns << " unknowns)\n";
       }
-      writeModes(folder + "/modes.csv", modes, main.timoshenkoPeriod);
-      printModes(std::cout, modes, main.timoshenkoPeriod);
+      const CaseTable<PlateModesResult> modeTable = modesTable(main.timoshenkoPeriod);
+      modeTable.writeCsv(folder + "/modes.csv", modes, 8);
+      std::cout << "linearised about rest (no amplitude, no artificial terms, no time integration):\n";
+      modeTable.print(std::cout, modes);
       std::vector<ConvergenceSample> modeSamples;
       for (const PlateModesResult& m : modes) {
         const std::string c = "linearised_Hdp" + std::to_string(m.rows);
