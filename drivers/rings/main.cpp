@@ -22,8 +22,8 @@
 
 #include "RingsCase.hpp"
 
-#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
+#include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/RunSummary.hpp"
@@ -131,79 +131,114 @@ Plan readPlan(SceneReader& reader) {
   return plan;
 }
 
-void writeCases(const std::string& path, const std::vector<CaseResult>& results, Real linkDistance) {
-  AtomicFile file(path);
-  std::ostream& out = file.stream();
-  out << "case,artificial_stress,spacing [m],h [m],particles,left_particles,c0 [m/s],approach_speed [m/s],"
-         "mean_neighbours,neighbour_rebuilds,steps,end_time [s],first_step [s],smallest_step [s],mean_step [s],"
-         "rhs_evaluations,setup [s],run [s],particle_steps_per_second,peak_memory [MiB],"
-         "kinetic_start [J],kinetic_end [J],strain_end [J],internal_end [J],viscous_dissipation_end [J],"
-         "artificial_stress_work_end [J],load_work_end [J],largest_balance_drift,final_balance_drift,"
-         "largest_zigzag,first_zigzag_time [s],smallest_spacing_ratio,final_spacing_ratio,fragments,stray_particles,"
-         "largest_fragments,links,torn_links,vx_left_start [m/s],vx_right_start [m/s],vx_left_end [m/s],vx_right_end "
-         "[m/s],"
-         "restitution_left,restitution_right,support_radius [m],contact_time [s],separation_time [s],smallest_gap [m],"
-         "link_distance [dp],failure\n"
-      << std::setprecision(8);
-  for (const CaseResult& r : results) {
-    std::string sizes;
-    for (std::size_t k = 0; k < r.fragmentSizes.size(); ++k)
-      sizes += (k ? " " : "") + std::to_string(r.fragmentSizes[k]);
-    std::string failure = r.failure;
-    std::replace(failure.begin(), failure.end(), ',', ';');
-    std::replace(failure.begin(), failure.end(), '\n', ' ');
-    const UpdatedLagrangianSphEnergy& e = r.finalEnergy;
-    out << r.settings.name << ',' << (r.settings.artificialStress ? "true" : "false") << ',' << r.spacing << ','
-        << r.smoothingLength << ',' << r.particles << ',' << r.leftParticles << ',' << r.soundSpeed << ','
-        << r.approachSpeed << ',' << r.meanNeighbours << ',' << r.neighbourRebuilds << ',' << r.steps << ','
-        << r.endTime << ',' << r.firstStep << ',' << r.smallestStep << ',' << r.meanStep << ',' << r.rhsEvaluations
-        << ',' << r.setupSeconds << ',' << r.runSeconds << ',' << r.particleStepsPerSecond() << ',' << r.peakMemoryMiB
-        << ',' << r.initialEnergy.kinetic << ',' << e.kinetic << ',' << e.strain << ',' << e.internal << ','
-        << e.viscousDissipation << ',' << e.artificialStressWork << ',' << e.loadWork << ',' << r.largestBalanceDrift
-        << ',' << r.finalBalanceDrift << ',' << r.largestZigzag << ',' << r.firstZigzagTime << ','
-        << r.smallestSpacingRatio << ',' << r.finalSpacingRatio << ',' << r.fragments << ',' << r.strayParticles << ','
-        << sizes << ',' << r.links << ',' << r.tornLinks << ',' << r.leftVelocityStart << ',' << r.rightVelocityStart
-        << ',' << r.leftVelocityEnd << ',' << r.rightVelocityEnd << ',' << r.restitutionLeft << ','
-        << r.restitutionRight << ',' << r.supportRadius << ',' << r.contactTime << ',' << r.separationTime << ','
-        << r.smallestGap << ',' << linkDistance << ',' << failure << '\n';
-  }
-  file.commit();
+// cases.csv and the two terminal tables (the collision, the energy), one column each.
+struct RingsTables {
+  CaseTable<CaseResult> cases, energy;
+};
+
+RingsTables ringsTables(Real linkDistance, Real zigzagThreshold) {
+  using R = const CaseResult&;
+  RingsTables t;
+  CaseTable<CaseResult>& c = t.cases;
+  c.column("case", [](R r) { return r.settings.name; }, TerminalColumn("case", 22).left())
+      .column("artificial_stress", [](R r) { return r.settings.artificialStress ? "true" : "false"; })
+      .column("spacing [m]", [](R r) { return r.spacing; })
+      .column("h [m]", [](R r) { return r.smoothingLength; })
+      .column("particles", [](R r) { return r.particles; }, TerminalColumn("particles", 10))
+      .column("left_particles", [](R r) { return r.leftParticles; })
+      .column("c0 [m/s]", [](R r) { return r.soundSpeed; })
+      .column("approach_speed [m/s]", [](R r) { return r.approachSpeed; })
+      .column("mean_neighbours", [](R r) { return r.meanNeighbours; })
+      .column("neighbour_rebuilds", [](R r) { return r.neighbourRebuilds; })
+      .column("steps", [](R r) { return r.steps; }, TerminalColumn("steps", 8))
+      .terminalOnly(TerminalColumn("wall[s]", 9).precision(3), [](R r) { return r.setupSeconds + r.runSeconds; })
+      .column("end_time [s]", [](R r) { return r.endTime; })
+      .column("first_step [s]", [](R r) { return r.firstStep; })
+      .column("smallest_step [s]", [](R r) { return r.smallestStep; })
+      .column("mean_step [s]", [](R r) { return r.meanStep; })
+      .column("rhs_evaluations", [](R r) { return r.rhsEvaluations; })
+      .column("setup [s]", [](R r) { return r.setupSeconds; })
+      .column("run [s]", [](R r) { return r.runSeconds; })
+      .column("particle_steps_per_second", [](R r) { return r.particleStepsPerSecond(); },
+              TerminalColumn("p-steps/s", 11).precision(3))
+      .column("peak_memory [MiB]", [](R r) { return r.peakMemoryMiB; })
+      .column("kinetic_start [J]", [](R r) { return r.initialEnergy.kinetic; })
+      .column("kinetic_end [J]", [](R r) { return r.finalEnergy.kinetic; })
+      .column("strain_end [J]", [](R r) { return r.finalEnergy.strain; })
+      .column("internal_end [J]", [](R r) { return r.finalEnergy.internal; })
+      .column("viscous_dissipation_end [J]", [](R r) { return r.finalEnergy.viscousDissipation; })
+      .column("artificial_stress_work_end [J]", [](R r) { return r.finalEnergy.artificialStressWork; })
+      .column("load_work_end [J]", [](R r) { return r.finalEnergy.loadWork; })
+      .column("largest_balance_drift", [](R r) { return r.largestBalanceDrift; })
+      .column("final_balance_drift", [](R r) { return r.finalBalanceDrift; })
+      .column("largest_zigzag", [](R r) { return r.largestZigzag; })
+      .column("first_zigzag_time [s]", [](R r) { return r.firstZigzagTime; })
+      .column("smallest_spacing_ratio", [](R r) { return r.smallestSpacingRatio; })
+      .column("final_spacing_ratio", [](R r) { return r.finalSpacingRatio; })
+      .column("fragments", [](R r) { return r.fragments; }, TerminalColumn("fragments", 11))
+      .column("stray_particles", [](R r) { return r.strayParticles; }, TerminalColumn("stray", 7))
+      .column("largest_fragments",
+              [](R r) {
+                std::string sizes;
+                for (std::size_t k = 0; k < r.fragmentSizes.size(); ++k)
+                  sizes += (k ? " " : "") + std::to_string(r.fragmentSizes[k]);
+                return sizes;
+              })
+      .column("links", [](R r) { return r.links; })
+      .column("torn_links", [](R r) { return r.tornLinks; }, TerminalColumn("torn", 7))
+      .terminalOnly(TerminalColumn("rebound L/R", 16),
+                    [](R r) {
+                      std::ostringstream rebound;
+                      rebound << std::setprecision(3) << r.restitutionLeft << '/' << r.restitutionRight;
+                      return rebound.str();
+                    })
+      .terminalOnly(TerminalColumn("min dx/dp", 12).precision(3), [](R r) { return r.smallestSpacingRatio; })
+      .terminalOnly(TerminalColumn("max zigzag", 11).precision(3), [](R r) { return r.largestZigzag; })
+      .terminalOnly(TerminalColumn("t(zigzag>" + scene::formatNumber(zigzagThreshold) + ")", 14).precision(3),
+                    [](R r) { return r.firstZigzagTime >= 0 ? TableCell(r.firstZigzagTime) : TableCell("never"); })
+      .column("vx_left_start [m/s]", [](R r) { return r.leftVelocityStart; })
+      .column("vx_right_start [m/s]", [](R r) { return r.rightVelocityStart; })
+      .column("vx_left_end [m/s]", [](R r) { return r.leftVelocityEnd; })
+      .column("vx_right_end [m/s]", [](R r) { return r.rightVelocityEnd; })
+      .column("restitution_left", [](R r) { return r.restitutionLeft; })
+      .column("restitution_right", [](R r) { return r.restitutionRight; })
+      .column("support_radius [m]", [](R r) { return r.supportRadius; })
+      .column("contact_time [s]", [](R r) { return r.contactTime; })
+      .column("separation_time [s]", [](R r) { return r.separationTime; })
+      .column("smallest_gap [m]", [](R r) { return r.smallestGap; })
+      .column("link_distance [dp]", [linkDistance](R) { return linkDistance; })
+      .column("failure", [](R r) {
+        std::string failure = r.failure;  // one CSV cell
+        std::replace(failure.begin(), failure.end(), ',', ';');
+        std::replace(failure.begin(), failure.end(), '\n', ' ');
+        return failure;
+      });
+  t.energy.terminalOnly(TerminalColumn("case", 22).left(), [](R r) { return r.settings.name; })
+      .terminalOnly(TerminalColumn("kinetic0", 11), [](R r) { return r.initialEnergy.kinetic; })
+      .terminalOnly(TerminalColumn("kinetic", 11), [](R r) { return r.finalEnergy.kinetic; })
+      .terminalOnly(TerminalColumn("strain", 11), [](R r) { return r.finalEnergy.strain; })
+      .terminalOnly(TerminalColumn("internal", 11), [](R r) { return r.finalEnergy.internal; })
+      .terminalOnly(TerminalColumn("viscous", 11), [](R r) { return r.finalEnergy.viscousDissipation; })
+      .terminalOnly(TerminalColumn("art.stress", 11), [](R r) { return r.finalEnergy.artificialStressWork; })
+      .terminalOnly(TerminalColumn("max drift", 12).precision(3), [](R r) { return r.largestBalanceDrift; })
+      .terminalOnly(TerminalColumn("end drift", 12).precision(3), [](R r) { return r.finalBalanceDrift; });
+  return t;
 }
 
-void printTables(std::ostream& out, const std::vector<CaseResult>& results, Real zigzagThreshold) {
-  out << std::left << std::setw(22) << "case" << std::right << std::setw(10) << "particles" << std::setw(8) << "steps"
-      << std::setw(9) << "wall[s]" << std::setw(11) << "p-steps/s" << std::setw(11) << "fragments" << std::setw(7)
-      << "stray" << std::setw(7) << "torn" << std::setw(16) << "rebound L/R" << std::setw(12) << "min dx/dp"
-      << std::setw(11) << "max zigzag" << std::setw(14) << "t(zigzag>" + scene::formatNumber(zigzagThreshold) + ")"
-      << '\n';
-  for (const CaseResult& r : results) {
-    std::ostringstream rebound, zigzagTime;
-    rebound << std::setprecision(3) << r.restitutionLeft << '/' << r.restitutionRight;
-    if (r.firstZigzagTime >= 0)
-      zigzagTime << std::setprecision(3) << r.firstZigzagTime;
-    else
-      zigzagTime << "never";
-    out << std::left << std::setw(22) << r.settings.name << std::right << std::setw(10) << r.particles << std::setw(8)
-        << r.steps << std::setw(9) << std::setprecision(3) << r.setupSeconds + r.runSeconds << std::setw(11)
-        << std::setprecision(3) << r.particleStepsPerSecond() << std::setw(11) << r.fragments << std::setw(7)
-        << r.strayParticles << std::setw(7) << r.tornLinks << std::setw(16) << rebound.str() << std::setw(12)
-        << std::setprecision(3) << r.smallestSpacingRatio << std::setw(11) << r.largestZigzag << std::setw(14)
-        << zigzagTime.str() << '\n';
-  }
-  out << "\nenergy at the end [J] (kinetic at t = 0, then at the end; drift of kinetic + internal over kinetic + "
-         "strain at t = 0)\n";
-  out << std::left << std::setw(22) << "case" << std::right << std::setw(11) << "kinetic0" << std::setw(11) << "kinetic"
-      << std::setw(11) << "strain" << std::setw(11) << "internal" << std::setw(11) << "viscous" << std::setw(11)
-      << "art.stress" << std::setw(12) << "max drift" << std::setw(12) << "end drift" << '\n';
-  for (const CaseResult& r : results) {
-    const UpdatedLagrangianSphEnergy& e = r.finalEnergy;
-    out << std::left << std::setw(22) << r.settings.name << std::right << std::setprecision(4) << std::setw(11)
-        << r.initialEnergy.kinetic << std::setw(11) << e.kinetic << std::setw(11) << e.strain << std::setw(11)
-        << e.internal << std::setw(11) << e.viscousDissipation << std::setw(11) << e.artificialStressWork
-        << std::setw(12) << std::setprecision(3) << r.largestBalanceDrift << std::setw(12) << r.finalBalanceDrift
-        << '\n';
-  }
-  out << '\n';
+// The case in the layout every tool reads. No exact solution: ranked by the energy balance's drift.
+CaseRecord caseRecord(const CaseResult& r) {
+  CaseRecord c;
+  c.name = r.settings.name;
+  c.particles = r.particles;
+  c.steps = r.steps;
+  c.timeStep = r.meanStep;
+  c.simulatedTime = r.endTime;
+  c.setupSeconds = r.setupSeconds;
+  c.loopSeconds = r.runSeconds;
+  c.peakMemoryMiB = r.peakMemoryMiB;
+  c.errors = {{"largest_balance_drift", r.largestBalanceDrift}, {"extra_fragments", static_cast<Real>(r.fragments - 2)}};
+  c.primaryError = "largest_balance_drift";
+  return c;
 }
 
 }  // namespace
@@ -228,8 +263,13 @@ int main(int argc, char** argv) {
         std::cerr << "  done " << settings.name << " (" << results.back().particles << " particles, "
                   << results.back().steps << " steps)\n";
     }
-    writeCases(folder + "/cases.csv", results, plan.study.linkDistance);
-    printTables(std::cout, results, plan.study.zigzagThreshold);
+    const RingsTables tables = ringsTables(plan.study.linkDistance, plan.study.zigzagThreshold);
+    tables.cases.writeCsv(folder + "/cases.csv", results, 8);
+    tables.cases.print(std::cout, results);
+    std::cout << "\nenergy at the end [J] (kinetic at t = 0, then at the end; drift of kinetic + internal over kinetic + "
+                 "strain at t = 0)\n";
+    tables.energy.print(std::cout, results);
+    std::cout << '\n';
 
     const Scene& scene = plan.study.scene;
     const CaseResult& first = results.front();
@@ -244,6 +284,7 @@ int main(int argc, char** argv) {
     summary.timeStep = first.meanStep;
     summary.simulatedTime = scene.integrator.endTime;
     for (const CaseResult& r : results) {
+      summary.addCase(caseRecord(r));
       summary.steps += r.steps;
       summary.wallSeconds += r.setupSeconds + r.runSeconds;
     }
