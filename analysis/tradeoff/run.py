@@ -5,7 +5,6 @@ with os.wait4, whose ru_maxrss is that driver's own peak resident memory (no /us
 OMP_NUM_THREADS=1 and --threads 1 keep each point on one core, so that points running side by
 side do not compete for cores and the wall times are per-core figures.
 """
-import csv
 import hashlib
 import json
 import math
@@ -74,52 +73,24 @@ def launch(argv, log, timeout, children):
     return json.loads(out.strip().splitlines()[-1])
 
 
-def _rows(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
-def _number(text):
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return math.nan
+def _number(value):
+    """A JSON number, or NaN for null (an unknown value) and anything else."""
+    return float(value) if isinstance(value, (int, float)) else math.nan
 
 
 def read_results(point, out_dir):
-    """What the driver wrote: particles, steps, step used, stable step, error, time-loop seconds."""
+    """What the driver wrote, from the canonical record of its last case in summary.json ("cases",
+    the same layout for every driver): particles, steps, step used, stable step, the case's primary
+    error and its time-loop seconds."""
     with open(os.path.join(out_dir, "summary.json")) as f:
         summary = json.load(f)
-    r = {"particles": summary.get("particles", 0), "steps": summary.get("steps", 0),
-         "dt": summary.get("time_step") or math.nan, "dt_stable": math.nan}
-    if point.driver == "wave1d":
-        row = _rows(os.path.join(out_dir, "convergence.csv"))[-1]
-        r.update(dt=_number(row["dt [s]"]), error=_number(row["relative_l2_error"]),
-                 loop_s=_number(row["wall_time [s]"]),
-                 dt_stable=summary.get("figures", {}).get("critical_dt_last", math.nan))
-    elif point.driver in ("bar1d", "plane2d"):
-        row = _rows(os.path.join(out_dir, "convergence.csv"))[-1]
-        r.update(dt=_number(row["dt [s]"]), dt_stable=_number(row["critical_dt [s]"]),
-                 error=_number(row["relative_l2_u"]), loop_s=_number(row["wall_time [s]"]))
-    elif point.driver == "bar1d-sph":
-        row = _rows(os.path.join(out_dir, "cases.csv"))[-1]
-        # The step is cfl times the method's step criteria, re-evaluated before every step and
-        # never shortened to land on the end time: the last step over cfl is the method's step.
-        r.update(error=_number(row["l1_velocity"]), loop_s=_number(row["wall_time [s]"]),
-                 dt_stable=r["dt"] / point.dt_fraction)
-    elif point.driver == "lamb3d":
-        row = _rows(os.path.join(out_dir, "cases.csv"))[-1]
-        errors = [_number(row[f"{p}_reported_relative_l2"]) for p in ("centre", "receiver")]
-        r.update(particles=int(row["particles"]), steps=int(row["steps"]), dt=_number(row["dt [s]"]),
-                 dt_stable=_number(row["stable_step_estimate [s]"]), error=max(errors),
-                 loop_s=_number(row["run [s]"]))
-    elif point.driver == "planewave":
-        row = _rows(os.path.join(out_dir, "planewave.csv"))[-1]
-        r.update(dt=_number(row["dt"]), dt_stable=_number(row["critical_dt"]), error=_number(row["relative_l2_u"]),
-                 loop_s=_number(row["loop_s"]))
-    else:
-        raise ValueError(f"no reader for driver {point.driver}")
-    return r
+    cases = summary.get("cases") or []
+    if not cases:
+        raise ValueError(f"{point.driver} wrote no cases in summary.json")
+    case = cases[-1]
+    return {"particles": int(case["particles"]), "steps": int(case["steps"]), "dt": _number(case["dt"]),
+            "dt_stable": _number(case["stable_dt"]), "error": _number(case["primary_error_value"]),
+            "loop_s": _number(case["loop_seconds"])}
 
 
 def last_line(path, limit=240):
