@@ -60,6 +60,16 @@ def compare_summary(before, after):
     for k in ("particles", "steps", "time_step", "simulated_time", "files", "notes"):
         if jb.get(k) != ja.get(k):
             out.append(f"summary {k}: {jb.get(k)} -> {ja.get(k)}")
+    # The canonical case records, where both runs wrote them (before issue 16's case table none did).
+    if "cases" in jb and "cases" in ja:
+        if len(jb["cases"]) != len(ja["cases"]):
+            out.append(f"summary cases: {len(jb['cases'])} -> {len(ja['cases'])}")
+        for cb, ca in zip(jb["cases"], ja["cases"]):
+            for k, v in cb.items():
+                if timing(k):
+                    continue
+                if k not in ca or not same(v, ca[k]):
+                    out.append(f"summary cases[{cb.get('case')}].{k}: {v} -> {ca.get(k)}")
     return out
 
 

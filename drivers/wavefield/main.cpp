@@ -6,7 +6,7 @@
 //   wavefield --scene data/scenes/block-ricker.toml [--set key=value ...] [--out DIR]
 
 #include "analysis/StableTimeStep.hpp"
-#include "core/AtomicFile.hpp"
+#include "core/Stopwatch.hpp"
 #include "core/Error.hpp"
 #include "integrators/IntegratorFactory.hpp"
 #include "io/run/DriverCommandLine.hpp"
@@ -71,6 +71,7 @@ Index nearestParticle(const ParticleSet<D>& particles, const std::vector<Real>& 
 
 template <int D>
 int run(const Scene& scene, const std::string& folder, const DriverOptions& cli) {
+  const Stopwatch setup;
   RunSummary summary;
   summary.program = kProgram;
   summary.scene = scene.info.name;
@@ -141,6 +142,7 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
     loop.add(*images, scene.output.every);
   }
 
+  const double setupSeconds = setup.seconds();
   const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
 
   // outputs and summary
@@ -161,6 +163,16 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
   summary.timeStep = dt;
   summary.simulatedTime = stats.endTime;
   summary.wallSeconds = stats.wallSeconds;
+  CaseRecord record;  // one case, no reference: no errors
+  record.name = scene.info.name;
+  record.particles = summary.particles;
+  record.steps = stats.steps;
+  record.timeStep = dt;
+  record.stableTimeStep = stable.estimate();
+  record.simulatedTime = stats.endTime;
+  record.setupSeconds = setupSeconds;
+  record.loopSeconds = stats.wallSeconds;
+  summary.addCase(record);
   summary.figures.push_back({"stable_step_estimate", stable.estimate()});
   summary.figures.push_back({"stable_step_gershgorin", stable.safe()});
   if (scene.output.energy) summary.figures.push_back({"final_total_energy", energy.series().column(2).back()});
