@@ -146,7 +146,7 @@ class RingTracker : public Observer {
 // Shows the adapted view (particles at their current positions) to the PNG renderer with four
 // still, zero-valued markers at the corners of the scene's box, so every picture frames the same
 // window (the renderer fits its view to the particles it is given).
-class WindowedView : public Observer {
+class WindowedView : public ViewAdapter {
  public:
   WindowedView(const ParticleSet<D>& moving, const std::vector<Real>& lower, const std::vector<Real>& upper)
       : moving_(moving), windowed_(moving) {
@@ -156,24 +156,10 @@ class WindowedView : public Observer {
     displacement_ = Vector::Zero(windowed_.size() * D);
     velocity_ = Vector::Zero(windowed_.size() * D);
   }
-  void add(Observer& observer) { observers_.push_back(&observer); }
   const ParticleSet<D>& particles() const { return windowed_; }
 
-  void begin(const StateView& s) override {
-    const StateView view = adapt(s);
-    for (Observer* o : observers_) o->begin(view);
-  }
-  void observe(const StateView& s) override {
-    const StateView view = adapt(s);
-    for (Observer* o : observers_) o->observe(view);
-  }
-  void end(const StateView& s) override {
-    const StateView view = adapt(s);
-    for (Observer* o : observers_) o->end(view);
-  }
-
  private:
-  StateView adapt(const StateView& s) {
+  StateView adapt(const StateView& s) override {
     const Index n = moving_.size();
     for (int a = 0; a < D; ++a)
       std::copy(moving_.coordinate(a).begin(), moving_.coordinate(a).end(), windowed_.coordinate(a).begin());
@@ -185,7 +171,6 @@ class WindowedView : public Observer {
   const ParticleSet<D>& moving_;
   ParticleSet<D> windowed_;
   Vector displacement_, velocity_;
-  std::vector<Observer*> observers_;
 };
 
 void writeSnapshots(const std::string& path, const std::vector<RingTracker::Snapshot>& snapshots, Index leftCount) {
@@ -261,39 +246,38 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   std::vector<Real> snapshotTimes;
   for (int k = 0; k < study.snapshots; ++k) snapshotTimes.push_back(endTime * k / std::max(1, study.snapshots - 1));
   RingTracker tracker(system, leftCount, study.trackEvery, snapshotTimes, study.linkDistance * result.spacing);
+  // One particle view for every particle output, each at its own interval.
   SolidStateAdapter<D> adapter(system, particles);
   StabilityMonitorOptions stability = scene.stability.options(D);
   StabilityMonitor monitor(stability);
   adapter.add(monitor);
   const std::vector<Probe> probes = resolveProbes(scene.probes, particles);
   ProbeRecorder probeRecorder(probes, D);
-  SolidStateAdapter<D> probeAdapter(system, particles);
-  probeAdapter.add(probeRecorder);
+  if (!probes.empty()) adapter.add(probeRecorder, scene.output.probeEvery);
   ProgressReporter reporter(endTime, result.particles, progress);
 
-  SolidStateAdapter<D> frameAdapter(system, particles);
   std::optional<VtkFrameWriter<D>> frames;
   std::optional<WindowedView> window;
   std::optional<PngFrameRenderer<D>> images;
-  const ExtraFields methodFields = frameAdapter.extraFields();
+  const ExtraFields methodFields = adapter.extraFields();
   const ExtraFields extra = [&](const StateView& s, Index count, std::vector<ParticleField>& fields) {
     methodFields(s, count, fields);
     std::vector<Real> ring(static_cast<std::size_t>(count));
     for (Index i = 0; i < count; ++i) ring[static_cast<std::size_t>(i)] = i < leftCount ? 0 : 1;
     fields.push_back(ParticleField::scalar("ring", std::move(ring)));
-    const Fragments pieces = findFragments(frameAdapter.particles().coordinates(), study.linkDistance * result.spacing);
+    const Fragments pieces = findFragments(adapter.particles().coordinates(), study.linkDistance * result.spacing);
     std::vector<Real> fragment(pieces.label.begin(), pieces.label.end());
     fields.push_back(ParticleField::scalar("fragment", std::move(fragment)));
   };
   if (settings.writeFrames && scene.output.vtk) {
-    frames.emplace(frameAdapter.particles(), folder, settings.name, D, extra);
-    frameAdapter.add(*frames);
+    frames.emplace(adapter.particles(), folder, settings.name, D, extra);
+    adapter.add(*frames, scene.output.every);
   }
   if (settings.writeFrames && scene.output.png) {
-    window.emplace(frameAdapter.particles(), scene.geometry.lower, scene.geometry.upper);
+    window.emplace(adapter.particles(), scene.geometry.lower, scene.geometry.upper);
     images.emplace(window->particles(), folder, settings.name, D, pngOptions(study, result.approachSpeed));
     window->add(*images);
-    frameAdapter.add(*window);
+    adapter.add(*window, scene.output.every);
   }
 
   TimeLoop loop;
@@ -301,8 +285,6 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   loop.add(tracker);
   loop.add(adapter);
   loop.add(ledger, study.trackEvery);
-  if (!probes.empty()) loop.add(probeAdapter, scene.output.probeEvery);
-  if (frames || images) loop.add(frameAdapter, scene.output.every);
   result.setupSeconds = setupClock.seconds();
 
   const Stopwatch runClock;

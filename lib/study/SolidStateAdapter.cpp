@@ -27,24 +27,6 @@ StateView SolidStateAdapter<D>::adapt(const StateView& state) {
 }
 
 template <int D>
-void SolidStateAdapter<D>::begin(const StateView& state) {
-  const StateView view = adapt(state);
-  for (Observer* observer : observers_) observer->begin(view);
-}
-
-template <int D>
-void SolidStateAdapter<D>::observe(const StateView& state) {
-  const StateView view = adapt(state);
-  for (Observer* observer : observers_) observer->observe(view);
-}
-
-template <int D>
-void SolidStateAdapter<D>::end(const StateView& state) {
-  const StateView view = adapt(state);
-  for (Observer* observer : observers_) observer->end(view);
-}
-
-template <int D>
 ExtraFields SolidStateAdapter<D>::extraFields() const {
   return [this](const StateView&, Index count, std::vector<ParticleField>& fields) {
     if (lastState_ == nullptr) return;

@@ -4,41 +4,35 @@
 // A first-order integrator hands its observers the whole state y (positions, densities, stresses,
 // velocities, energies: UpdatedLagrangianSphLayout). The VTK and PNG frame writers and the probe
 // recorder expect particles at their current positions and a displacement / velocity pair of D
-// components per particle. This adapter is an Observer that, each time it is called, moves a
-// particle set to the positions in y, forms u = x - X and v, and forwards that view to the
-// observers added to it. `extraFields()` adds density, pressure, the Cauchy stress and the specific
-// internal energy to every frame.
+// components per particle. This adapter (a ViewAdapter: each observer at its own interval, the
+// view formed only when one is due) moves its particle set to the positions in y, forms u = x - X
+// and v, and forwards that view. One adapter serves every particle output of a run.
+// `extraFields()` adds density, pressure, the Cauchy stress and the specific internal energy to
+// every frame.
 
 #include "io/vtk/StateFrame.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
-#include "observers/Observer.hpp"
+#include "observers/ViewAdapter.hpp"
 #include "particles/ParticleSet.hpp"
 
-#include <vector>
 
 namespace mfwave {
 
 template <int D>
-class SolidStateAdapter : public Observer {
+class SolidStateAdapter : public ViewAdapter {
  public:
   // `particles` is the set the system was built from; the adapter keeps its own copy, whose
   // positions it updates (particles() is what frame writers must be given).
   SolidStateAdapter(const UpdatedLagrangianSph<D>& system, const ParticleSet<D>& particles);
 
-  // Observers that see the adapted view; they must outlive the adapter's use.
-  void add(Observer& observer) { observers_.push_back(&observer); }
   const ParticleSet<D>& particles() const { return moved_; }
-
-  void begin(const StateView& state) override;
-  void observe(const StateView& state) override;
-  void end(const StateView& state) override;
 
   // density, pressure, stress (Cauchy, symmetric tensor XX YY ZZ XY YZ XZ) and internal_energy of
   // the state last adapted.
   ExtraFields extraFields() const;
 
  private:
-  StateView adapt(const StateView& state);
+  StateView adapt(const StateView& state) override;
 
   const UpdatedLagrangianSph<D>& system_;
   ParticleSet<D> moved_;
@@ -46,7 +40,6 @@ class SolidStateAdapter : public Observer {
   Vector displacement_;
   Vector velocity_;
   const Vector* lastState_ = nullptr;
-  std::vector<Observer*> observers_;
 };
 
 extern template class SolidStateAdapter<1>;
