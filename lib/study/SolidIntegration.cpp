@@ -22,10 +22,8 @@ SolidIntegrationSettings solidIntegrationSettings(const IntegratorSpec& spec) {
 template <int D>
 std::unique_ptr<FirstOrderIntegrator> makeSolidIntegrator(UpdatedLagrangianSph<D>& system, const Vector& y0,
                                                           const SolidIntegrationSettings& settings) {
-  Vector ydot(y0.size());
-  system.rhs(0, y0, ydot);
   if (!(settings.cfl > 0) || !std::isfinite(settings.cfl)) throw InputError("integrator.cfl", "must be positive");
-  const Real stable = settings.cfl * system.stableStep(y0);
+  const Real stable = settings.cfl * system.evaluateStepCriteria(0, y0);
   if (settings.fixedStep > 2 * stable) {
     std::ostringstream why;
     why << "is " << settings.fixedStep << ", more than twice the stable step " << stable

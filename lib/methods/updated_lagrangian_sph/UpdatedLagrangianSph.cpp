@@ -413,6 +413,9 @@ void UpdatedLagrangianSph<D>::rhs(Real t, Eigen::Ref<const Vector> y, Eigen::Ref
 
 template <int D>
 Real UpdatedLagrangianSph<D>::stableStep(const Vector& y) const {
+  if (!impl_->haveForces)
+    throw Error("UpdatedLagrangianSph::stableStep: no momentum evaluation yet, so no viscous or force criterion; "
+                "call evaluateStepCriteria(t, y) first");
   const std::vector<Real> rho = impl_->currentDensities(y.data());
   const Real h = smoothingLength();
   const Real alpha = options_.viscosity.alpha;
@@ -433,6 +436,13 @@ Real UpdatedLagrangianSph<D>::stableStep(const Vector& y) const {
   if (impl_->haveForces && largestAcceleration > 0)
     step = std::min(step, options_.forceFactor * std::sqrt(h / largestAcceleration));
   return step;
+}
+
+template <int D>
+Real UpdatedLagrangianSph<D>::evaluateStepCriteria(Real t, const Vector& y) {
+  Vector ydot(layout_.size());
+  rhs(t, y, ydot);
+  return stableStep(y);
 }
 
 template <int D>

@@ -90,9 +90,15 @@ class UpdatedLagrangianSph : public SplitFirstOrderSystem {
   void momentumRate(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> pdot) override;
   void rhs(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) override;
 
-  // The step from the CFL, viscous and force criteria at y (options courant, forceFactor). The force
-  // criterion uses the accelerations of the last momentum evaluation (none before the first).
+  // The step from the CFL, viscous and force criteria at y (options courant, forceFactor). The
+  // viscous signal speeds (largest mu_ij) and the force criterion's accelerations are those of the
+  // last momentum evaluation, which an integrator makes at every step: the criteria are not
+  // computed twice. Before any evaluation there are none, and the call is refused (Error); call
+  // evaluateStepCriteria first.
   Real stableStep(const Vector& y) const;
+  // Evaluates the right-hand side at (t, y) for the criteria above, then returns stableStep(y): the
+  // first step of a run, before the integrator has evaluated anything.
+  Real evaluateStepCriteria(Real t, const Vector& y);
 
   // --- Diagnostics for observers ---
   UpdatedLagrangianSphEnergy energy(const Vector& y) const;
