@@ -1,7 +1,6 @@
 #include "PlateCase.hpp"
 
 #include "PlateLattice.hpp"
-#include "TipRecorder.hpp"
 #include "VeryWeakPlate.hpp"
 
 #include "core/Error.hpp"
@@ -11,6 +10,7 @@
 #include "io/vtk/PngFrameRenderer.hpp"
 #include "io/vtk/VtkFrameWriter.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
+#include "observers/GroupMeanRecorder.hpp"
 #include "observers/TimeLoop.hpp"
 #include "study/EnergyLedger.hpp"
 #include "study/SolidIntegration.hpp"
@@ -59,32 +59,22 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
   const Real firstStep = study.stepFactor * system.stableStep(y0);
 
   // observers: tip, energy ledger, frames through the particle view
-  TipRecorder tip([&layout, &lattice](const StateView& s) {
-    const Vector& y = s.displacement;  // a first-order integrator's view: the whole state
-    std::array<Real, 4> sum{0, 0, 0, 0};
-    for (Index i : lattice.tip) {
-      const Vec<D> x0 = lattice.particles.position(i);
-      sum[0] += y[layout.position(i, 0)] - x0[0];
-      sum[1] += y[layout.position(i, 1)] - x0[1];
-      sum[2] += y[layout.velocity(i, 0)];
-      sum[3] += y[layout.velocity(i, 1)];
-    }
-    for (Real& value : sum) value /= static_cast<Real>(lattice.tip.size());
-    return sum;
-  });
-  EnergyLedger<D> ledger(system);
+  // One particle view (u = x - X, v) for the tip and the frames, each at its own interval.
   SolidStateAdapter<D> adapter(system, lattice.particles);
+  GroupMeanRecorder tip("the plate's tip", lattice.tip, D);
+  adapter.add(tip, study.tipEvery);
+  EnergyLedger<D> ledger(system);
   ProgressReporter reporter(settings.endTime, result.particles, progress);
   std::optional<VtkFrameWriter<D>> frames;
   std::optional<PngFrameRenderer<D>> images;
   TimeLoop loop;
   loop.add(reporter);
-  loop.add(tip, study.tipEvery);
+  loop.add(adapter);
   loop.add(ledger, study.energyEvery);
   if (settings.writeFrames && scene.output.writesFrames()) {
     if (scene.output.vtk) {
       frames.emplace(adapter.particles(), folder, settings.name, D, adapter.extraFields());
-      adapter.add(*frames);
+      adapter.add(*frames, scene.output.every);
     }
     if (scene.output.png && study.pngFrames > 0) {
       // About study.pngFrames pictures over the run (rendering costs ~1 s each).
@@ -92,9 +82,8 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
       const long every = std::max(1L, std::lround(expectedFrames / static_cast<Real>(study.pngFrames)));
       images.emplace(adapter.particles(), folder, settings.name, D, pngOptionsFor(scene.output), every,
                      adapter.extraFields());
-      adapter.add(*images);
+      adapter.add(*images, scene.output.every);
     }
-    loop.add(adapter, scene.output.every);
   }
   result.setupSeconds = setupClock.seconds();
 

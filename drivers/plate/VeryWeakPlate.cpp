@@ -1,6 +1,5 @@
 #include "VeryWeakPlate.hpp"
 
-#include "TipRecorder.hpp"
 
 #include "analysis/StableTimeStep.hpp"
 #include "core/Error.hpp"
@@ -12,6 +11,7 @@
 #include "observers/EnergyObserver.hpp"
 #include "observers/LinearEnergyLedger.hpp"
 #include "observers/StabilityMonitor.hpp"
+#include "observers/GroupMeanRecorder.hpp"
 #include "observers/TimeLoop.hpp"
 #include "particles/BoxFace.hpp"
 #include "particles/GhostLayers.hpp"
@@ -87,17 +87,7 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
     if (particles.faceMask[static_cast<std::size_t>(a)] & plusX) tipNodes.push_back(a);
   for (Index a : tipNodes) result.tipStartVelocity += v0[D * a + 1];
   result.tipStartVelocity /= static_cast<Real>(tipNodes.size());
-  TipRecorder tip([&tipNodes](const StateView& s) {
-    std::array<Real, 4> sum{0, 0, 0, 0};
-    for (Index a : tipNodes) {
-      sum[0] += s.displacement[D * a];
-      sum[1] += s.displacement[D * a + 1];
-      sum[2] += s.velocity[D * a];
-      sum[3] += s.velocity[D * a + 1];
-    }
-    for (Real& value : sum) value /= static_cast<Real>(tipNodes.size());
-    return sum;
-  });
+  GroupMeanRecorder tip("the plate's tip", tipNodes, D);
   EnergyObserver energy(EnergyObserver::ofLinearSystem(system));
   ProgressReporter reporter(settings.endTime, n, progress);
   // The guards of every linear run: the monitor (non-finite values, grid-scale growth) and the

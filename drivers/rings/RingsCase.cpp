@@ -1,6 +1,6 @@
 #include "RingsCase.hpp"
 
-#include "Fragments.hpp"
+#include "analysis/Fragments.hpp"
 
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
@@ -86,12 +86,11 @@ class RingTracker : public Observer {
   void take(const StateView& s, bool last) {
     const Vector& y = s.displacement;  // a first-order integrator's view: the whole state
     if (s.step == lastStep_ && !last) return;
-    if (s.step > lastStep_ && lastStep_ >= 0) {
-      lastStepSize_ = (s.time - lastTime_) / static_cast<Real>(s.step - lastStep_);
+    if (s.step > lastStep_ && lastStep_ >= 0) {  // seen every step: s.dt is the step just taken
+      lastStepSize_ = s.dt;
       smallestStep_ = std::min(smallestStep_, lastStepSize_);
     }
     lastStep_ = s.step;
-    lastTime_ = s.time;
     if (!allFinite(y)) return;
     if ((s.step % every_ == 0 || last) && s.step != lastSampled_) sample(s);
     const Real slack = 1e-9 * (snapshotTimes_.empty() ? 1 : std::max(snapshotTimes_.back(), Real(1e-300)));
@@ -138,7 +137,7 @@ class RingTracker : public Observer {
   TimeSeries series_;
   std::vector<Snapshot> snapshots_;
   long lastStep_ = -1, lastSampled_ = -1;
-  Real lastTime_ = 0, lastStepSize_ = 0;
+  Real lastStepSize_ = 0;
   Real smallestStep_ = std::numeric_limits<Real>::infinity();
   Real smallestGap_ = std::numeric_limits<Real>::infinity();
 };
@@ -165,7 +164,7 @@ class WindowedView : public ViewAdapter {
       std::copy(moving_.coordinate(a).begin(), moving_.coordinate(a).end(), windowed_.coordinate(a).begin());
     displacement_.head(n * D) = s.displacement;
     velocity_.head(n * D) = s.velocity;
-    return {s.step, s.time, displacement_, velocity_};
+    return {s.step, s.time, displacement_, velocity_, s.dt};
   }
 
   const ParticleSet<D>& moving_;

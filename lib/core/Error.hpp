@@ -16,12 +16,16 @@ class Error : public std::runtime_error {
 // `key` is the parameter or scene key path ("material.poisson_ratio"); `problem` says what is wrong.
 class InputError : public Error {
  public:
-  InputError(std::string key, const std::string& problem)
-      : Error(key + ": " + problem), key_(std::move(key)) {}
+  InputError(std::string key, std::string problem)
+      : Error(key + ": " + problem), key_(std::move(key)), problem_(std::move(problem)) {}
   const std::string& key() const { return key_; }
+  // The problem alone, so that a layer that knows where the key was written (the scene reader)
+  // can say it again with the file and line.
+  const std::string& problem() const { return problem_; }
 
  private:
   std::string key_;
+  std::string problem_;
 };
 
 // A run that became unstable: non-finite values or runaway growth.

@@ -30,7 +30,7 @@ class ArkodeSecondOrder : public SecondOrderIntegrator {
   long stepCount() const override { return steps_; }
   // The fixed step, or the last adaptive step (the initial step before the first).
   Real stepSize() const override;
-  StateView state() const override { return {steps_, time(), u_, v_}; }
+  StateView state() const override { return {steps_, time(), u_, v_, stepSize()}; }
 
   const ArkodeExplicit& arkode() const { return *arkode_; }
   const ArkodeOptions& options() const { return options_; }

@@ -37,7 +37,7 @@ class FirstOrderIntegrator : public Integrator {
   // Whether a step-size rule is installed.
   bool hasStepSizeFunction() const { return static_cast<bool>(stepSizeRule_); }
 
-  StateView state() const override { return {stepCount(), time(), solution(), empty_}; }
+  StateView state() const override { return {stepCount(), time(), solution(), empty_, stepSize()}; }
 
  protected:
   // The step to take next: the rule's answer, or `current` without a rule.

@@ -12,7 +12,7 @@ class FixedStepSecondOrderIntegrator : public SecondOrderIntegrator {
   Real time() const override { return time_; }
   long stepCount() const override { return steps_; }
   Real stepSize() const override { return dt_; }
-  StateView state() const override { return {steps_, time_, u_, v_}; }
+  StateView state() const override { return {steps_, time_, u_, v_, dt_}; }
   // a_n at the current time.
   const Vector& acceleration() const { return a_; }
 

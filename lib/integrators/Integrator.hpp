@@ -16,6 +16,9 @@ struct StateView {
   Real time;
   const Vector& displacement;
   const Vector& velocity;
+  // The step just taken (before the first step: the step about to be taken), so that observers
+  // need not derive it from time differences.
+  Real dt = 0;
 };
 
 class Integrator {

@@ -23,7 +23,7 @@ StateView SolidStateAdapter<D>::adapt(const StateView& state) {
     }
   }
   lastState_ = &y;
-  return {state.step, state.time, displacement_, velocity_};
+  return {state.step, state.time, displacement_, velocity_, state.dt};
 }
 
 template <int D>

@@ -20,7 +20,11 @@ void checkVeryWeakSphScene(const SceneReader& reader, const Scene& scene, const 
     if (scene.loads[i].type != LoadType::SurfacePatch)
       reader.fail("load[" + std::to_string(i) + "].type",
                   program + " takes surface_patch loads (point and body forces have no very weak form here)");
-  checkVeryWeakSphCombination(spec.options.variant, spec.deconvolution, spec.smoothingRate);
+  try {
+    checkVeryWeakSphCombination(spec.options.variant, spec.deconvolution, spec.smoothingRate);
+  } catch (const InputError& e) {
+    reader.fail(e.key(), e.problem());  // the method's refusal, located in the scene
+  }
   if (scene.integrator.name == "central_difference") return;
   if (spec.smoothingRate > 0)
     reader.fail("method.smoothing_rate", "conservative smoothing is applied by the central_difference "

@@ -31,7 +31,7 @@ struct TenTimes : ViewAdapter {
     ++adapted;
     u = 10 * s.displacement;
     v = s.velocity;
-    return {s.step, s.time, u, v};
+    return {s.step, s.time, u, v, s.dt};
   }
 };
 

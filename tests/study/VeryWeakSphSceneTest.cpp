@@ -139,8 +139,24 @@ TEST(VeryWeakSphScene, RefusesBeforeAnyWorkWhatCannotRun) {
   EXPECT_EQ(refusedKey(newmark), "boundary");
   try {
     checkVeryWeakSphScene(newmark.reader, newmark.scene, newmark.spec, "test");
+    FAIL() << "prescribed faces with newmark must be refused";
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("strip.toml"), std::string::npos) << e.what();
+  }
+}
+
+// The method's own refusals (checkVeryWeakSphCombination knows no scene) are said again by the
+// scene reader, with the file and line of the key.
+TEST(VeryWeakSphScene, LocatesTheMethodsRefusalsInTheScene) {
+  const Read r = read("variant = \"galerkin\"\ndeconvolution = true\n");
+  try {
+    checkVeryWeakSphScene(r.reader, r.scene, r.spec, "test");
+    FAIL() << "deconvolution with the galerkin variant must be refused";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.key(), "method.deconvolution");
+    EXPECT_NE(e.location().find("strip.toml:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no kernel estimate to deconvolve"), std::string::npos) << e.what();
+    EXPECT_EQ(e.problem().find("strip.toml"), std::string::npos) << "the problem alone, without the location";
   }
 }
 

@@ -18,16 +18,13 @@ class SceneError : public InputError {
   SceneError(std::string location, std::string key, std::string problem)
       : InputError(key, problem),
         location_(std::move(location)),
-        problem_(std::move(problem)),
-        message_((location_.empty() ? "" : location_ + ": ") + key + ": " + problem_) {}
+        message_((location_.empty() ? "" : location_ + ": ") + key + ": " + problem) {}
 
   const char* what() const noexcept override { return message_.c_str(); }
   const std::string& location() const { return location_; }
-  const std::string& problem() const { return problem_; }
 
  private:
   std::string location_;
-  std::string problem_;
   std::string message_;
 };
 

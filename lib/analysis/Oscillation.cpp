@@ -1,9 +1,9 @@
-#include "Oscillation.hpp"
+#include "analysis/Oscillation.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace mfwave::plate {
+namespace mfwave {
 
 Real Oscillation::lastAmplitude() const {
   const std::size_t n = halfCycleAmplitudes.size();
@@ -72,4 +72,4 @@ Oscillation analyseOscillation(const std::vector<Real>& times, const std::vector
   return o;
 }
 
-}  // namespace mfwave::plate
+}  // namespace mfwave

@@ -1,10 +1,11 @@
 #pragma once
-// The period and amplitude of the plate's tip from its sampled transverse displacement.
+// The period and amplitude of an oscillation from its samples (the plate study's tip
+// displacement; any signal that starts at 0 and swings about it).
 //
 // Zero crossings are found with hysteresis: a crossing counts only once the signal has reached
 // `hysteresis` times its largest |value| on the other side, so particle-scale ripples near zero
 // never add spurious crossings. Its time is the linear interpolation of the last sign change before
-// that. The displacement starts at 0 (the plate starts straight with the mode's velocity): the
+// that. The signal starts at 0 (the plate starts straight with the mode's velocity): the
 // first crossing ends the first half period, so measuring from it ignores the start; the period is
 // 2 (t_last - t_first) / (crossings - 1), the mean over the rest of the run.
 
@@ -13,7 +14,7 @@
 #include <limits>
 #include <vector>
 
-namespace mfwave::plate {
+namespace mfwave {
 
 struct Oscillation {
   Real period = std::numeric_limits<Real>::quiet_NaN();
@@ -35,4 +36,4 @@ struct Oscillation {
 
 Oscillation analyseOscillation(const std::vector<Real>& times, const std::vector<Real>& values, Real hysteresis = 0.2);
 
-}  // namespace mfwave::plate
+}  // namespace mfwave

@@ -1,4 +1,4 @@
-#include "Fragments.hpp"
+#include "analysis/Fragments.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -6,7 +6,7 @@
 #include "neighbours/CellList.hpp"
 #include "neighbours/NeighbourList.hpp"
 
-namespace mfwave::rings {
+namespace mfwave {
 
 Index Fragments::particlesOutsideLargest(Index keep) const {
   Index outside = 0;
@@ -83,4 +83,4 @@ Index tornLinks(const std::vector<std::pair<Index, Index>>& links, const Coordin
   return torn;
 }
 
-}  // namespace mfwave::rings
+}  // namespace mfwave

@@ -1,7 +1,7 @@
 #pragma once
-// Objective measures of whether the rings came through the collision in one piece: the connected
-// fragments of the particle cloud (particles closer than a link distance are joined), and the
-// centre of mass of each ring.
+// Objective measures of whether a body came through a collision or a load in one piece (the rings
+// study's rings): the connected fragments of a 2-D particle cloud (particles closer than a link
+// distance are joined), and the links of the body at the start that are now torn.
 
 #include <utility>
 #include <vector>
@@ -9,7 +9,7 @@
 #include "core/Types.hpp"
 #include "particles/ParticleSet.hpp"
 
-namespace mfwave::rings {
+namespace mfwave {
 
 struct Fragments {
   std::vector<Index> label;  // per particle: its fragment, 0 = the largest, 1 = the next, ...
@@ -28,4 +28,4 @@ std::vector<std::pair<Index, Index>> linkPairs(const Coordinates<2>& positions, 
 // them by a few per cent; clumping shortens them).
 Index tornLinks(const std::vector<std::pair<Index, Index>>& links, const Coordinates<2>& positions, Real length);
 
-}  // namespace mfwave::rings
+}  // namespace mfwave
