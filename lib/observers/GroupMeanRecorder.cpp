@@ -7,7 +7,11 @@
 namespace mfwave {
 namespace {
 
+// Checks the component count first: it sizes the column names (the series is built before the
+// constructor's body runs).
 std::vector<std::string> columnNames(int components) {
+  if (components < 1 || components > 3)
+    throw InputError("components", "must be 1, 2 or 3, got " + std::to_string(components));
   const char* axis[3] = {"x", "y", "z"};
   std::vector<std::string> names;
   for (int c = 0; c < components; ++c) names.push_back(std::string("u_") + axis[c] + " [m]");
@@ -22,8 +26,6 @@ GroupMeanRecorder::GroupMeanRecorder(std::string group, std::vector<Index> membe
       members_(std::move(members)),
       components_(components),
       series_("t [s]", columnNames(components)) {
-  if (components < 1 || components > 3)
-    throw InputError("components", "must be 1, 2 or 3, got " + std::to_string(components));
   if (members_.empty()) throw InputError(group_, "a group mean needs at least one particle");
 }
 
