@@ -23,7 +23,7 @@
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/StepLimitCheck.hpp"
 #include "io/scene/Scene.hpp"
-#include "methods/collocation/CollocationIntegrators.hpp"
+#include "integrators/ConstrainedIntegrators.hpp"
 #include "methods/collocation/CollocationSystem.hpp"
 #include "methods/collocation/ConstrainedCollocationSystem.hpp"
 #include "methods/collocation/RadialBasisShapeFunctions.hpp"
@@ -231,7 +231,7 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
   const Vector U0 = Vector::Zero(system.size());
   const Vector V0 = Vector::Constant(system.size(), study.v0);
   const std::unique_ptr<SecondOrderIntegrator> integrator =
-      makeCollocationIntegrator(scene.integrator.name, scene.integrator.options);
+      makeConstrainedIntegrator(scene.integrator.name, scene.integrator.options);
   integrator->initialise(system, 0, U0, V0, dt);
 
   std::vector<Vec1> errorPoints;
@@ -286,7 +286,7 @@ Study readStudy(SceneReader& reader) {
       facesWith(study.scene.boundaries, BoundaryType::Traction) != 0)
     reader.fail("boundary", "bar1d is the fixed-free bar: faces = [\"-x\"], type = \"fixed\"; +x free");
   if (!study.scene.loads.empty()) reader.fail("load", "bar1d takes no loads");
-  const std::vector<std::string> integrators = collocationIntegratorNames();
+  const std::vector<std::string> integrators = constrainedIntegratorNames();
   if (std::find(integrators.begin(), integrators.end(), study.scene.integrator.name) == integrators.end())
     reader.fail("integrator.name", "bar1d runs central_difference or newmark");
   study.v0 = reader.number("study.initial_velocity");

@@ -19,7 +19,7 @@
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/StepLimitCheck.hpp"
 #include "io/scene/Scene.hpp"
-#include "methods/collocation/CollocationIntegrators.hpp"
+#include "integrators/ConstrainedIntegrators.hpp"
 #include "methods/collocation/CollocationSystem.hpp"
 #include "methods/collocation/ConstrainedCollocationSystem.hpp"
 #include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
@@ -173,7 +173,7 @@ CaseResult runCase(const Scene& scene, int order, Real ratio, Real w, int cells,
     V0.segment<2>(r) = exact.v(x, 0);
   }
   const std::unique_ptr<SecondOrderIntegrator> integrator =
-      makeCollocationIntegrator(scene.integrator.name, scene.integrator.options);
+      makeConstrainedIntegrator(scene.integrator.name, scene.integrator.options);
   integrator->initialise(system, 0, U0, V0, dt);
   StabilityMonitor monitor(scene.stability.options(2));
   TimeLoop loop;
@@ -233,7 +233,7 @@ int main(int argc, char** argv) {
     const Scene scene = readScene(reader);
     if (scene.info.dimension != 2) reader.fail("scene.dimension", "plane2d is a 2-D study");
     if (scene.method.name != "reproducing_kernel") reader.fail("method.name", "plane2d uses reproducing_kernel");
-    const std::vector<std::string> integrators = collocationIntegratorNames();
+    const std::vector<std::string> integrators = constrainedIntegratorNames();
     if (std::find(integrators.begin(), integrators.end(), scene.integrator.name) == integrators.end())
       reader.fail("integrator.name", "plane2d runs central_difference or newmark");
     if (!scene.loads.empty()) reader.fail("load", "plane2d sets its own body force");

@@ -79,7 +79,9 @@ SceneSchema planeWaveSchema() {
 
 struct Settings {
   int dimension = 2;
-  std::string method, direction, polarisation, integrator;
+  std::string method, integrator;
+  LatticeDirection direction = LatticeDirection::Axis;
+  bool shear = false;  // the S wave (polarisation "S"), else the P wave
   int cells = 32, wavelengths = 2;
   Real periods = 2, cfl = 0.5;
   LatticeMethodSettings lattice;
@@ -120,8 +122,8 @@ CaseTable<Case> planeWaveTable() {
       .column("dimension", [](R c) { return c.s.dimension; })
       .column("cells", [](R c) { return c.s.cells; })
       .column("particles", [](R c) { return c.out.particles; })
-      .column("direction", [](R c) { return c.s.direction; })
-      .column("polarisation", [](R c) { return c.s.polarisation; })
+      .column("direction", [](R c) { return latticeDirectionName(c.s.direction); })
+      .column("polarisation", [](R c) { return c.s.shear ? "S" : "P"; })
       .column("integrator", [](R c) { return c.s.integrator; })
       .column("cfl", [](R c) { return c.s.cfl; })
       .column("dt", [](R c) { return c.out.dt; })
@@ -141,8 +143,8 @@ Outcome run(const Settings& s) {
   const MethodLatticeStencil<D> stencil = latticeMethodStencil<D>(s.method, s.lattice, dx, "study.method");
   const auto op = makePeriodicLatticeOperator<D>(stencil.acceleration, dx, s.cells, stencil.mass);
   const int c = op.components();
-  if (c == 1 && s.polarisation == "S") throw InputError("study.polarisation", "the scalar finite difference has no S wave");
-  if (D == 1 && s.polarisation == "S") throw InputError("study.polarisation", "there is no S wave in 1-D");
+  if (c == 1 && s.shear) throw InputError("study.polarisation", "the scalar finite difference has no S wave");
+  if (D == 1 && s.shear) throw InputError("study.polarisation", "there is no S wave in 1-D");
   if (!op.lumped() && s.integrator != "newmark")
     throw InputError("integrator.name", "rkcm has a consistent mass; only newmark integrates it here");
 
@@ -172,18 +174,18 @@ Outcome run(const Settings& s) {
                                            " of this spectrum (cfl <= " +
                                            std::to_string(verdict.limitDt / out.criticalDt) + ")");
 
-  const Vec<D> n = latticeDirectionVector<D>(parseLatticeDirection(s.direction, "study.direction"));
-  const Vec<D> k = (s.direction == "axis" ? 1.0 : std::sqrt(Real(D))) * 2 * kPi * s.wavelengths * n;
+  const Vec<D> n = latticeDirectionVector<D>(s.direction);
+  const Vec<D> k = (s.direction == LatticeDirection::Axis ? 1.0 : std::sqrt(Real(D))) * 2 * kPi * s.wavelengths * n;
   Vec<D> e = n;
-  if (s.polarisation == "S") {
+  if (s.shear) {
     e.setZero();
     if constexpr (D == 2) e << -n(1), n(0);
     if constexpr (D == 3) {
-      if (s.direction == "axis") e(1) = 1;
+      if (s.direction == LatticeDirection::Axis) e(1) = 1;
       else e << 1 / std::sqrt(2.0), -1 / std::sqrt(2.0), 0;
     }
   }
-  const Real speed = s.polarisation == "P" ? s.lattice.material.pWaveSpeed() : s.lattice.material.sWaveSpeed();
+  const Real speed = s.shear ? s.lattice.material.sWaveSpeed() : s.lattice.material.pWaveSpeed();
   const PlaneWave<D> wave(k, e, speed);
   out.endTime = s.periods * wave.period();
   out.steps = static_cast<long>(std::ceil(out.endTime / (s.cfl * out.criticalDt) - 1e-9));
@@ -266,8 +268,8 @@ int main(int argc, char** argv) {
     if (s.cells % 2 != 0) reader.fail("study.cells", "must be even");
     s.wavelengths = static_cast<int>(reader.integer("study.wavelengths"));
     if (2 * s.wavelengths >= s.cells) reader.fail("study.wavelengths", "needs more than 2 nodes per wavelength");
-    s.direction = reader.string("study.direction");
-    s.polarisation = reader.string("study.polarisation");
+    s.direction = parseLatticeDirection(reader.string("study.direction"), "study.direction");
+    s.shear = reader.string("study.polarisation") == "S";  // the schema allows "P" or "S" only
     s.periods = reader.number("study.periods");
     s.lattice.material = Material::fromLame(reader.number("study.lambda"), reader.number("study.mu"),
                                     reader.number("study.density"));
@@ -291,7 +293,7 @@ int main(int argc, char** argv) {
     planeWaveTable().writeCsv(folder + "/planewave.csv", cases, 10);
     if (!opt.quiet)
       std::cout << s.method << " " << s.dimension << "-D, " << s.cells << " cells, " << s.wavelengths
-              << " wavelengths along the " << s.direction << ", " << s.polarisation << ": " << s.integrator << " at "
+              << " wavelengths along the " << latticeDirectionName(s.direction) << ", " << (s.shear ? "S" : "P") << ": " << s.integrator << " at "
               << s.cfl << " of the limit (" << out.steps << " steps): relative L2 error of u " << out.error << '\n';
 
     RunSummary summary;

@@ -14,7 +14,7 @@
 // identity, their known accelerations are moved to the right-hand side of the free rows that C
 // couples to them.
 
-#include "integrators/FactorisedMatrix.hpp"
+#include "solvers/FactorisedMatrix.hpp"
 #include "systems/LinearSecondOrderSystem.hpp"
 
 #include <vector>

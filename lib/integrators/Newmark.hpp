@@ -15,7 +15,7 @@
 // initialise, with UMFPACK, or inverted entry-wise when it is diagonal (beta = 0 with lumped mass
 // and damping). The initial acceleration solves M a_0 = f(t0) - C v0 - K u0 the same way.
 
-#include "integrators/FactorisedMatrix.hpp"
+#include "solvers/FactorisedMatrix.hpp"
 #include "integrators/FixedStepSecondOrderIntegrator.hpp"
 
 namespace mfwave {

@@ -1,6 +1,7 @@
 #pragma once
 // The explicit form of collocation (Newmark beta = 0, central difference) with the boundary rows
-// as constraints. S d'' + A d = b has zero mass on its boundary rows, so it cannot be solved for
+// as constraints; its ConstrainedSecondOrderSystem face (S, A, b in the coefficients) is what the
+// implicit ConstrainedNewmark steps. S d'' + A d = b has zero mass on its boundary rows, so it cannot be solved for
 // d''. Instead the unknowns are the nodal VALUES at the interior collocation points,
 //
 //   U = Psi_I d                    (Psi_I = S_I / rho: psi_J at the interior points, per component)
@@ -26,12 +27,12 @@
 #include <vector>
 
 #include "methods/collocation/CollocationSystem.hpp"
-#include "integrators/FactorisedMatrix.hpp"
-#include "systems/SecondOrderSystem.hpp"
+#include "solvers/FactorisedMatrix.hpp"
+#include "systems/ConstrainedSecondOrderSystem.hpp"
 
 namespace mfwave {
 
-class ConstrainedCollocationSystem : public SecondOrderSystem {
+class ConstrainedCollocationSystem : public ConstrainedSecondOrderSystem {
  public:
   // Throws InputError("collocation.points") when there are fewer collocation rows than
   // coefficients (Nc < Ns) or no interior row, and mfwave::Error when C is singular (or, tall,
@@ -47,13 +48,19 @@ class ConstrainedCollocationSystem : public SecondOrderSystem {
   // a = (1/rho) (b_I(t) - A_I C^{-1} [U; b_B(t)]).
   void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) override;
 
+  // --- ConstrainedSecondOrderSystem: S, A and b of the collocation system, U = Psi_I d.
+  const SparseMatrix& coefficientMass() const override { return system_.S; }
+  const SparseMatrix& coefficientStiffness() const override { return system_.A; }
+  Vector coefficientLoad(Real t) const override { return system_.rhs(t); }
+  Vector observedValues(const Vector& d) const override { return interiorValues(d); }
+
   // d = C^{-1} [U; b_B(t)] (least squares when Nc > Ns).
-  Vector coefficients(const Vector& U, Real t) const;
+  Vector coefficients(const Vector& U, Real t) const override;
   // d' = C^{-1} [V; b_B'(t)], b_B' by a central difference of the load with step
   // 1e-4 max(1, |t|) (exact for boundary data linear in t; zero when there is no load).
-  Vector coefficientRates(const Vector& V, Real t) const;
+  Vector coefficientRates(const Vector& V, Real t) const override;
   // d'' = C^{-1} [a(t, U); b_B''(t)] (second central difference of the load, same step).
-  Vector coefficientAccelerations(const Vector& U, Real t);
+  Vector coefficientAccelerations(const Vector& U, Real t) override;
   // C^{-1} [top; bottom] for any right-hand side (top: size(), bottom: boundaryRows().size()).
   Vector solveConstraint(const Vector& top, const Vector& bottom) const;
   // U = Psi_I d.

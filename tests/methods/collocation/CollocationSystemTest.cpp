@@ -10,7 +10,7 @@
 #include "analytic/StandingWave.hpp"
 #include "core/Error.hpp"
 #include "integrators/CentralDifference.hpp"
-#include "methods/collocation/CollocationNewmark.hpp"
+#include "integrators/ConstrainedNewmark.hpp"
 #include "methods/collocation/CollocationSystem.hpp"
 #include "methods/collocation/ConstrainedCollocationSystem.hpp"
 #include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
@@ -309,7 +309,7 @@ Real standingWaveError(SecondOrderIntegrator& integrator, Real dt) {
 
 TEST(CollocationTimeIntegration, CentralDifferenceAndImplicitNewmarkFollowAStandingWave) {
   CentralDifference explicitScheme;
-  CollocationNewmark implicitScheme(0.25, 0.5);
+  ConstrainedNewmark implicitScheme(0.25, 0.5);
   const Real eExplicit = standingWaveError(explicitScheme, 0.01);
   const Real eImplicit = standingWaveError(implicitScheme, 0.01);
   // Measured 2.0e-3 and 1.6e-3: the O(h^2) space error of m = 2 collocation dominates.
@@ -317,9 +317,9 @@ TEST(CollocationTimeIntegration, CentralDifferenceAndImplicitNewmarkFollowAStand
   EXPECT_LT(eImplicit, 3e-3);
   EXPECT_GT(eExplicit, 1e-4);  // not trivially zero
   // The implicit scheme is unconditionally stable: a step 4 times the spacing still runs.
-  CollocationNewmark large(0.25, 0.5);
+  ConstrainedNewmark large(0.25, 0.5);
   const Real eLarge = standingWaveError(large, 0.1);
   EXPECT_TRUE(std::isfinite(eLarge));
   EXPECT_LT(eLarge, 0.1);
-  EXPECT_THROW(CollocationNewmark(0.0, 0.5), InputError);
+  EXPECT_THROW(ConstrainedNewmark(0.0, 0.5), InputError);
 }

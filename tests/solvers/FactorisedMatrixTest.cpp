@@ -1,5 +1,5 @@
 #include "core/Error.hpp"
-#include "integrators/FactorisedMatrix.hpp"
+#include "solvers/FactorisedMatrix.hpp"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>

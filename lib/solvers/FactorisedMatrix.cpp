@@ -1,4 +1,4 @@
-#include "integrators/FactorisedMatrix.hpp"
+#include "solvers/FactorisedMatrix.hpp"
 
 #include "core/Error.hpp"
 
