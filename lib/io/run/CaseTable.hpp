@@ -1,6 +1,6 @@
 #pragma once
-// One description of a study's per-case table, written two ways: as a CSV file (every column, full
-// precision, one precision per file) and as the terminal table (the columns a reader scans, each
+// One description of a study's per-case table, written two ways: as a CSV file (every column, at
+// one precision for the whole file) and as the terminal table (the columns a reader scans, each
 // with its own width and format). A driver names each column once, with the function that reads
 // it from a case, so the file and the terminal cannot disagree on what a column holds.
 //
