@@ -20,6 +20,7 @@
 #include "io/run/RunDriver.hpp"
 #include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
+#include "io/run/StudyCases.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/StepLimitCheck.hpp"
 #include "io/scene/Scene.hpp"
@@ -84,30 +85,11 @@ struct Study {
   int errorSamples = 50;
 };
 
-struct CaseResult {
-  int nodes;
-  Real h, dt, criticalDt;
-  long steps;
-  Real errorU, errorV, maxErrorU;
-  double setupSeconds, wallSeconds;  // wallSeconds: the time loop's
-  std::string note;  // stability.allow_growth: what ran above a limit on purpose
-  std::vector<std::string> files;  // the error series and profile written, relative to the output folder
+struct CaseResult : StudyCase {
+  int nodes = 0;
+  Real h = 0;
+  Real errorU = 0, errorV = 0, maxErrorU = 0;
   Real orderU = std::nan(""), orderV = std::nan("");
-
-  CaseRecord record(Real endTime) const {
-    CaseRecord c;
-    c.name = std::to_string(nodes) + " nodes";
-    c.particles = nodes;
-    c.steps = steps;
-    c.timeStep = dt;
-    c.stableTimeStep = criticalDt;
-    c.simulatedTime = endTime;
-    c.setupSeconds = setupSeconds;
-    c.loopSeconds = wallSeconds;
-    c.errors = {{"relative_l2_u", errorU}, {"relative_l2_v", errorV}, {"max_relative_l2_u_over_time", maxErrorU}};
-    c.primaryError = "relative_l2_u";
-    return c;
-  }
 };
 
 // convergence.csv and the terminal table, one column each.
@@ -116,16 +98,16 @@ CaseTable<CaseResult> convergenceTable() {
   CaseTable<CaseResult> t;
   t.column("nodes", [](R r) { return r.nodes; }, TerminalColumn("nodes", 6))
       .column("h [m]", [](R r) { return r.h; }, TerminalColumn("h", 10))
-      .column("dt [s]", [](R r) { return r.dt; }, TerminalColumn("dt", 10))
-      .column("critical_dt [s]", [](R r) { return r.criticalDt; }, TerminalColumn("dt_crit", 12))
-      .column("steps", [](R r) { return r.steps; })
+      .column("dt [s]", [](R r) { return r.record.timeStep; }, TerminalColumn("dt", 10))
+      .column("critical_dt [s]", [](R r) { return r.record.stableTimeStep; }, TerminalColumn("dt_crit", 12))
+      .column("steps", [](R r) { return r.record.steps; })
       .column("relative_l2_u", [](R r) { return r.errorU; }, TerminalColumn("L2(u)", 12).precision(3))
       .column("order_u", [](R r) { return r.orderU; }, TerminalColumn("order", 8).precision(3))
       .column("relative_l2_v", [](R r) { return r.errorV; }, TerminalColumn("L2(v)", 12).precision(3))
       .column("order_v", [](R r) { return r.orderV; }, TerminalColumn("order", 8).precision(3))
       .column("max_relative_l2_u_over_time", [](R r) { return r.maxErrorU; },
               TerminalColumn("max_t L2(u)", 12).precision(3))
-      .column("wall_time [s]", [](R r) { return r.wallSeconds; });
+      .column("wall_time [s]", [](R r) { return r.record.loopSeconds; });
   return t;
 }
 
@@ -247,8 +229,26 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
   const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
 
   const Errors e = sampler.errors(integrator->state());
-  CaseResult result{nodeCount, h, dt, criticalDt, stats.steps, std::sqrt(e.u / e.uNorm), std::sqrt(e.v / e.vNorm),
-                    sampler.maxRelativeU(), setupSeconds, stats.wallSeconds, note, {}};
+  CaseResult result;
+  result.nodes = nodeCount;
+  result.h = h;
+  result.errorU = std::sqrt(e.u / e.uNorm);
+  result.errorV = std::sqrt(e.v / e.vNorm);
+  result.maxErrorU = sampler.maxRelativeU();
+  if (!note.empty()) result.notes.push_back(note);
+  CaseRecord& record = result.record;
+  record.name = std::to_string(nodeCount) + " nodes";
+  record.particles = nodeCount;
+  record.steps = stats.steps;
+  record.timeStep = dt;
+  record.stableTimeStep = criticalDt;
+  record.simulatedTime = scene.integrator.endTime;
+  record.setupSeconds = setupSeconds;
+  record.loopSeconds = stats.wallSeconds;
+  record.errors = {{"relative_l2_u", result.errorU},
+                   {"relative_l2_v", result.errorV},
+                   {"max_relative_l2_u_over_time", result.maxErrorU}};
+  record.primaryError = "relative_l2_u";
   if (writeSeries) {
     const std::string name = "nodes-" + std::to_string(nodeCount);
     const std::string stem = folder + "/" + name;
@@ -312,37 +312,28 @@ int main(int argc, char** argv) {
     const Study study = readStudy(reader);
     reader.checkAllKeysRead();
     const std::string folder = prepareOutputFolder(cli.options(), study.scene.output.folder, reader);
-    std::vector<CaseResult> results;
-    for (std::size_t r = 0; r < study.nodes.size(); ++r) {
-      results.push_back(runCase(study, study.nodes[r], folder, true));
-      if (!cli.options().quiet) std::cerr << "  done " << study.nodes[r] << " nodes\n";
-    }
+    std::vector<CaseResult> results =
+        runCases(study.nodes, [&](int nodes) { return runCase(study, nodes, folder, true); }, !cli.options().quiet);
     storeObservedOrders(results, &CaseResult::h, &CaseResult::errorU, &CaseResult::orderU);
     storeObservedOrders(results, &CaseResult::h, &CaseResult::errorV, &CaseResult::orderV);
     const CaseTable<CaseResult> table = convergenceTable();
     table.writeCsv(folder + "/convergence.csv", results, 17);
     table.print(std::cout, results);
-    RunSummary summary;
-    summary.program = kProgram;
-    summary.scene = study.scene.info.name;
-    summary.method = study.scene.method.name;
-    summary.integrator = study.scene.integrator.name;
-    for (const CaseResult& r : results) {
-      summary.addCase(r.record(study.scene.integrator.endTime));
-      if (!r.note.empty()) summary.notes.add(r.note);
-    }
+    RunSummary summary(kProgram, study.scene.info.name, study.scene.method.name, study.scene.integrator.name);
+    summary.addCases(results);
+    for (const CaseResult& r : results) summary.notes.addAll(r.notes);
     summary.totalsFromCases();
     const CaseResult& finest = results.back();
-    summary.timeStep = finest.dt;
+    summary.timeStep = finest.record.timeStep;
     summary.errors.push_back({"relative_l2_u_finest", finest.errorU});
     summary.errors.push_back({"relative_l2_v_finest", finest.errorV});
     summary.errors.push_back({"max_relative_l2_u_over_time_finest", finest.maxErrorU});
-    summary.figures.push_back({"critical_dt_first", results.front().criticalDt});
+    summary.figures.push_back({"critical_dt_first", results.front().record.stableTimeStep});
     if (results.size() > 1) summary.figures.push_back({"observed_order_u", finest.orderU});
     summary.simulatedTime = study.scene.integrator.endTime;
     summary.notes.add("particles: nodes of the finest case; steps and wall time summed over all cases");
     summary.files.add("convergence.csv");
-    for (const CaseResult& r : results) summary.files.addAll(r.files);
+    summary.mergeNotesAndFiles(results);
     summary.conclude(folder, &std::cout);
     return 0;
   });

@@ -76,7 +76,8 @@ CaseResult runCase(const Settings& settings, Real dx, const std::string& folder,
     adapter.add(*frames);
     loop.add(adapter, settings.output.every);
   }
-  result.setupSeconds = setup.seconds();
+  CaseRecord& record = result.record;
+  record.setupSeconds = setup.seconds();
   const RunStatistics stats = loop.run(*integrator, settings.endTime);
 
   // Errors at the end time, at the particles' current positions.
@@ -105,11 +106,16 @@ CaseResult runCase(const Settings& settings, Real dx, const std::string& folder,
   }
   profile.commit();
 
-  result.particles = n;
-  result.steps = stats.steps;
-  result.lastStep = integrator->stepSize();
+  std::ostringstream name;
+  name << "dx = " << dx;
+  record.name = name.str();
+  record.particles = n;
+  record.steps = stats.steps;
+  record.timeStep = integrator->stepSize();  // the last step
   // The step is cfl times the method's step criteria unless a fixed step was asked for.
-  if (settings.integration.fixedStep <= 0) result.stableStep = result.lastStep / settings.integration.cfl;
+  if (settings.integration.fixedStep <= 0) record.stableTimeStep = record.timeStep / settings.integration.cfl;
+  record.simulatedTime = settings.endTime;
+  record.loopSeconds = stats.wallSeconds;
   result.meanNeighbours = system.meanNeighbourCount();
   result.l1Velocity = errorV / normV;
   result.l1Stress = errorS / normS;
@@ -117,7 +123,12 @@ CaseResult runCase(const Settings& settings, Real dx, const std::string& folder,
   result.frontErrorOverDx = (measuredFront(x, sigma, exact.interfaceStress()) - exact.frontPosition(t)) / dx;
   result.balanceDrift = ledger.largestBalanceDrift();
   result.framesWritten = frames ? frames->framesWritten() : 0;
-  result.wallSeconds = stats.wallSeconds;
+  record.errors = {{"l1_velocity", result.l1Velocity},
+                   {"l1_stress", result.l1Stress},
+                   {"plateau_stress_error", result.plateauStressError},
+                   {"front_error_over_dx", result.frontErrorOverDx}};
+  record.primaryError = "l1_velocity";
+  result.files.push_back(profileFileName(dx));
   return result;
 }
 

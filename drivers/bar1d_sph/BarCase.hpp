@@ -2,6 +2,7 @@
 // One case of the bar1d-sph study: the two bars at one particle spacing, run to the end time, and
 // its errors against the exact solution.
 
+#include "io/run/StudyCases.hpp"
 #include "io/scene/OutputSpec.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSphOptions.hpp"
 #include "study/SolidIntegration.hpp"
@@ -24,12 +25,8 @@ struct Settings {
   OutputSpec output;
 };
 
-struct CaseResult {
+struct CaseResult : StudyCase {
   Real dx = 0;
-  Index particles = 0;
-  long steps = 0;
-  Real lastStep = 0;
-  Real stableStep = std::nan("");  // the method's step criteria at the last step (unknown for a fixed step)
   Real meanNeighbours = 0;
   Real l1Velocity = 0;          // ||v - v_exact||_1 / ||v_exact||_1 at the end time
   Real l1Stress = 0;            // ||sigma - sigma_exact||_1 / ||sigma_exact||_1
@@ -37,8 +34,6 @@ struct CaseResult {
   Real frontErrorOverDx = 0;    // (measured right front - c t) / dx
   Real balanceDrift = 0;        // EnergyLedger::largestBalanceDrift
   long framesWritten = 0;
-  double setupSeconds = 0;
-  double wallSeconds = 0;        // the time loop's
   Real orderVelocity = std::nan(""), orderStress = std::nan("");
 };
 

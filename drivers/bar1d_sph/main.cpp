@@ -84,8 +84,8 @@ CaseTable<CaseResult> casesTable() {
   using R = const CaseResult&;
   CaseTable<CaseResult> t;
   t.column("dx [m]", [](R r) { return r.dx; }, TerminalColumn("dx", 9))
-      .column("particles", [](R r) { return r.particles; }, TerminalColumn("N", 7))
-      .column("steps", [](R r) { return r.steps; }, TerminalColumn("steps", 8))
+      .column("particles", [](R r) { return r.record.particles; }, TerminalColumn("N", 7))
+      .column("steps", [](R r) { return r.record.steps; }, TerminalColumn("steps", 8))
       .column("mean_neighbours", [](R r) { return r.meanNeighbours; })
       .column("l1_velocity", [](R r) { return r.l1Velocity; }, TerminalColumn("L1(v)", 11))
       .column("order_velocity", [](R r) { return r.orderVelocity; }, TerminalColumn("order", 7).precision(3))
@@ -94,28 +94,8 @@ CaseTable<CaseResult> casesTable() {
       .column("plateau_stress_error", [](R r) { return r.plateauStressError; }, TerminalColumn("plateau", 11))
       .column("front_error_over_dx", [](R r) { return r.frontErrorOverDx; }, TerminalColumn("front/dx", 10))
       .column("balance_drift", [](R r) { return r.balanceDrift; }, TerminalColumn("drift", 11))
-      .column("wall_time [s]", [](R r) { return r.wallSeconds; }, TerminalColumn("wall s", 9).precision(3));
+      .column("wall_time [s]", [](R r) { return r.record.loopSeconds; }, TerminalColumn("wall s", 9).precision(3));
   return t;
-}
-
-CaseRecord caseRecord(const CaseResult& r, Real endTime) {
-  CaseRecord c;
-  std::ostringstream name;
-  name << "dx = " << r.dx;
-  c.name = name.str();
-  c.particles = r.particles;
-  c.steps = r.steps;
-  c.timeStep = r.lastStep;
-  c.stableTimeStep = r.stableStep;
-  c.simulatedTime = endTime;
-  c.setupSeconds = r.setupSeconds;
-  c.loopSeconds = r.wallSeconds;
-  c.errors = {{"l1_velocity", r.l1Velocity},
-              {"l1_stress", r.l1Stress},
-              {"plateau_stress_error", r.plateauStressError},
-              {"front_error_over_dx", r.frontErrorOverDx}};
-  c.primaryError = "l1_velocity";
-  return c;
 }
 
 }  // namespace
@@ -133,31 +113,24 @@ int main(int argc, char** argv) {
     reader.checkAllKeysRead();
     const std::string folder = prepareOutputFolder(cli.options(), scene.output.folder, reader);
 
-    std::vector<CaseResult> results;
-    for (Real dx : settings.spacings) {
-      results.push_back(runCase(settings, dx, folder, std::abs(dx - settings.frameSpacing) < 1e-12 * dx));
-      if (!cli.options().quiet) std::cerr << "  done dx = " << dx << '\n';
-    }
+    std::vector<CaseResult> results = runCases(
+        settings.spacings,
+        [&](Real dx) { return runCase(settings, dx, folder, std::abs(dx - settings.frameSpacing) < 1e-12 * dx); },
+        !cli.options().quiet);
 
-    RunSummary summary;
+    RunSummary summary(kProgram, scene.info.name, scene.method.name, settings.integration.integrator);
     summary.files.add("cases.csv");
-    summary.program = kProgram;
-    summary.scene = scene.info.name;
-    summary.method = scene.method.name;
-    summary.integrator = settings.integration.integrator;
     storeObservedOrders(results, &CaseResult::dx, &CaseResult::l1Velocity, &CaseResult::orderVelocity);
     storeObservedOrders(results, &CaseResult::dx, &CaseResult::l1Stress, &CaseResult::orderStress);
     const CaseTable<CaseResult> table = casesTable();
     table.writeCsv(folder + "/cases.csv", results, 10);
     table.print(std::cout, results);
-    for (const CaseResult& r : results) {
-      summary.addCase(caseRecord(r, settings.endTime));
-      summary.files.add(profileFileName(r.dx));
-    }
+    summary.addCases(results);
+    summary.mergeNotesAndFiles(results);
     summary.totalsFromCases();
     summary.meanNeighbours = results.back().meanNeighbours;
     const CaseResult& finest = results.back();
-    summary.timeStep = finest.lastStep;
+    summary.timeStep = finest.record.timeStep;
     summary.simulatedTime = settings.endTime;
     summary.errors.push_back({"l1_velocity_finest", finest.l1Velocity});
     summary.errors.push_back({"l1_stress_finest", finest.l1Stress});

@@ -183,13 +183,15 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   const Scene& scene = study.scene;
   CaseResult result;
   result.settings = settings;
+  CaseRecord& record = result.record;
+  record.name = settings.name;
   const Stopwatch assemblyClock;
 
   // particles, then the whole very weak SPH set-up of the scene: neighbours, the operator (eqs.
   // 21-22), mass, dashpots (eqs. 31-32), loads (eq. 19), prescribed faces (eq. 30), smoothing
   // (eq. 33) and deconvolution (eq. 35)
   const ParticleSet<D> particles = buildParticles<D>(settings.geometry);
-  result.particles = particles.physicalCount();
+  record.particles = particles.physicalCount();
   result.ghosts = particles.size() - particles.physicalCount();
   const VeryWeakSphSpec& spec = settings.method;
   VeryWeakSphProblem<D> problem(
@@ -202,13 +204,14 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
 
   // time step: a fraction of the operator's stable central-difference step
   const StableTimeStep stable = centralDifferenceStableStep(system, 1e-6, 5000);
-  result.stableStepEstimate = stable.estimate();
+  record.stableTimeStep = stable.estimate();
   result.stableStepGershgorin = stable.safe();
   const Real stableStep = stable.usable();
   if (!stable.converged)
     result.notes.push_back(settings.name + ": power iteration did not converge; the Gershgorin step is used");
   const Real dt = scene.integrator.timeStepFor(stableStep);
-  result.timeStep = dt;
+  record.timeStep = dt;
+  record.simulatedTime = scene.integrator.endTime;
   // The step against the integrator's own limit before any work (exit 2 above it).
   const StepLimitCheck check =
       checkStepLimit(scene.integrator, scene.stability, 2 / stableStep, dt, stableStep,
@@ -261,7 +264,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   // observers: stability, probes (raw and deconvolved), frames
   const std::vector<Probe> probes = resolveProbes(scene.probes, particles);
   LambProbes recorder(probes, problem.deconvolution());
-  result.assemblySeconds = assemblyClock.seconds();
+  record.setupSeconds = assemblyClock.seconds();
 
   StabilityMonitor monitor(scene.stability.options(D));
   ProgressReporter reporter(scene.integrator.endTime, particles.physicalCount(), progress);
@@ -292,8 +295,8 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     if (scene.output.energy) ledger.series().writeCsv(folder + "/" + energyFile);
     throw;
   }
-  result.steps = stats.steps;
-  result.runSeconds = stats.wallSeconds;
+  record.steps = stats.steps;
+  record.loopSeconds = stats.wallSeconds;
   result.energyFinalFraction = ledger.finalEnergyFraction();
   result.energyBalanceDrift = ledger.largestBalanceDrift();
   result.energyGrowth = ledger.growthMessage();
@@ -341,6 +344,17 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     }
     result.probes.push_back(r);
   }
+  // The record's primary error: the largest reported relative L2 error over the probes with an exact response.
+  Real largest = -1;
+  for (const ProbeResult& p : result.probes)
+    if (p.hasExact) {
+      record.errors.push_back({p.name + "_relative_l2", p.reported.relativeL2});
+      largest = std::max(largest, p.reported.relativeL2);
+    }
+  if (largest >= 0) {
+    record.errors.push_back({"largest_relative_l2", largest});
+    record.primaryError = "largest_relative_l2";
+  }
   writeProbes(folder + "/" + settings.name + "-probes.csv", probes, recorder, exactSeries);
   if (exact && settings.writeFrames) {
     // The exact response on a fine time grid, for the figures (the errors use the run's samples).
@@ -368,7 +382,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   }
   result.files.push_back(settings.name + "-probes.csv");
   frameOutputReport(settings.name, frames, images).appendTo(result.files, result.notes);
-  result.peakMemoryMiB = peakMemoryMiB();
+  record.peakMemoryMiB = peakMemoryMiB();
   return result;
 }
 

@@ -4,7 +4,7 @@
 // surface response of the half-space.
 
 #include "analysis/SignalComparison.hpp"
-#include "core/Stopwatch.hpp"
+#include "io/run/StudyCases.hpp"
 #include "io/scene/Scene.hpp"
 #include "study/VeryWeakSphSpec.hpp"
 
@@ -34,29 +34,22 @@ struct ProbeResult {
   Real kernelFloor = std::numeric_limits<Real>::quiet_NaN();
 };
 
-struct CaseResult {
+// The record (StudyCase) holds particles, steps, dt, the stable step estimate, the set-up
+// (assembly) and loop times and the peak memory (of the process when the case ended: cases run
+// smallest first).
+struct CaseResult : StudyCase {
   CaseSettings settings;
-  Index particles = 0, ghosts = 0;
+  Index ghosts = 0;
   Real smoothingLength = 0;
   Real meanNeighbours = 0;
   Index operatorNonZeros = 0;
   Real operatorMiB = 0;             // K, T, C and M in CSR (values + indices)
-  Real stableStepEstimate = 0, stableStepGershgorin = 0;
-  Real timeStep = 0;
-  long steps = 0;
-  double assemblySeconds = 0, runSeconds = 0;
+  Real stableStepGershgorin = 0;
   // The energy ledger: kinetic + |strain| at the end over its largest value, the largest balance
   // drift over the largest energy, and the growth the run went on through (stability.allow_growth).
   Real energyFinalFraction = 0, energyBalanceDrift = 0;
   std::string energyGrowth;
-  double peakMemoryMiB = 0;         // of the process when the case ended (cases run smallest first)
   std::vector<ProbeResult> probes;
-  std::vector<std::string> files;   // written, relative to the output folder
-  std::vector<std::string> notes;
-
-  double particleStepsPerSecond() const {
-    return mfwave::particleStepsPerSecond(static_cast<double>(particles), static_cast<double>(steps), runSeconds);
-  }
 };
 
 struct StudySettings {

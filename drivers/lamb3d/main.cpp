@@ -23,6 +23,7 @@
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/RunSummary.hpp"
+#include "io/run/StudyCases.hpp"
 #include "io/run/SceneDriver.hpp"
 #include "io/scene/Format.hpp"
 #include "io/scene/LoadScene.hpp"
@@ -171,20 +172,20 @@ CaseTable<CaseResult> casesTable(const std::vector<ProbeResult>& probes) {
       .column("smoothing_rate [1/s]", [](R r) { return r.settings.method.smoothingRate; })
       .column("spacing [m]", [](R r) { return r.settings.geometry.spacing; }, TerminalColumn("dx", 8))
       .column("h [m]", [](R r) { return r.smoothingLength; })
-      .column("particles", [](R r) { return r.particles; }, TerminalColumn("particles", 10))
+      .column("particles", [](R r) { return r.record.particles; }, TerminalColumn("particles", 10))
       .column("ghosts", [](R r) { return r.ghosts; })
       .column("mean_neighbours", [](R r) { return r.meanNeighbours; })
       .column("operator_nonzeros", [](R r) { return r.operatorNonZeros; })
       .column("operator [MiB]", [](R r) { return r.operatorMiB; })
-      .column("stable_step_estimate [s]", [](R r) { return r.stableStepEstimate; })
+      .column("stable_step_estimate [s]", [](R r) { return r.record.stableTimeStep; })
       .column("stable_step_gershgorin [s]", [](R r) { return r.stableStepGershgorin; })
-      .column("dt [s]", [](R r) { return r.timeStep; }, TerminalColumn("dt", 9))
-      .column("steps", [](R r) { return r.steps; }, TerminalColumn("steps", 7))
-      .column("assembly [s]", [](R r) { return r.assemblySeconds; })
-      .column("run [s]", [](R r) { return r.runSeconds; })
-      .column("wall [s]", [](R r) { return r.assemblySeconds + r.runSeconds; }, TerminalColumn("wall[s]", 9).precision(3))
-      .column("peak_memory [MiB]", [](R r) { return r.peakMemoryMiB; }, TerminalColumn("MiB", 9))
-      .column("particle_steps_per_second", [](R r) { return r.particleStepsPerSecond(); })
+      .column("dt [s]", [](R r) { return r.record.timeStep; }, TerminalColumn("dt", 9))
+      .column("steps", [](R r) { return r.record.steps; }, TerminalColumn("steps", 7))
+      .column("assembly [s]", [](R r) { return r.record.setupSeconds; })
+      .column("run [s]", [](R r) { return r.record.loopSeconds; })
+      .column("wall [s]", [](R r) { return r.record.setupSeconds + r.record.loopSeconds; }, TerminalColumn("wall[s]", 9).precision(3))
+      .column("peak_memory [MiB]", [](R r) { return r.record.peakMemoryMiB; }, TerminalColumn("MiB", 9))
+      .column("particle_steps_per_second", [](R r) { return r.record.particleStepsPerSecond(); })
       .column("energy_final_fraction", [](R r) { return r.energyFinalFraction; })
       .column("energy_balance_drift", [](R r) { return r.energyBalanceDrift; });
   for (std::size_t k = 0; k < probes.size(); ++k)
@@ -216,32 +217,6 @@ CaseTable<CaseResult> casesTable(const std::vector<ProbeResult>& probes) {
   return t;
 }
 
-// The case in the layout every tool reads; its primary error is the largest reported relative L2
-// error over the probes that have an exact response.
-CaseRecord caseRecord(const CaseResult& r, Real endTime) {
-  CaseRecord c;
-  c.name = r.settings.name;
-  c.particles = r.particles;
-  c.steps = r.steps;
-  c.timeStep = r.timeStep;
-  c.stableTimeStep = r.stableStepEstimate;
-  c.simulatedTime = endTime;
-  c.setupSeconds = r.assemblySeconds;
-  c.loopSeconds = r.runSeconds;
-  c.peakMemoryMiB = r.peakMemoryMiB;
-  Real largest = -1;
-  for (const ProbeResult& p : r.probes)
-    if (p.hasExact) {
-      c.errors.push_back({p.name + "_relative_l2", p.reported.relativeL2});
-      largest = std::max(largest, p.reported.relativeL2);
-    }
-  if (largest >= 0) {
-    c.errors.push_back({"largest_relative_l2", largest});
-    c.primaryError = "largest_relative_l2";
-  }
-  return c;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -256,32 +231,27 @@ int main(int argc, char** argv) {
     reader.checkAllKeysRead();
     const std::string folder = prepareOutputFolder(cli.options(), plan.study.scene.output.folder, reader);
 
-    std::vector<CaseResult> results;
-    for (const CaseSettings& settings : plan.cases) {
-      results.push_back(runCase(plan.study, settings, folder, !cli.options().quiet));
-      if (!cli.options().quiet)
-        std::cerr << "  done " << settings.name << " (" << results.back().particles << " particles)\n";
-    }
+    const bool progress = !cli.options().quiet;
+    const std::vector<CaseResult> results = runCases(
+        plan.cases, [&](const CaseSettings& settings) { return runCase(plan.study, settings, folder, progress); },
+        progress);
     const CaseTable<CaseResult> table = casesTable(results.front().probes);
     table.writeCsv(folder + "/cases.csv", results, 8);
     std::cout << "(probe L2: reported / raw; reported = deconvolved for the published variant)\n";
     table.print(std::cout, results);
 
     const CaseResult& paper = results.front();  // the scene's variant at its spacing
-    RunSummary summary;
+    const Scene& scene = plan.study.scene;
+    RunSummary summary(kProgram, scene.info.name, scene.method.name, scene.integrator.name);
     summary.files.add("cases.csv");
-    summary.program = kProgram;
-    summary.scene = plan.study.scene.info.name;
-    summary.method = plan.study.scene.method.name;
-    summary.integrator = plan.study.scene.integrator.name;
-    summary.particles = paper.particles;
+    summary.particles = paper.record.particles;
     summary.meanNeighbours = paper.meanNeighbours;
-    summary.timeStep = paper.timeStep;
-    summary.simulatedTime = plan.study.scene.integrator.endTime;
+    summary.timeStep = paper.record.timeStep;
+    summary.simulatedTime = scene.integrator.endTime;
+    summary.addCases(results);
     for (const CaseResult& r : results) {
-      summary.addCase(caseRecord(r, plan.study.scene.integrator.endTime));
-      summary.steps += r.steps;
-      summary.wallSeconds += r.assemblySeconds + r.runSeconds;
+      summary.steps += r.record.steps;
+      summary.wallSeconds += r.record.setupSeconds + r.record.loopSeconds;
     }
     for (const CaseResult& r : results)
       for (const ProbeResult& p : r.probes) {
@@ -294,8 +264,8 @@ int main(int argc, char** argv) {
         if (std::isfinite(p.kernelFloor)) summary.figures.push_back({stem + "_kernel_floor", p.kernelFloor});
       }
     for (const CaseResult& r : results) {
-      summary.figures.push_back({r.settings.name + "_stable_step_estimate", r.stableStepEstimate});
-      summary.figures.push_back({r.settings.name + "_particle_steps_per_second", r.particleStepsPerSecond()});
+      summary.figures.push_back({r.settings.name + "_stable_step_estimate", r.record.stableTimeStep});
+      summary.figures.push_back({r.settings.name + "_particle_steps_per_second", r.record.particleStepsPerSecond()});
       summary.figures.push_back({r.settings.name + "_energy_final_fraction", r.energyFinalFraction});
       summary.figures.push_back({r.settings.name + "_energy_balance_drift", r.energyBalanceDrift});
     }

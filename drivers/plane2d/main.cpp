@@ -16,6 +16,7 @@
 #include "io/run/RunDriver.hpp"
 #include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
+#include "io/run/StudyCases.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/StepLimitCheck.hpp"
 #include "io/scene/Scene.hpp"
@@ -71,28 +72,11 @@ struct Manufactured {
   }
 };
 
-struct CaseResult {
-  int cells;
-  Real h, dt, criticalDt;
-  long steps;
-  Real errorU, errorV;
-  double setupSeconds, wallSeconds;  // wallSeconds: the time loop's
+struct CaseResult : StudyCase {
+  int cells = 0;
+  Real h = 0;
+  Real errorU = 0, errorV = 0;
   Real orderU = std::nan(""), orderV = std::nan("");
-
-  CaseRecord record(Real endTime) const {
-    CaseRecord c;
-    c.name = std::to_string(cells) + " cells";
-    c.particles = (cells + 1) * (cells + 1);
-    c.steps = steps;
-    c.timeStep = dt;
-    c.stableTimeStep = criticalDt;
-    c.simulatedTime = endTime;
-    c.setupSeconds = setupSeconds;
-    c.loopSeconds = wallSeconds;
-    c.errors = {{"relative_l2_u", errorU}, {"relative_l2_v", errorV}};
-    c.primaryError = "relative_l2_u";
-    return c;
-  }
 };
 
 // convergence.csv and the terminal table, one column each.
@@ -101,14 +85,14 @@ CaseTable<CaseResult> convergenceTable() {
   CaseTable<CaseResult> t;
   t.column("cells", [](R r) { return r.cells; }, TerminalColumn("cells", 6))
       .column("h [m]", [](R r) { return r.h; }, TerminalColumn("h", 10))
-      .column("dt [s]", [](R r) { return r.dt; }, TerminalColumn("dt", 11))
-      .column("critical_dt [s]", [](R r) { return r.criticalDt; })
-      .column("steps", [](R r) { return r.steps; })
+      .column("dt [s]", [](R r) { return r.record.timeStep; }, TerminalColumn("dt", 11))
+      .column("critical_dt [s]", [](R r) { return r.record.stableTimeStep; })
+      .column("steps", [](R r) { return r.record.steps; })
       .column("relative_l2_u", [](R r) { return r.errorU; }, TerminalColumn("L2(u)", 12).precision(3))
       .column("order_u", [](R r) { return r.orderU; }, TerminalColumn("order", 8).precision(3))
       .column("relative_l2_v", [](R r) { return r.errorV; }, TerminalColumn("L2(v)", 12).precision(3))
       .column("order_v", [](R r) { return r.orderV; }, TerminalColumn("order", 8).precision(3))
-      .column("wall_time [s]", [](R r) { return r.wallSeconds; });
+      .column("wall_time [s]", [](R r) { return r.record.loopSeconds; });
   return t;
 }
 
@@ -201,7 +185,23 @@ CaseResult runCase(const Scene& scene, int order, Real ratio, Real w, int cells,
     ev += weight[p] * (v.segment<2>(static_cast<Index>(p) * 2) - exact.v(x, s.time)).squaredNorm();
     nv += weight[p] * exact.v(x, s.time).squaredNorm();
   }
-  return {cells, h, dt, criticalDt, stats.steps, std::sqrt(eu / nu), std::sqrt(ev / nv), setupSeconds, stats.wallSeconds};
+  CaseResult result;
+  result.cells = cells;
+  result.h = h;
+  result.errorU = std::sqrt(eu / nu);
+  result.errorV = std::sqrt(ev / nv);
+  CaseRecord& record = result.record;
+  record.name = std::to_string(cells) + " cells";
+  record.particles = (cells + 1) * (cells + 1);
+  record.steps = stats.steps;
+  record.timeStep = dt;
+  record.stableTimeStep = criticalDt;
+  record.simulatedTime = scene.integrator.endTime;
+  record.setupSeconds = setupSeconds;
+  record.loopSeconds = stats.wallSeconds;
+  record.errors = {{"relative_l2_u", result.errorU}, {"relative_l2_v", result.errorV}};
+  record.primaryError = "relative_l2_u";
+  return result;
 }
 
 // Before any step: the exact spectrum of the interior rows on a periodic lattice (at h = 1: with a / h
@@ -248,25 +248,18 @@ int main(int argc, char** argv) {
     reader.checkAllKeysRead();
     std::vector<std::string> stabilityNotes = checkInteriorStability(scene, order, ratio);
     const std::string folder = prepareOutputFolder(cli.options(), scene.output.folder, reader);
-    std::vector<CaseResult> results;
-    for (int c : cells) {
-      results.push_back(runCase(scene, order, ratio, w, c, stabilityNotes));
-      if (!cli.options().quiet) std::cerr << "  done " << c << " cells\n";
-    }
+    std::vector<CaseResult> results = runCases(
+        cells, [&](int c) { return runCase(scene, order, ratio, w, c, stabilityNotes); }, !cli.options().quiet);
     storeObservedOrders(results, &CaseResult::h, &CaseResult::errorU, &CaseResult::orderU);
     storeObservedOrders(results, &CaseResult::h, &CaseResult::errorV, &CaseResult::orderV);
     const CaseTable<CaseResult> table = convergenceTable();
     table.writeCsv(folder + "/convergence.csv", results, 17);
     table.print(std::cout, results);
-    RunSummary summary;
-    summary.program = kProgram;
-    summary.scene = scene.info.name;
-    summary.method = scene.method.name;
-    summary.integrator = scene.integrator.name;
-    for (const CaseResult& r : results) summary.addCase(r.record(scene.integrator.endTime));
+    RunSummary summary(kProgram, scene.info.name, scene.method.name, scene.integrator.name);
+    summary.addCases(results);
     summary.totalsFromCases();
     const CaseResult& finest = results.back();
-    summary.timeStep = finest.dt;
+    summary.timeStep = finest.record.timeStep;
     summary.errors.push_back({"relative_l2_u_finest", finest.errorU});
     summary.errors.push_back({"relative_l2_v_finest", finest.errorV});
     if (results.size() > 1) summary.figures.push_back({"observed_order_u", finest.orderU});

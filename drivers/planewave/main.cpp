@@ -20,6 +20,7 @@
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/RunSummary.hpp"
+#include "io/run/StudyCases.hpp"
 #include "io/run/SceneDriver.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "kernels/KernelFactory.hpp"
@@ -87,32 +88,15 @@ struct Settings {
   LatticeMethodSettings lattice;
 };
 
-struct Outcome {
-  Index particles = 0;
-  long steps = 0;
-  Real dt = 0, criticalDt = 0, endTime = 0, error = 0, loopSeconds = 0, setupSeconds = 0;
+// What a run gave: its canonical record (particles, steps, dt, the limit, end time, times) and error.
+struct Outcome : StudyCase {
+  Real error = 0;
 };
 
 // planewave.csv's one line: the settings and what they gave.
 struct Case {
   Settings s;
   Outcome out;
-
-  CaseRecord record() const {
-    CaseRecord c;
-    c.name = s.method + " " + std::to_string(s.dimension) + "-D, " + std::to_string(s.cells) + " cells, " +
-             s.integrator;
-    c.particles = out.particles;
-    c.steps = out.steps;
-    c.timeStep = out.dt;
-    c.stableTimeStep = out.criticalDt;
-    c.simulatedTime = out.endTime;
-    c.setupSeconds = out.setupSeconds;
-    c.loopSeconds = out.loopSeconds;
-    c.errors = {{"relative_l2_u", out.error}};
-    c.primaryError = "relative_l2_u";
-    return c;
-  }
 };
 
 CaseTable<Case> planeWaveTable() {
@@ -121,18 +105,18 @@ CaseTable<Case> planeWaveTable() {
   t.column("method", [](R c) { return c.s.method; })
       .column("dimension", [](R c) { return c.s.dimension; })
       .column("cells", [](R c) { return c.s.cells; })
-      .column("particles", [](R c) { return c.out.particles; })
+      .column("particles", [](R c) { return c.out.record.particles; })
       .column("direction", [](R c) { return latticeDirectionName(c.s.direction); })
       .column("polarisation", [](R c) { return c.s.shear ? "S" : "P"; })
       .column("integrator", [](R c) { return c.s.integrator; })
       .column("cfl", [](R c) { return c.s.cfl; })
-      .column("dt", [](R c) { return c.out.dt; })
-      .column("critical_dt", [](R c) { return c.out.criticalDt; })
-      .column("steps", [](R c) { return c.out.steps; })
-      .column("end_time", [](R c) { return c.out.endTime; })
+      .column("dt", [](R c) { return c.out.record.timeStep; })
+      .column("critical_dt", [](R c) { return c.out.record.stableTimeStep; })
+      .column("steps", [](R c) { return c.out.record.steps; })
+      .column("end_time", [](R c) { return c.out.record.simulatedTime; })
       .column("relative_l2_u", [](R c) { return c.out.error; })
-      .column("setup_s", [](R c) { return c.out.setupSeconds; })
-      .column("loop_s", [](R c) { return c.out.loopSeconds; });
+      .column("setup_s", [](R c) { return c.out.record.setupSeconds; })
+      .column("loop_s", [](R c) { return c.out.record.loopSeconds; });
   return t;
 }
 
@@ -161,18 +145,19 @@ Outcome run(const Settings& s) {
                            0, 0, -1);
   }
   Outcome out;
-  out.criticalDt = 2 / std::sqrt(extremes.largestOmegaSquared);
+  CaseRecord& record = out.record;
+  record.stableTimeStep = 2 / std::sqrt(extremes.largestOmegaSquared);
   // The limit is exact here (the whole spectrum is known), so a step beyond the integrator's own
   // limit L / omega_max (integrators/StabilityLimit) is refused before any work: round-off would
   // seed the growing modes and a short run could still look accurate.
   const StepVerdict verdict = judgeStep(s.integrator, {}, std::sqrt(extremes.largestOmegaSquared),
-                                        s.cfl * out.criticalDt);
+                                        s.cfl * record.stableTimeStep);
   if (verdict.aboveLimit)
     throw InputError("integrator.cfl", std::to_string(s.cfl) + " is beyond the " + verdict.limit.integrator +
                                            " limit " + std::to_string(verdict.limit.omegaDtLimit) +
                                            " / omega_max = " + std::to_string(verdict.limitDt) +
                                            " of this spectrum (cfl <= " +
-                                           std::to_string(verdict.limitDt / out.criticalDt) + ")");
+                                           std::to_string(verdict.limitDt / record.stableTimeStep) + ")");
 
   const Vec<D> n = latticeDirectionVector<D>(s.direction);
   const Vec<D> k = (s.direction == LatticeDirection::Axis ? 1.0 : std::sqrt(Real(D))) * 2 * kPi * s.wavelengths * n;
@@ -187,13 +172,13 @@ Outcome run(const Settings& s) {
   }
   const Real speed = s.shear ? s.lattice.material.sWaveSpeed() : s.lattice.material.pWaveSpeed();
   const PlaneWave<D> wave(k, e, speed);
-  out.endTime = s.periods * wave.period();
-  out.steps = static_cast<long>(std::ceil(out.endTime / (s.cfl * out.criticalDt) - 1e-9));
-  out.dt = out.endTime / static_cast<Real>(out.steps);
+  record.simulatedTime = s.periods * wave.period();
+  record.steps = static_cast<long>(std::ceil(record.simulatedTime / (s.cfl * record.stableTimeStep) - 1e-9));
+  record.timeStep = record.simulatedTime / static_cast<Real>(record.steps);
 
   // Nodal values of the exact field; collocation unknowns are coefficients d with M d = u.
   const Index nodes = op.nodes();
-  out.particles = nodes;
+  record.particles = nodes;
   auto nodal = [&](Real t, bool velocity) {
     Vector values(op.size());
     for (Index node = 0; node < nodes; ++node) {
@@ -222,15 +207,15 @@ Outcome run(const Settings& s) {
   }
   LinearSecondOrderSystem system(mass, SparseMatrix(), -periodicMatrix(op.acceleration, dx, s.cells));
   auto integrator = makeSecondOrderIntegrator(s.integrator);
-  integrator->initialise(system, 0, u0, v0, out.dt);
-  out.setupSeconds = clock.seconds();
+  integrator->initialise(system, 0, u0, v0, record.timeStep);
+  record.setupSeconds = clock.seconds();
   clock.restart();
   // A growing field stops the run at once: every 16 steps, anything non-finite or a thousand times
   // the initial amplitude (the exact wave keeps its amplitude) is a blow-up.
   const Real limit = 1e3 * std::max<Real>(u0.cwiseAbs().maxCoeff(), 1e-300);
-  for (long step = 1; step <= out.steps; ++step) {
+  for (long step = 1; step <= record.steps; ++step) {
     integrator->step();
-    if (step % 16 != 0 && step != out.steps) continue;
+    if (step % 16 != 0 && step != record.steps) continue;
     const Vector& d = integrator->state().displacement;
     Index worst = 0;
     const Real largest = d.cwiseAbs().maxCoeff(&worst);
@@ -241,11 +226,15 @@ Outcome run(const Settings& s) {
                                  std::to_string(worst / c) + ": the step is beyond the integrator's limit",
                              step, integrator->time(), static_cast<long>(worst / c));
   }
-  out.loopSeconds = clock.seconds();
+  record.loopSeconds = clock.seconds();
   const Vector& d = integrator->state().displacement;
   const Vector u = op.lumped() ? Vector(d) : Vector(mass * d);
-  const Vector exact = nodal(out.endTime, false);
+  const Vector exact = nodal(record.simulatedTime, false);
   out.error = (u - exact).norm() / exact.norm();
+  record.name = s.method + " " + std::to_string(s.dimension) + "-D, " + std::to_string(s.cells) + " cells, " +
+                    s.integrator;
+  record.errors = {{"relative_l2_u", out.error}};
+  record.primaryError = "relative_l2_u";
   return out;
 }
 
@@ -294,23 +283,19 @@ int main(int argc, char** argv) {
     if (!opt.quiet)
       std::cout << s.method << " " << s.dimension << "-D, " << s.cells << " cells, " << s.wavelengths
               << " wavelengths along the " << latticeDirectionName(s.direction) << ", " << (s.shear ? "S" : "P") << ": " << s.integrator << " at "
-              << s.cfl << " of the limit (" << out.steps << " steps): relative L2 error of u " << out.error << '\n';
+              << s.cfl << " of the limit (" << out.record.steps << " steps): relative L2 error of u " << out.error << '\n';
 
-    RunSummary summary;
-    summary.program = kProgram;
-    summary.scene = opt.scenePath.empty() ? "(defaults)" : opt.scenePath;
-    summary.method = s.method;
-    summary.integrator = s.integrator;
-    summary.particles = out.particles;
-    summary.steps = out.steps;
-    summary.timeStep = out.dt;
-    summary.simulatedTime = out.endTime;
+    RunSummary summary(kProgram, opt.scenePath.empty() ? "(defaults)" : opt.scenePath, s.method, s.integrator);
+    summary.particles = out.record.particles;
+    summary.steps = out.record.steps;
+    summary.timeStep = out.record.timeStep;
+    summary.simulatedTime = out.record.simulatedTime;
     summary.wallSeconds = wall.seconds();
-    summary.addCase(cases.front().record());
+    summary.addCase(out.record);
     summary.errors.push_back({"relative_l2_u", out.error});
-    summary.figures.push_back({"critical_dt", out.criticalDt});
-    summary.figures.push_back({"time_step", out.dt});
-    summary.figures.push_back({"loop_seconds", out.loopSeconds});
+    summary.figures.push_back({"critical_dt", out.record.stableTimeStep});
+    summary.figures.push_back({"time_step", out.record.timeStep});
+    summary.figures.push_back({"loop_seconds", out.record.loopSeconds});
     summary.files.add("planewave.csv");
     summary.conclude(folder, opt.quiet ? nullptr : &std::cout);
     return 0;

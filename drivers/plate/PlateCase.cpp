@@ -38,15 +38,15 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
   const PlateLattice lattice =
       cellCentredPlate(study.length, study.thickness, study.lowerY, settings.rows, study.clampLayers);
   result.spacing = lattice.spacing;
-  result.particles = lattice.particles.physicalCount();
+  result.record.particles = lattice.particles.physicalCount();
   result.fixedParticles = static_cast<Index>(lattice.clamp.size());
 
   // the method, the clamp, and the first mode's velocity (GMS)
   UpdatedLagrangianSph<D> system(lattice.particles, study.sph);
   system.fixParticles(lattice.clamp);
   result.smoothingLength = system.smoothingLength();
-  Vector v0 = Vector::Zero(result.particles * D);
-  for (Index i = 0; i < result.particles; ++i)
+  Vector v0 = Vector::Zero(result.record.particles * D);
+  for (Index i = 0; i < result.record.particles; ++i)
     v0[i * D + 1] = plate.initialVelocity(lattice.particles.position(i)[0], settings.velocityFactor);
   const Vector y0 = system.initialState(v0);
   const auto& layout = system.layout();
@@ -64,7 +64,7 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
   GroupMeanRecorder tip("the plate's tip", lattice.tip, D);
   adapter.add(tip, study.tipEvery);
   EnergyLedger<D> ledger(system);
-  ProgressReporter reporter(settings.endTime, result.particles, progress);
+  ProgressReporter reporter(settings.endTime, result.record.particles, progress);
   std::optional<VtkFrameWriter<D>> frames;
   std::optional<PngFrameRenderer<D>> images;
   TimeLoop loop;
@@ -85,12 +85,12 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
       adapter.add(*images, scene.output.every);
     }
   }
-  result.setupSeconds = setupClock.seconds();
+  result.record.setupSeconds = setupClock.seconds();
 
   const RunStatistics stats = loop.run(*integrator, settings.endTime);
-  result.steps = stats.steps;
-  result.runSeconds = stats.wallSeconds;
-  result.meanStep = stats.steps > 0 ? (stats.endTime - stats.startTime) / static_cast<Real>(stats.steps) : 0;
+  result.record.steps = stats.steps;
+  result.record.loopSeconds = stats.wallSeconds;
+  result.record.timeStep = stats.steps > 0 ? (stats.endTime - stats.startTime) / static_cast<Real>(stats.steps) : 0;
   result.meanNeighbours = system.meanNeighbourCount();
   result.neighbourRebuilds = system.neighbourRebuilds();
 
@@ -129,6 +129,13 @@ void analyseTip(PlateCaseResult& result, const TimeSeries& tip, const Cantilever
                                                    : std::numeric_limits<Real>::quiet_NaN();
   if (result.tip.halfPeriods < 2)
     result.notes.push_back(result.settings.name + ": fewer than two half periods of the tip were seen; no period");
+  CaseRecord& record = result.record;
+  record.name = result.settings.name;
+  record.simulatedTime = result.settings.endTime;
+  record.errors = {{"period_error_thin", result.thinError()},
+                   {"period_error_timoshenko", result.timoshenkoError()},
+                   {"abs_period_error_timoshenko", std::abs(result.timoshenkoError())}};
+  record.primaryError = "abs_period_error_timoshenko";
 }
 
 PlateCaseResult runPlateCase(const PlateStudy& study, const PlateCaseSettings& settings, const std::string& folder,

@@ -7,7 +7,7 @@
 #include "analysis/Oscillation.hpp"
 
 #include "analytic/CantileverPlate.hpp"
-#include "core/Stopwatch.hpp"
+#include "io/run/StudyCases.hpp"
 #include "io/scene/Scene.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSphOptions.hpp"
 #include "observers/TimeSeries.hpp"
@@ -48,17 +48,15 @@ struct PlateCaseSettings {
   bool writeFrames = false;  // VTK frames (and PNG pictures) as the scene's [output] asks
 };
 
-struct PlateCaseResult {
+// The record (StudyCase): particles (all, clamp included), steps, the mean dt, set-up and loop times,
+// and the period errors (analyseTip).
+struct PlateCaseResult : StudyCase {
   PlateCaseSettings settings;
   Real spacing = 0;          // dp
-  Index particles = 0;       // all particles, clamp included
   Index fixedParticles = 0;  // clamp particles (SPH) or clamped nodes (very weak form)
   Real smoothingLength = 0;
   Real meanNeighbours = 0;
   long neighbourRebuilds = 0;
-  long steps = 0;
-  Real meanStep = 0;
-  double setupSeconds = 0, runSeconds = 0;
   Oscillation tip;             // of the tip's transverse displacement
   Real tipStartVelocity = 0;   // v_y of the tip column at t = 0
   Real expectedAmplitude = 0;  // tipStartVelocity / (2 pi / measured period)
@@ -73,16 +71,11 @@ struct PlateCaseResult {
   // (the zig-zag ratio alone is large whenever the whole plate is near rest, at every turn).
   Real largestZigzagEnergy = std::numeric_limits<Real>::quiet_NaN();
   Real smallestSpacingRatio = std::numeric_limits<Real>::quiet_NaN();
-  std::vector<std::string> files;
-  std::vector<std::string> notes;
 
   static constexpr int earlyPeriods = 5;  // earlyPeriod(): over the first five periods
   Real periodsRun() const { return tip.period > 0 ? settings.endTime / tip.period : 0; }
   Real thinError() const { return tip.period / thinPeriod - 1; }
   Real timoshenkoError() const { return tip.period / timoshenkoPeriod - 1; }
-  double particleStepsPerSecond() const {
-    return mfwave::particleStepsPerSecond(static_cast<double>(particles), static_cast<double>(steps), runSeconds);
-  }
 };
 
 // Runs one case; writes "<folder>/<case>-tip.csv", "<folder>/<case>-energy.csv" and, when asked,
@@ -90,8 +83,9 @@ struct PlateCaseResult {
 PlateCaseResult runPlateCase(const PlateStudy& study, const PlateCaseSettings& settings, const std::string& folder,
                              bool progress);
 
-// Fills the tip analysis (period, amplitudes), the reference periods and the expected amplitude of
-// `result` from the tip history (columns u_x, u_y, v_x, v_y). Shared by both methods' runs.
+// Fills the tip analysis (period, amplitudes), the reference periods, the expected amplitude and
+// the record's errors (ranked by |period error vs Timoshenko|) of `result` from the tip history
+// (columns u_x, u_y, v_x, v_y). Shared by both methods' runs.
 void analyseTip(PlateCaseResult& result, const TimeSeries& tip, const CantileverPlate& plate, Real shearCoefficient);
 
 }  // namespace mfwave::plate

@@ -43,7 +43,7 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
   if (study.veryWeakGhostLayers > 0)
     addGhostLayers<D>(particles, lower, upper, dx, static_cast<int>(study.veryWeakGhostLayers), allFaces(D));
   const Index n = particles.physicalCount();
-  result.particles = n;
+  result.record.particles = n;
   result.smoothingLength = study.veryWeakSmoothingLengthRatio * dx;
 
   // the consistent variant (patch-test exact rows; the state is the nodal displacement), the clamp
@@ -110,15 +110,15 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
   loop.add(reporter);
   loop.add(tip, study.tipEvery);
   loop.add(energy, study.energyEvery);
-  result.setupSeconds = setupClock.seconds();
+  result.record.setupSeconds = setupClock.seconds();
 
   const RunStatistics stats = loop.run(integrator, settings.endTime);
   if (!ledger.growthMessage().empty())
     result.notes.push_back(settings.name + ": stability.allow_growth let the run go on through: " +
                            ledger.growthMessage());
-  result.steps = stats.steps;
-  result.runSeconds = stats.wallSeconds;
-  result.meanStep = dt;
+  result.record.steps = stats.steps;
+  result.record.loopSeconds = stats.wallSeconds;
+  result.record.timeStep = dt;
   // 1/2 v^T M v + 1/2 u^T K u: the consistent rows make K slightly non-symmetric, so this is the
   // energy of the symmetric part; its drift is reported as the ledger's balance is for the SPH.
   result.energyDrift = energy.maxRelativeDrift();

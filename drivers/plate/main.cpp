@@ -32,6 +32,7 @@
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/RunSummary.hpp"
+#include "io/run/StudyCases.hpp"
 #include "io/run/SceneDriver.hpp"
 #include "io/scene/Format.hpp"
 #include "io/scene/IntegratorSpec.hpp"
@@ -301,18 +302,18 @@ CaseTable<PlateCaseResult> casesTable() {
       .column("H_over_dp", [](R r) { return r.settings.rows; }, TerminalColumn("H/dp", 6))
       .column("dp [m]", [](R r) { return r.spacing; })
       .column("V_f", [](R r) { return r.settings.velocityFactor; })
-      .column("particles", [](R r) { return r.particles; }, TerminalColumn("particles", 10))
+      .column("particles", [](R r) { return r.record.particles; }, TerminalColumn("particles", 10))
       .column("fixed_particles", [](R r) { return r.fixedParticles; })
       .column("h [m]", [](R r) { return r.smoothingLength; })
       .column("mean_neighbours", [](R r) { return r.meanNeighbours; })
       .column("neighbour_rebuilds", [](R r) { return r.neighbourRebuilds; })
-      .column("steps", [](R r) { return r.steps; }, TerminalColumn("steps", 8))
-      .column("mean_dt [s]", [](R r) { return r.meanStep; })
+      .column("steps", [](R r) { return r.record.steps; }, TerminalColumn("steps", 8))
+      .column("mean_dt [s]", [](R r) { return r.record.timeStep; })
       .column("end_time [s]", [](R r) { return r.settings.endTime; })
-      .column("setup [s]", [](R r) { return r.setupSeconds; })
-      .column("run [s]", [](R r) { return r.runSeconds; })
-      .column("wall [s]", [](R r) { return r.setupSeconds + r.runSeconds; }, TerminalColumn("wall[s]", 9).precision(3))
-      .column("particle_steps_per_second", [](R r) { return r.particleStepsPerSecond(); })
+      .column("setup [s]", [](R r) { return r.record.setupSeconds; })
+      .column("run [s]", [](R r) { return r.record.loopSeconds; })
+      .column("wall [s]", [](R r) { return r.record.setupSeconds + r.record.loopSeconds; }, TerminalColumn("wall[s]", 9).precision(3))
+      .column("particle_steps_per_second", [](R r) { return r.record.particleStepsPerSecond(); })
       .column("period [s]", [](R r) { return r.tip.period; }, TerminalColumn("period", 10).precision(5))
       .column("half_periods", [](R r) { return r.tip.halfPeriods; })
       .column("periods_run", [](R r) { return r.periodsRun(); }, TerminalColumn("periods", 8).precision(3))
@@ -342,23 +343,6 @@ CaseTable<PlateCaseResult> casesTable() {
               TerminalColumn("zz energy", 10).precision(3))
       .column("smallest_spacing_ratio", [](R r) { return r.smallestSpacingRatio; });
   return t;
-}
-
-// The case in the layout every tool reads; ranked by the size of its period error against Timoshenko.
-CaseRecord caseRecord(const PlateCaseResult& r) {
-  CaseRecord c;
-  c.name = r.settings.name;
-  c.particles = r.particles;
-  c.steps = r.steps;
-  c.timeStep = r.meanStep;
-  c.simulatedTime = r.settings.endTime;
-  c.setupSeconds = r.setupSeconds;
-  c.loopSeconds = r.runSeconds;
-  c.errors = {{"period_error_thin", r.thinError()},
-              {"period_error_timoshenko", r.timoshenkoError()},
-              {"abs_period_error_timoshenko", std::abs(r.timoshenkoError())}};
-  c.primaryError = "abs_period_error_timoshenko";
-  return c;
 }
 
 // Prints and records (summary errors and figures under `prefix`) the observed order and the
@@ -431,31 +415,25 @@ int main(int argc, char** argv) {
     reader.checkAllKeysRead();
     const std::string folder = prepareOutputFolder(cli.options(), plan.study.scene.output.folder, reader);
 
-    std::vector<PlateCaseResult> results;
-    for (const PlateCaseSettings& settings : plan.cases) {
-      results.push_back(runPlateCase(plan.study, settings, folder, !cli.options().quiet));
-      if (!cli.options().quiet)
-        std::cerr << "  done " << settings.name << " (" << results.back().particles << " particles, "
-                  << results.back().steps << " steps)\n";
-    }
+    const bool progress = !cli.options().quiet;
+    const std::vector<PlateCaseResult> results = runCases(
+        plan.cases, [&](const PlateCaseSettings& settings) { return runPlateCase(plan.study, settings, folder, progress); },
+        progress);
     casesTable().writeCsv(folder + "/cases.csv", results, 8);
     printTable(std::cout, results);
 
     const PlateCaseResult& main = results.front();
-    RunSummary summary;
+    const Scene& scene = plan.study.scene;
+    RunSummary summary(kProgram, scene.info.name, scene.method.name, scene.integrator.name);
     summary.files.add("cases.csv");
-    summary.program = kProgram;
-    summary.scene = plan.study.scene.info.name;
-    summary.method = plan.study.scene.method.name;
-    summary.integrator = plan.study.scene.integrator.name;
-    summary.particles = main.particles;
+    summary.particles = main.record.particles;
     summary.meanNeighbours = main.meanNeighbours;
-    summary.timeStep = main.meanStep;
+    summary.timeStep = main.record.timeStep;
     summary.simulatedTime = main.settings.endTime;
+    summary.addCases(results);
     for (const PlateCaseResult& r : results) {
-      summary.addCase(caseRecord(r));
-      summary.steps += r.steps;
-      summary.wallSeconds += r.setupSeconds + r.runSeconds;
+      summary.steps += r.record.steps;
+      summary.wallSeconds += r.record.setupSeconds + r.record.loopSeconds;
     }
     summary.figures.push_back({"thin_period [s]", main.thinPeriod});
     summary.figures.push_back({"timoshenko_period [s]", main.timoshenkoPeriod});
@@ -478,8 +456,8 @@ int main(int argc, char** argv) {
         summary.figures.push_back({c + "_largest_zigzag_energy", r.largestZigzagEnergy});
         summary.figures.push_back({c + "_smallest_spacing_ratio", r.smallestSpacingRatio});
       }
-      summary.figures.push_back({c + "_particle_steps_per_second", r.particleStepsPerSecond()});
-      summary.figures.push_back({c + "_wall [s]", r.setupSeconds + r.runSeconds});
+      summary.figures.push_back({c + "_particle_steps_per_second", r.record.particleStepsPerSecond()});
+      summary.figures.push_back({c + "_wall [s]", r.record.setupSeconds + r.record.loopSeconds});
     }
     std::vector<ConvergenceSample> runSamples;
     for (const PlateCaseResult& r : results)

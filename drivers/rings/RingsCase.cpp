@@ -208,12 +208,14 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   const Scene& scene = study.scene;
   CaseResult result;
   result.settings = settings;
+  CaseRecord& record = result.record;
+  record.name = settings.name;
   const Stopwatch setupClock;
 
   // particles: two rings of concentric particle circles, dp apart
   Index leftCount = 0;
   const ParticleSet<D> particles = makeRings(study, leftCount);
-  result.particles = particles.physicalCount();
+  record.particles = particles.physicalCount();
   result.leftParticles = leftCount;
   result.spacing = scene.geometry.spacing;
 
@@ -231,8 +233,8 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   result.approachSpeed = study.approachFraction * result.soundSpeed;
 
   // the rings approach each other along x, each at approachFraction c0
-  Vector velocity = Vector::Zero(result.particles * D);
-  for (Index i = 0; i < result.particles; ++i)
+  Vector velocity = Vector::Zero(record.particles * D);
+  for (Index i = 0; i < record.particles; ++i)
     velocity[i * D] = i < leftCount ? result.approachSpeed : -result.approachSpeed;
   const Vector y0 = system.initialState(velocity);
   std::unique_ptr<FirstOrderIntegrator> integrator = makeSolidIntegrator(system, y0, study.integration);
@@ -253,7 +255,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   const std::vector<Probe> probes = resolveProbes(scene.probes, particles);
   ProbeRecorder probeRecorder(probes, D);
   if (!probes.empty()) adapter.add(probeRecorder, scene.output.probeEvery);
-  ProgressReporter reporter(endTime, result.particles, progress);
+  ProgressReporter reporter(endTime, record.particles, progress);
 
   std::optional<VtkFrameWriter<D>> frames;
   std::optional<WindowedView> window;
@@ -284,24 +286,24 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   loop.add(tracker);
   loop.add(adapter);
   loop.add(ledger, study.trackEvery);
-  result.setupSeconds = setupClock.seconds();
+  record.setupSeconds = setupClock.seconds();
 
   const Stopwatch runClock;
   try {
     const RunStatistics stats = loop.run(*integrator, endTime);
-    result.steps = stats.steps;
-    result.endTime = stats.endTime;
+    record.steps = stats.steps;
+    record.simulatedTime = stats.endTime;
   } catch (const InstabilityError& e) {
     result.failure = e.what();
-    result.steps = integrator->stepCount();
-    result.endTime = integrator->time();
+    record.steps = integrator->stepCount();
+    record.simulatedTime = integrator->time();
   }
-  result.runSeconds = runClock.seconds();
+  record.loopSeconds = runClock.seconds();
   result.rhsEvaluations = integrator->rhsEvaluations();
   result.meanNeighbours = system.meanNeighbourCount();
   result.neighbourRebuilds = system.neighbourRebuilds();
   result.smallestStep = tracker.smallestStep();
-  result.meanStep = result.steps > 0 ? result.endTime / static_cast<Real>(result.steps) : 0;
+  record.timeStep = record.steps > 0 ? record.simulatedTime / static_cast<Real>(record.steps) : 0;
 
   // energy budget and zero-energy-mode indicators
   const TimeSeries& energy = ledger.series();
@@ -367,7 +369,10 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   }
   frameOutputReport(settings.name, frames, images).appendTo(result.files, result.notes);
   if (!result.failure.empty()) result.notes.push_back(settings.name + " stopped early: " + result.failure);
-  result.peakMemoryMiB = peakMemoryMiB();
+  record.errors = {{"largest_balance_drift", result.largestBalanceDrift},
+                   {"extra_fragments", static_cast<Real>(result.fragments - 2)}};
+  record.primaryError = "largest_balance_drift";
+  record.peakMemoryMiB = peakMemoryMiB();
   return result;
 }
 

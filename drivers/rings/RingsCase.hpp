@@ -3,7 +3,7 @@
 // the updated-Lagrangian SPH, with or without the Monaghan-Gray artificial stress; what it
 // measures to tell an intact rebound from fragmentation.
 
-#include "core/Stopwatch.hpp"
+#include "io/run/StudyCases.hpp"
 #include "io/scene/Scene.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
 #include "study/SolidIntegration.hpp"
@@ -35,18 +35,17 @@ struct CaseSettings {
   bool writeFrames = true;  // VTK / PNG frames as the scene's [output] asks
 };
 
-struct CaseResult {
+// The record (StudyCase): particles, steps, the mean dt, the end time reached, set-up and loop
+// times, peak memory, and as errors (no exact solution) the energy balance's largest drift and
+// the fragments beyond the two rings.
+struct CaseResult : StudyCase {
   CaseSettings settings;
-  Index particles = 0, leftParticles = 0;
+  Index leftParticles = 0;
   Real spacing = 0, smoothingLength = 0, soundSpeed = 0, approachSpeed = 0;
   Real meanNeighbours = 0;
   long neighbourRebuilds = 0;
-  long steps = 0;
-  Real endTime = 0;  // reached (the scene's end time unless the run failed)
-  Real firstStep = 0, smallestStep = 0, meanStep = 0;
+  Real firstStep = 0, smallestStep = 0;
   double rhsEvaluations = 0;
-  double setupSeconds = 0, runSeconds = 0;
-  double peakMemoryMiB = 0;
 
   UpdatedLagrangianSphEnergy initialEnergy, finalEnergy;
   Real largestBalanceDrift = 0;  // EnergyLedger::largestBalanceDrift
@@ -66,13 +65,7 @@ struct CaseResult {
   Real contactTime = -1, separationTime = -1;      // gap along x below / back above the support radius
   Real smallestGap = 0;                            // smallest gap along x between the rings
 
-  std::string failure;             // why the run stopped early (empty: it reached the end)
-  std::vector<std::string> files;  // written, relative to the output folder
-  std::vector<std::string> notes;
-
-  double particleStepsPerSecond() const {
-    return mfwave::particleStepsPerSecond(static_cast<double>(particles), static_cast<double>(steps), runSeconds);
-  }
+  std::string failure;  // why the run stopped early (empty: it reached the end)
 };
 
 // Runs one case and writes "<folder>/<case>-energy.csv" (the ledger), "<case>-rings.csv" (each

@@ -27,6 +27,7 @@
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/RunSummary.hpp"
+#include "io/run/StudyCases.hpp"
 #include "io/run/SceneDriver.hpp"
 #include "io/scene/Format.hpp"
 #include "io/scene/IntegratorSpec.hpp"
@@ -144,24 +145,24 @@ RingsTables ringsTables(Real linkDistance, Real zigzagThreshold) {
       .column("artificial_stress", [](R r) { return r.settings.artificialStress ? "true" : "false"; })
       .column("spacing [m]", [](R r) { return r.spacing; })
       .column("h [m]", [](R r) { return r.smoothingLength; })
-      .column("particles", [](R r) { return r.particles; }, TerminalColumn("particles", 10))
+      .column("particles", [](R r) { return r.record.particles; }, TerminalColumn("particles", 10))
       .column("left_particles", [](R r) { return r.leftParticles; })
       .column("c0 [m/s]", [](R r) { return r.soundSpeed; })
       .column("approach_speed [m/s]", [](R r) { return r.approachSpeed; })
       .column("mean_neighbours", [](R r) { return r.meanNeighbours; })
       .column("neighbour_rebuilds", [](R r) { return r.neighbourRebuilds; })
-      .column("steps", [](R r) { return r.steps; }, TerminalColumn("steps", 8))
-      .terminalOnly(TerminalColumn("wall[s]", 9).precision(3), [](R r) { return r.setupSeconds + r.runSeconds; })
-      .column("end_time [s]", [](R r) { return r.endTime; })
+      .column("steps", [](R r) { return r.record.steps; }, TerminalColumn("steps", 8))
+      .terminalOnly(TerminalColumn("wall[s]", 9).precision(3), [](R r) { return r.record.setupSeconds + r.record.loopSeconds; })
+      .column("end_time [s]", [](R r) { return r.record.simulatedTime; })
       .column("first_step [s]", [](R r) { return r.firstStep; })
       .column("smallest_step [s]", [](R r) { return r.smallestStep; })
-      .column("mean_step [s]", [](R r) { return r.meanStep; })
+      .column("mean_step [s]", [](R r) { return r.record.timeStep; })
       .column("rhs_evaluations", [](R r) { return r.rhsEvaluations; })
-      .column("setup [s]", [](R r) { return r.setupSeconds; })
-      .column("run [s]", [](R r) { return r.runSeconds; })
-      .column("particle_steps_per_second", [](R r) { return r.particleStepsPerSecond(); },
+      .column("setup [s]", [](R r) { return r.record.setupSeconds; })
+      .column("run [s]", [](R r) { return r.record.loopSeconds; })
+      .column("particle_steps_per_second", [](R r) { return r.record.particleStepsPerSecond(); },
               TerminalColumn("p-steps/s", 11).precision(3))
-      .column("peak_memory [MiB]", [](R r) { return r.peakMemoryMiB; })
+      .column("peak_memory [MiB]", [](R r) { return r.record.peakMemoryMiB; })
       .column("kinetic_start [J]", [](R r) { return r.initialEnergy.kinetic; })
       .column("kinetic_end [J]", [](R r) { return r.finalEnergy.kinetic; })
       .column("strain_end [J]", [](R r) { return r.finalEnergy.strain; })
@@ -225,22 +226,6 @@ RingsTables ringsTables(Real linkDistance, Real zigzagThreshold) {
   return t;
 }
 
-// The case in the layout every tool reads. No exact solution: ranked by the energy balance's drift.
-CaseRecord caseRecord(const CaseResult& r) {
-  CaseRecord c;
-  c.name = r.settings.name;
-  c.particles = r.particles;
-  c.steps = r.steps;
-  c.timeStep = r.meanStep;
-  c.simulatedTime = r.endTime;
-  c.setupSeconds = r.setupSeconds;
-  c.loopSeconds = r.runSeconds;
-  c.peakMemoryMiB = r.peakMemoryMiB;
-  c.errors = {{"largest_balance_drift", r.largestBalanceDrift}, {"extra_fragments", static_cast<Real>(r.fragments - 2)}};
-  c.primaryError = "largest_balance_drift";
-  return c;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -256,13 +241,10 @@ int main(int argc, char** argv) {
     reader.checkAllKeysRead();
     const std::string folder = prepareOutputFolder(cli.options(), plan.study.scene.output.folder, reader);
 
-    std::vector<CaseResult> results;
-    for (const CaseSettings& settings : plan.cases) {
-      results.push_back(runCase(plan.study, settings, folder, !cli.options().quiet));
-      if (!cli.options().quiet)
-        std::cerr << "  done " << settings.name << " (" << results.back().particles << " particles, "
-                  << results.back().steps << " steps)\n";
-    }
+    const bool progress = !cli.options().quiet;
+    const std::vector<CaseResult> results = runCases(
+        plan.cases, [&](const CaseSettings& settings) { return runCase(plan.study, settings, folder, progress); },
+        progress);
     const RingsTables tables = ringsTables(plan.study.linkDistance, plan.study.zigzagThreshold);
     tables.cases.writeCsv(folder + "/cases.csv", results, 8);
     tables.cases.print(std::cout, results);
@@ -273,20 +255,16 @@ int main(int argc, char** argv) {
 
     const Scene& scene = plan.study.scene;
     const CaseResult& first = results.front();
-    RunSummary summary;
+    RunSummary summary(kProgram, scene.info.name, scene.method.name, plan.study.integration.integrator);
     summary.files.add("cases.csv");
-    summary.program = kProgram;
-    summary.scene = scene.info.name;
-    summary.method = scene.method.name;
-    summary.integrator = plan.study.integration.integrator;
-    summary.particles = first.particles;
+    summary.particles = first.record.particles;
     summary.meanNeighbours = first.meanNeighbours;
-    summary.timeStep = first.meanStep;
+    summary.timeStep = first.record.timeStep;
     summary.simulatedTime = scene.integrator.endTime;
+    summary.addCases(results);
     for (const CaseResult& r : results) {
-      summary.addCase(caseRecord(r));
-      summary.steps += r.steps;
-      summary.wallSeconds += r.setupSeconds + r.runSeconds;
+      summary.steps += r.record.steps;
+      summary.wallSeconds += r.record.setupSeconds + r.record.loopSeconds;
     }
     // No exact solution: the errors are the energy balance and the fragments beyond the two rings.
     for (const CaseResult& r : results) {
@@ -315,9 +293,9 @@ int main(int argc, char** argv) {
       summary.figures.push_back({c + "viscous_dissipation_end [J]", e.viscousDissipation});
       summary.figures.push_back({c + "artificial_stress_work_end [J]", e.artificialStressWork});
       summary.figures.push_back({c + "final_balance_drift", r.finalBalanceDrift});
-      summary.figures.push_back({c + "steps", static_cast<Real>(r.steps)});
-      summary.figures.push_back({c + "wall [s]", r.setupSeconds + r.runSeconds});
-      summary.figures.push_back({c + "particle_steps_per_second", r.particleStepsPerSecond()});
+      summary.figures.push_back({c + "steps", static_cast<Real>(r.record.steps)});
+      summary.figures.push_back({c + "wall [s]", r.record.setupSeconds + r.record.loopSeconds});
+      summary.figures.push_back({c + "particle_steps_per_second", r.record.particleStepsPerSecond()});
     }
     summary.notes.add(
         "no exact solution: the errors are the largest drift of the energy balance (kinetic + "
@@ -334,7 +312,7 @@ int main(int argc, char** argv) {
         throw InstabilityError("case " + r.settings.name + " was stopped: " + r.failure +
                                    " (the outputs of every case are written; stability.allow_growth = true "
                                    "reports such a case and exits 0)",
-                               r.steps, r.endTime, -1);
+                               r.record.steps, r.record.simulatedTime, -1);
     return 0;
   });
 }

@@ -18,6 +18,7 @@
 #include "io/run/RunDriver.hpp"
 #include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
+#include "io/run/StudyCases.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/StepLimitCheck.hpp"
 #include "io/scene/Scene.hpp"
@@ -67,33 +68,13 @@ struct Study {
   std::vector<std::string> notes;  // for the summary: steps run above the limit on purpose
 };
 
-struct CaseResult {
+struct CaseResult : StudyCase {
   std::string integrator;
-  int cells;
-  Real dx, dt, criticalDt;
-  long steps;
-  Real error;
-  Real energyDrift;
-  double setupSeconds, wallSeconds;  // wallSeconds: the time loop's
-  std::vector<std::string> files;  // the time series written, relative to the output folder
-  Real order = std::nan("");       // against the next coarser case of the same integrator
-
-  // Kept as the study has always written it (a floor of 1 ns instead of 0 for no time).
-  double rate() const { return static_cast<double>(cells + 1) * static_cast<double>(steps) / std::max(wallSeconds, 1e-9); }
-  CaseRecord record(Real endTime) const {
-    CaseRecord c;
-    c.name = integrator + ", " + std::to_string(cells) + " cells";
-    c.particles = cells + 1;
-    c.steps = steps;
-    c.timeStep = dt;
-    c.stableTimeStep = criticalDt;
-    c.simulatedTime = endTime;
-    c.setupSeconds = setupSeconds;
-    c.loopSeconds = wallSeconds;
-    c.errors = {{"relative_l2", error}};
-    c.primaryError = "relative_l2";
-    return c;
-  }
+  int cells = 0;
+  Real dx = 0;
+  Real error = 0;
+  Real energyDrift = 0;
+  Real order = std::nan("");  // against the next coarser case of the same integrator
 };
 
 // convergence.csv and the terminal table, one column each.
@@ -103,13 +84,13 @@ CaseTable<CaseResult> convergenceTable() {
   t.column("integrator", [](R r) { return r.integrator; }, TerminalColumn("integrator", 20).left())
       .column("cells", [](R r) { return r.cells; }, TerminalColumn("cells", 7))
       .column("dx [m]", [](R r) { return r.dx; })
-      .column("dt [s]", [](R r) { return r.dt; }, TerminalColumn("dt", 10).precision(3))
-      .column("steps", [](R r) { return r.steps; })
+      .column("dt [s]", [](R r) { return r.record.timeStep; }, TerminalColumn("dt", 10).precision(3))
+      .column("steps", [](R r) { return r.record.steps; })
       .column("relative_l2_error", [](R r) { return r.error; }, TerminalColumn("L2 error", 13).scientific().precision(3))
       .column("observed_order", [](R r) { return r.order; }, TerminalColumn("order", 8).precision(3))
       .column("energy_drift", [](R r) { return r.energyDrift; }, TerminalColumn("energy", 12).scientific().precision(2))
-      .column("wall_time [s]", [](R r) { return r.wallSeconds; }, TerminalColumn("wall [s]", 11).precision(3))
-      .column("particle_steps_per_s", [](R r) { return r.rate(); },
+      .column("wall_time [s]", [](R r) { return r.record.loopSeconds; }, TerminalColumn("wall [s]", 11).precision(3))
+      .column("particle_steps_per_s", [](R r) { return r.record.particleStepsPerSecond(); },
               TerminalColumn("part-steps/s", 14).scientific().precision(2));
   return t;
 }
@@ -167,8 +148,23 @@ CaseResult runCase(const Study& study, const std::string& integratorName, int ce
     errorSquared += std::pow(u[i] - exact.displacement(x, stats.endTime), 2);
     normSquared += std::pow(std::sin(exact.wavenumber() * (x - x0)), 2);
   }
-  CaseResult result{integratorName, cellCount, dx, dt, criticalDt, stats.steps, std::sqrt(errorSquared / normSquared),
-                    energy.maxRelativeDrift(), setupSeconds, stats.wallSeconds, {}};
+  CaseResult result;
+  result.integrator = integratorName;
+  result.cells = cellCount;
+  result.dx = dx;
+  result.error = std::sqrt(errorSquared / normSquared);
+  result.energyDrift = energy.maxRelativeDrift();
+  CaseRecord& record = result.record;
+  record.name = integratorName + ", " + std::to_string(cellCount) + " cells";
+  record.particles = cellCount + 1;
+  record.steps = stats.steps;
+  record.timeStep = dt;
+  record.stableTimeStep = criticalDt;
+  record.simulatedTime = scene.integrator.endTime;
+  record.setupSeconds = setupSeconds;
+  record.loopSeconds = stats.wallSeconds;
+  record.errors = {{"relative_l2", result.error}};
+  record.primaryError = "relative_l2";
   if (writeSeries) {
     const std::string stem = integratorName + "-" + std::to_string(cellCount);
     probes.series().writeCsv(folder + "/" + stem + "-probe.csv");
@@ -246,14 +242,10 @@ int main(int argc, char** argv) {
     const CaseTable<CaseResult> table = convergenceTable();
     table.writeCsv(folder + "/convergence.csv", results, 17);
     table.print(std::cout, results);
-    RunSummary summary;
-    summary.program = kProgram;
-    summary.scene = study.scene.info.name;
-    summary.method = study.scene.method.name;
-    summary.integrator = "several (see convergence.csv)";
+    RunSummary summary(kProgram, study.scene.info.name, study.scene.method.name, "several (see convergence.csv)");
+    summary.addCases(results);
     for (std::size_t i = 0; i < results.size(); ++i) {
       const CaseResult& r = results[i];
-      summary.addCase(r.record(study.scene.integrator.endTime));
       if (i + 1 == results.size() || !sameIntegrator(results[i + 1], r)) {
         summary.errors.push_back({r.integrator + "_relative_l2_finest", r.error});
         if (i > 0 && sameIntegrator(results[i - 1], r)) summary.figures.push_back({r.integrator + "_observed_order", r.order});
@@ -262,13 +254,13 @@ int main(int argc, char** argv) {
     summary.totalsFromCases();
     // The last case's step and the stable central-difference step it is a fraction of, so that a
     // one-case run (the tradeoff sweep's) reports both.
-    summary.timeStep = results.back().dt;
-    summary.figures.push_back({"critical_dt_last", results.back().criticalDt});
+    summary.timeStep = results.back().record.timeStep;
+    summary.figures.push_back({"critical_dt_last", results.back().record.stableTimeStep});
     summary.simulatedTime = study.scene.integrator.endTime;
     summary.notes.add("particles: the finest line; steps and wall time: summed over all cases");
     summary.notes.addAll(study.notes);
     summary.files.add("convergence.csv");
-    for (const CaseResult& r : results) summary.files.addAll(r.files);
+    summary.mergeNotesAndFiles(results);
     summary.conclude(folder, &std::cout);
     return 0;
   });

@@ -72,11 +72,7 @@ Index nearestParticle(const ParticleSet<D>& particles, const std::vector<Real>& 
 template <int D>
 int run(const Scene& scene, const std::string& folder, const DriverOptions& cli) {
   const Stopwatch setup;
-  RunSummary summary;
-  summary.program = kProgram;
-  summary.scene = scene.info.name;
-  summary.method = scene.method.name;
-  summary.integrator = scene.integrator.name;
+  RunSummary summary(kProgram, scene.info.name, scene.method.name, scene.integrator.name);
 
   // particles + neighbours
   const ParticleSet<D> particles = buildParticles<D>(scene.geometry);

@@ -27,6 +27,15 @@ bool GrowingList::contains(const std::string& entry) const {
 
 RunSummary::RunSummary() { files.add("scene.resolved.toml"); }
 
+RunSummary::RunSummary(std::string programName, std::string sceneName, std::string methodName,
+                       std::string integratorName)
+    : RunSummary() {
+  program = std::move(programName);
+  scene = std::move(sceneName);
+  method = std::move(methodName);
+  integrator = std::move(integratorName);
+}
+
 double peakMemoryMiB() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);

@@ -84,6 +84,8 @@ struct RunSummary {
   std::vector<CaseRecord> cases;
 
   RunSummary();
+  // What ran: the program, the scene (or study) name, the method and the integrator.
+  RunSummary(std::string programName, std::string sceneName, std::string methodName, std::string integratorName);
 
   // Appends `record` (with the process's peak memory so far if it has none); checks that its primary error is one
   // of its errors (a programming error otherwise).
@@ -91,6 +93,12 @@ struct RunSummary {
   // The run's totals from its cases, for a study whose cases run one after another: particles of
   // the largest case, steps and (loop) wall seconds summed over all cases.
   void totalsFromCases();
+  // The record of every case of a study (each `Case` holds its `record` from the start), in run
+  // order.
+  template <class Case>
+  void addCases(const std::vector<Case>& results) {
+    for (const Case& c : results) addCase(c.record);
+  }
 
   double particleStepsPerSecond() const;
   // Reads the peak resident memory of this process.

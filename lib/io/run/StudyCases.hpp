@@ -1,0 +1,38 @@
+#pragma once
+// The loop every multi-case study shares. A case's result derives from StudyCase: it fills its
+// canonical record (what it cost, how accurate it was) as it runs, and lists the files it wrote and
+// its notes, so that the summary takes every case whole (RunSummary::addCases,
+// RunSummary::mergeNotesAndFiles) and no driver copies a field into a record.
+
+#include "io/run/RunSummary.hpp"
+
+#include <iostream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace mfwave {
+
+struct StudyCase {
+  CaseRecord record;
+  std::vector<std::string> files;  // written, relative to the output folder
+  std::vector<std::string> notes;  // for the summary (stability.allow_growth, fallbacks, ...)
+};
+
+// Runs `run(settings)` for each entry of `plan` in order and returns the results; with `progress`,
+// says on stderr when each case is done, by its record's name, particles and steps.
+template <class Settings, class Run>
+auto runCases(const std::vector<Settings>& plan, Run&& run, bool progress) {
+  std::vector<std::decay_t<std::invoke_result_t<Run&, const Settings&>>> results;
+  results.reserve(plan.size());
+  for (const Settings& settings : plan) {
+    results.push_back(run(settings));
+    if (progress) {
+      const CaseRecord& r = results.back().record;
+      std::cerr << "  done " << r.name << " (" << r.particles << " particles, " << r.steps << " steps)\n";
+    }
+  }
+  return results;
+}
+
+}  // namespace mfwave
