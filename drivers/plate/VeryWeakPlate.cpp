@@ -1,12 +1,9 @@
 #include "VeryWeakPlate.hpp"
 
-
 #include "analysis/StableTimeStep.hpp"
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
-#include "integrators/CentralDifference.hpp"
 #include "io/run/ProgressReporter.hpp"
-#include "methods/very_weak_sph/ConservativeSmoothing.hpp"
 #include "methods/very_weak_sph/VeryWeakSphProblem.hpp"
 #include "observers/EnergyObserver.hpp"
 #include "observers/LinearEnergyLedger.hpp"
@@ -16,6 +13,7 @@
 #include "particles/BoxFace.hpp"
 #include "particles/GhostLayers.hpp"
 #include "particles/Lattice.hpp"
+#include "study/VeryWeakSphRun.hpp"
 
 #include <cmath>
 
@@ -70,15 +68,11 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
     result.notes.push_back(settings.name + ": power iteration did not converge; the Gershgorin step is used");
   const long steps = std::max(1L, static_cast<long>(std::ceil(settings.endTime / (study.veryWeakCfl * stableStep))));
   const Real dt = settings.endTime / static_cast<Real>(steps);
-  CentralDifference integrator;
-  integrator.setPrescribedDisplacement(problem.prescribedDofs(),
-                                       [&problem](Real t, Vector& values) { problem.prescribedValues(t, values); });
-  ConservativeSmoothing* smoothing = problem.smoothing();
-  if (smoothing) integrator.setVelocityFilter([smoothing](Real step, Vector& v) { smoothing->apply(step, v); });
+  const std::unique_ptr<CentralDifference> integrator = veryWeakSphCentralDifference<D>(problem);
   Vector v0 = Vector::Zero(D * n);
   for (Index a = 0; a < n; ++a)
     v0[D * a + 1] = plate.initialVelocity(particles.position(a)[0], settings.velocityFactor);
-  integrator.initialise(system, 0, Vector::Zero(D * n), v0, dt);
+  integrator->initialise(system, 0, Vector::Zero(D * n), v0, dt);
 
   // the tip: the nodes of the +x face
   std::vector<Index> tipNodes;
@@ -112,7 +106,7 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
   loop.add(energy, study.energyEvery);
   result.record.setupSeconds = setupClock.seconds();
 
-  const RunStatistics stats = loop.run(integrator, settings.endTime);
+  const RunStatistics stats = loop.run(*integrator, settings.endTime);
   if (!ledger.growthMessage().empty())
     result.notes.push_back(settings.name + ": stability.allow_growth let the run go on through: " +
                            ledger.growthMessage());
@@ -122,7 +116,7 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
   // 1/2 v^T M v + 1/2 u^T K u: the consistent rows make K slightly non-symmetric, so this is the
   // energy of the symmetric part; its drift is reported as the ledger's balance is for the SPH.
   result.energyDrift = energy.maxRelativeDrift();
-  if (smoothing) {
+  if (problem.smoothing()) {
     const std::vector<Real> total = energy.series().column(2);
     result.viscousFraction = 1 - total.back() / total.front();
   }
