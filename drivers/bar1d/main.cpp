@@ -27,11 +27,11 @@
 #include "integrators/ConstrainedIntegrators.hpp"
 #include "methods/collocation/CollocationSystem.hpp"
 #include "methods/collocation/ConstrainedCollocationSystem.hpp"
-#include "methods/collocation/RadialBasisShapeFunctions.hpp"
-#include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
+#include "methods/collocation/RadialBasisFunction.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
 #include "observers/TimeSeries.hpp"
+#include "study/CollocationSpec.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -75,10 +75,7 @@ SceneSchema bar1dSchema() {
 
 struct Study {
   Scene scene;
-  int order = 2;
-  Real supportRatio = 3.3;
-  std::string basis;
-  Real shapeRatio = 1;
+  CollocationSpec method;
   Real v0 = -1;
   std::vector<int> nodes;
   int errorPoints = 2001;
@@ -109,22 +106,6 @@ CaseTable<CaseResult> convergenceTable() {
               TerminalColumn("max_t L2(u)", 12).precision(3))
       .column("wall_time [s]", [](R r) { return r.record.loopSeconds; });
   return t;
-}
-
-std::string describeMethod(const Study& study) {
-  std::ostringstream s;
-  if (study.scene.method.name == "radial_basis")
-    s << "radial basis " << study.basis << ", method.shape_ratio = " << study.shapeRatio;
-  else
-    s << "reproducing kernel order " << study.order << ", method.support_ratio = " << study.supportRatio;
-  return s.str();
-}
-
-std::unique_ptr<ShapeFunctions<1>> makeShapes(const Study& study, const Coordinates<1>& nodes, Real h) {
-  if (study.scene.method.name == "radial_basis")
-    return std::make_unique<RadialBasisShapeFunctions<1>>(
-        nodes, makeRadialBasisFunction(study.basis, study.shapeRatio * h));
-  return std::make_unique<ReproducingKernelShapeFunctions<1>>(nodes, study.order, study.supportRatio * h);
 }
 
 // Relative L2 errors of u and v at time t (trapezoidal sums on uniform points).
@@ -187,7 +168,7 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
 
   Coordinates<1> nodes;
   for (int i = 0; i < nodeCount; ++i) nodes[0].push_back(x0 + length * i / (nodeCount - 1));
-  const auto shapes = makeShapes(study, nodes, h);
+  const auto shapes = makeCollocationShapes<1>(study.method, nodes, h);
   ConstrainedCollocationSystem system(assembleCollocation<1>(*shapes, fixedFreeBarPoints(nodes), material));
 
   // Before stepping, the whole operator's spectrum (dense: a 1-D bar has few nodes). Complex or
@@ -200,7 +181,7 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
   if (spectrum.unconditionallyUnstable)
     note = refuseGrowingModes(scene.stability,
                               "the collocation operator " + where + " has growing modes: " + spectrum.verdict() +
-                                  " (" + describeMethod(study) + ")",
+                                  " (" + study.method.describe() + ")",
                               "see the stability atlas, docs/studies/stability-atlas.md");
   const Real lambdaMax = spectrum.largestModulus;
   const Real criticalDt = 2 / std::sqrt(lambdaMax);
@@ -239,12 +220,11 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
   CaseRecord& record = result.record;
   record.name = std::to_string(nodeCount) + " nodes";
   record.particles = nodeCount;
-  record.steps = stats.steps;
+  result.recordLoop(stats);
   record.timeStep = dt;
   record.stableTimeStep = criticalDt;
   record.simulatedTime = scene.integrator.endTime;
   record.setupSeconds = setupSeconds;
-  record.loopSeconds = stats.wallSeconds;
   record.errors = {{"relative_l2_u", result.errorU},
                    {"relative_l2_v", result.errorV},
                    {"max_relative_l2_u_over_time", result.maxErrorU}};
@@ -273,15 +253,7 @@ Study readStudy(SceneReader& reader) {
   Study study;
   study.scene = readScene(reader);
   if (study.scene.info.dimension != 1) reader.fail("scene.dimension", "bar1d is a 1-D study");
-  if (study.scene.method.name == "reproducing_kernel") {
-    study.order = static_cast<int>(reader.integer("method.order"));
-    study.supportRatio = reader.number("method.support_ratio");
-  } else if (study.scene.method.name == "radial_basis") {
-    study.basis = reader.string("method.basis");
-    study.shapeRatio = reader.number("method.shape_ratio");
-  } else {
-    reader.fail("method.name", "bar1d uses reproducing_kernel or radial_basis");
-  }
+  study.method = readCollocationSpec(reader, study.scene.method.name, kProgram);
   if (facesWith(study.scene.boundaries, BoundaryType::Fixed) != 0x1 ||
       facesWith(study.scene.boundaries, BoundaryType::Traction) != 0)
     reader.fail("boundary", "bar1d is the fixed-free bar: faces = [\"-x\"], type = \"fixed\"; +x free");

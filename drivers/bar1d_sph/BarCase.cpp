@@ -110,12 +110,11 @@ CaseResult runCase(const Settings& settings, Real dx, const std::string& folder,
   name << "dx = " << dx;
   record.name = name.str();
   record.particles = n;
-  record.steps = stats.steps;
+  result.recordLoop(stats);
   record.timeStep = integrator->stepSize();  // the last step
   // The step is cfl times the method's step criteria unless a fixed step was asked for.
   if (settings.integration.fixedStep <= 0) record.stableTimeStep = record.timeStep / settings.integration.cfl;
   record.simulatedTime = settings.endTime;
-  record.loopSeconds = stats.wallSeconds;
   result.meanNeighbours = system.meanNeighbourCount();
   result.l1Velocity = errorV / normV;
   result.l1Stress = errorS / normS;

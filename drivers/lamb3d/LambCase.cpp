@@ -96,7 +96,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   // integrator: central differences with the smoothing (eq. 33) as its velocity filter and eq. (30)
   // for prescribed faces (checkVeryWeakSphScene refused both for any other integrator)
   const std::unique_ptr<SecondOrderIntegrator> integrator =
-      scene.integrator.name == "central_difference"
+      scene.integrator.kind == IntegratorKind::CentralDifference
           ? veryWeakSphCentralDifference<D>(problem, &ledger)
           : makeSecondOrderIntegrator(scene.integrator.name, scene.integrator.options);
   // At rest, with the prescribed faces at their values at t = 0 (eq. (30) holds from the start).
@@ -135,8 +135,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     if (scene.output.energy) ledger.series().writeCsv(folder + "/" + energyFile);
     throw;
   }
-  record.steps = stats.steps;
-  record.loopSeconds = stats.wallSeconds;
+  result.recordLoop(stats);
   result.energyFinalFraction = ledger.finalEnergyFraction();
   result.energyBalanceDrift = ledger.largestBalanceDrift();
   result.energyGrowth = ledger.growthMessage();

@@ -193,12 +193,11 @@ CaseResult runCase(const Scene& scene, int order, Real ratio, Real w, int cells,
   CaseRecord& record = result.record;
   record.name = std::to_string(cells) + " cells";
   record.particles = (cells + 1) * (cells + 1);
-  record.steps = stats.steps;
+  result.recordLoop(stats);
   record.timeStep = dt;
   record.stableTimeStep = criticalDt;
   record.simulatedTime = scene.integrator.endTime;
   record.setupSeconds = setupSeconds;
-  record.loopSeconds = stats.wallSeconds;
   record.errors = {{"relative_l2_u", result.errorU}, {"relative_l2_v", result.errorV}};
   record.primaryError = "relative_l2_u";
   return result;

@@ -15,6 +15,7 @@
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
 #include "integrators/IntegratorFactory.hpp"
+#include "integrators/IntegratorKind.hpp"
 #include "integrators/StabilityLimit.hpp"
 #include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
@@ -129,7 +130,7 @@ Outcome run(const Settings& s) {
   const int c = op.components();
   if (c == 1 && s.shear) throw InputError("study.polarisation", "the scalar finite difference has no S wave");
   if (D == 1 && s.shear) throw InputError("study.polarisation", "there is no S wave in 1-D");
-  if (!op.lumped() && s.integrator != "newmark")
+  if (!op.lumped() && integratorKind(s.integrator) != IntegratorKind::Newmark)
     throw InputError("integrator.name", "rkcm has a consistent mass; only newmark integrates it here");
 
   const auto extremes = DispersionSpectrum<D>(op).extremes();

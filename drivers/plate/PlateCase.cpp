@@ -88,8 +88,7 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
   result.record.setupSeconds = setupClock.seconds();
 
   const RunStatistics stats = loop.run(*integrator, settings.endTime);
-  result.record.steps = stats.steps;
-  result.record.loopSeconds = stats.wallSeconds;
+  result.recordLoop(stats);
   result.record.timeStep = stats.steps > 0 ? (stats.endTime - stats.startTime) / static_cast<Real>(stats.steps) : 0;
   result.meanNeighbours = system.meanNeighbourCount();
   result.neighbourRebuilds = system.neighbourRebuilds();

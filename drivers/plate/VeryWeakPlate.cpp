@@ -110,8 +110,7 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
   if (!ledger.growthMessage().empty())
     result.notes.push_back(settings.name + ": stability.allow_growth let the run go on through: " +
                            ledger.growthMessage());
-  result.record.steps = stats.steps;
-  result.record.loopSeconds = stats.wallSeconds;
+  result.recordLoop(stats);
   result.record.timeStep = dt;
   // 1/2 v^T M v + 1/2 u^T K u: the consistent rows make K slightly non-symmetric, so this is the
   // energy of the symmetric part; its drift is reported as the ledger's balance is for the SPH.

@@ -139,30 +139,6 @@ struct Plan {
   std::vector<Index> modeResolutions;  // H / dp of the linearised modes (empty: none)
 };
 
-// The updated-Lagrangian SPH periods of the convergence series (one V_f, several H / dp) and their
-// Richardson extrapolation: the order observed through the three finest resolutions (second order
-// assumed when there are only two, or when the three are not monotone) and the limit from the two
-// finest.
-struct PeriodConvergence {
-  std::size_t resolutions = 0;
-  std::optional<Real> observedOrder;
-  Real orderUsed = 2;
-  Real limit = 0;
-};
-
-std::optional<PeriodConvergence> periodConvergence(std::vector<ConvergenceSample> samples) {
-  std::sort(samples.begin(), samples.end(),
-            [](const ConvergenceSample& a, const ConvergenceSample& b) { return a.spacing > b.spacing; });
-  if (samples.size() < 2) return std::nullopt;
-  PeriodConvergence c;
-  c.resolutions = samples.size();
-  const std::size_t n = samples.size();
-  if (n >= 3) c.observedOrder = observedOrder(samples[n - 3], samples[n - 2], samples[n - 1]);
-  c.orderUsed = c.observedOrder.value_or(2);
-  c.limit = richardsonLimit(samples[n - 2], samples[n - 1], c.orderUsed);
-  return c;
-}
-
 std::string caseName(const char* method, Index rows, Real velocityFactor) {
   std::ostringstream s;
   s << method << "_Hdp" << rows << "_Vf" << velocityFactor;
@@ -349,7 +325,7 @@ CaseTable<PlateCaseResult> casesTable() {
 // Richardson limit of a period over resolutions, when there are at least two.
 void reportConvergence(const std::vector<ConvergenceSample>& samples, const std::string& what,
                        const std::string& prefix, Real timoshenko, RunSummary& summary) {
-  const std::optional<PeriodConvergence> c = periodConvergence(samples);
+  const std::optional<RichardsonSeries> c = richardsonSeries(samples);
   if (!c) return;
   const Real error = c->limit / timoshenko - 1;
   std::cout << std::setprecision(3) << "convergence of " << what << " over " << c->resolutions

@@ -157,12 +157,11 @@ CaseResult runCase(const Study& study, const std::string& integratorName, int ce
   CaseRecord& record = result.record;
   record.name = integratorName + ", " + std::to_string(cellCount) + " cells";
   record.particles = cellCount + 1;
-  record.steps = stats.steps;
+  result.recordLoop(stats);
   record.timeStep = dt;
   record.stableTimeStep = criticalDt;
   record.simulatedTime = scene.integrator.endTime;
   record.setupSeconds = setupSeconds;
-  record.loopSeconds = stats.wallSeconds;
   record.errors = {{"relative_l2", result.error}};
   record.primaryError = "relative_l2";
   if (writeSeries) {

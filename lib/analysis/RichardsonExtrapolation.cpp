@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mfwave {
@@ -45,6 +46,19 @@ Real richardsonLimit(const ConvergenceSample& coarse, const ConvergenceSample& f
   const Real factor = std::pow(coarse.spacing / fine.spacing, order) - 1;
   if (!(factor != 0) || !std::isfinite(factor)) throw InputError("spacing", "the two spacings must differ");
   return fine.value + (fine.value - coarse.value) / factor;
+}
+
+std::optional<RichardsonSeries> richardsonSeries(std::vector<ConvergenceSample> samples, Real assumedOrder) {
+  std::sort(samples.begin(), samples.end(),
+            [](const ConvergenceSample& a, const ConvergenceSample& b) { return a.spacing > b.spacing; });
+  if (samples.size() < 2) return std::nullopt;
+  RichardsonSeries series;
+  const std::size_t n = samples.size();
+  series.resolutions = n;
+  if (n >= 3) series.observedOrder = observedOrder(samples[n - 3], samples[n - 2], samples[n - 1]);
+  series.orderUsed = series.observedOrder.value_or(assumedOrder);
+  series.limit = richardsonLimit(samples[n - 2], samples[n - 1], series.orderUsed);
+  return series;
 }
 
 }  // namespace mfwave

@@ -5,7 +5,9 @@
 
 #include "core/Types.hpp"
 
+#include <cstddef>
 #include <optional>
+#include <vector>
 
 namespace mfwave {
 
@@ -22,5 +24,18 @@ std::optional<Real> observedOrder(const ConvergenceSample& coarse, const Converg
 
 // f0 = f(fine) + (f(fine) - f(coarse)) / ((h_coarse / h_fine)^p - 1).
 Real richardsonLimit(const ConvergenceSample& coarse, const ConvergenceSample& fine, Real order);
+
+// A series over resolutions reduced to its limit: the order observed through the three finest
+// samples (empty with only two, or when the three are not monotone; `assumedOrder` is used then)
+// and the Richardson limit from the two finest with the order used.
+struct RichardsonSeries {
+  std::size_t resolutions = 0;
+  std::optional<Real> observedOrder;
+  Real orderUsed = 2;
+  Real limit = 0;
+};
+
+// The samples in any order (sorted here, coarsest first); empty with fewer than two.
+std::optional<RichardsonSeries> richardsonSeries(std::vector<ConvergenceSample> samples, Real assumedOrder = 2);
 
 }  // namespace mfwave

@@ -25,7 +25,7 @@ void checkVeryWeakSphScene(const SceneReader& reader, const Scene& scene, const 
   } catch (const InputError& e) {
     reader.fail(e.key(), e.problem());  // the method's refusal, located in the scene
   }
-  if (scene.integrator.name == "central_difference") return;
+  if (scene.integrator.kind == IntegratorKind::CentralDifference) return;
   if (spec.smoothingRate > 0)
     reader.fail("method.smoothing_rate", "conservative smoothing is applied by the central_difference "
                                          "integrator only; set it to 0 to run " + scene.integrator.name);

@@ -46,3 +46,24 @@ TEST(RichardsonExtrapolation, NonMonotoneDataHasNoOrderAndBadSpacingsAreRejected
   EXPECT_THROW(richardsonLimit({0.1, 1.0}, {0.1, 1.2}, 2), InputError);
   EXPECT_THROW(richardsonLimit({-0.1, 1.0}, {0.1, 1.2}, 2), InputError);
 }
+
+TEST(RichardsonExtrapolation, ASeriesUsesTheThreeFinestForItsOrderAndTheTwoFinestForItsLimit) {
+  // f = 2 + 3 h^1.5 at five spacings given in no order: the order through the three finest, the
+  // limit from the two finest with that order, both exact for a pure power law.
+  const auto f = [](Real h) { return ConvergenceSample{h, 2 + 3 * std::pow(h, 1.5)}; };
+  const auto series = richardsonSeries({f(0.1), f(0.4), f(0.025), f(0.2), f(0.05)});
+  ASSERT_TRUE(series.has_value());
+  EXPECT_EQ(series->resolutions, 5u);
+  ASSERT_TRUE(series->observedOrder.has_value());
+  EXPECT_NEAR(*series->observedOrder, 1.5, 1e-8);
+  EXPECT_NEAR(series->orderUsed, 1.5, 1e-8);
+  EXPECT_NEAR(series->limit, 2, 1e-8);
+
+  // Two samples: no observed order, the assumed one gives the limit.
+  const auto two = richardsonSeries({f(0.1), f(0.2)}, 1.5);
+  ASSERT_TRUE(two.has_value());
+  EXPECT_FALSE(two->observedOrder.has_value());
+  EXPECT_EQ(two->orderUsed, 1.5);
+  EXPECT_NEAR(two->limit, 2, 1e-12);
+  EXPECT_FALSE(richardsonSeries({f(0.1)}).has_value());
+}

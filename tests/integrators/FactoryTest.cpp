@@ -1,6 +1,8 @@
 #include "TestSystems.hpp"
 #include "core/Error.hpp"
+#include "integrators/FirstOrderIntegratorFactory.hpp"
 #include "integrators/IntegratorFactory.hpp"
+#include "integrators/IntegratorKind.hpp"
 
 #include <gtest/gtest.h>
 
@@ -49,5 +51,20 @@ TEST(IntegratorFactory, UnknownNameListsTheValidOnes) {
     const std::string what = e.what();
     EXPECT_NE(what.find("'euler'"), std::string::npos);
     EXPECT_NE(what.find("central_difference, leapfrog, newmark, arkode"), std::string::npos);
+  }
+}
+
+TEST(IntegratorKind, EveryOfferedNameHasAKindAndBackAndNoOtherNameHasOne) {
+  for (const auto& names : {secondOrderIntegratorNames(), firstOrderIntegratorNames()})
+    for (const auto& name : names) EXPECT_EQ(integratorName(integratorKind(name)), name);
+  EXPECT_EQ(integratorKind("central_difference"), IntegratorKind::CentralDifference);
+  EXPECT_EQ(integratorKind("newmark"), IntegratorKind::Newmark);
+  EXPECT_NE(integratorKind("leapfrog"), integratorKind("central_difference"));
+  try {
+    integratorKind("verlet");
+    FAIL() << "an unknown name has no kind";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "integrator.name");
+    EXPECT_NE(std::string(e.what()).find("verlet"), std::string::npos);
   }
 }

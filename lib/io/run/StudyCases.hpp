@@ -5,6 +5,7 @@
 // RunSummary::mergeNotesAndFiles) and no driver copies a field into a record.
 
 #include "io/run/RunSummary.hpp"
+#include "observers/TimeLoop.hpp"
 
 #include <iostream>
 #include <string>
@@ -17,6 +18,12 @@ struct StudyCase {
   CaseRecord record;
   std::vector<std::string> files;  // written, relative to the output folder
   std::vector<std::string> notes;  // for the summary (stability.allow_growth, fallbacks, ...)
+
+  // The time loop's share of the record: the steps it took and its seconds.
+  void recordLoop(const RunStatistics& loop) {
+    record.steps = loop.steps;
+    record.loopSeconds = loop.wallSeconds;
+  }
 };
 
 // Runs `run(settings)` for each entry of `plan` in order and returns the results; with `progress`,

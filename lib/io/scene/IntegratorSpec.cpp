@@ -21,6 +21,11 @@ IntegratorSpec readIntegrator(SceneReader& reader) {
   reader.table("integrator", true);
   IntegratorSpec s;
   s.name = reader.string("integrator.name");
+  try {
+    s.kind = integratorKind(s.name);
+  } catch (const InputError& e) {
+    reader.fail("integrator.name", scene::problemOf(e));
+  }
   s.endTime = reader.number("integrator.end_time");
   if (reader.has("integrator.time_step") && reader.has("integrator.cfl"))
     reader.fail("integrator.cfl", "cannot be combined with time_step: give time_step (a fixed step) or cfl "

@@ -9,6 +9,7 @@
 // readScene reads either kind; readFirstOrderIntegrator says that the schema is first-order.
 
 #include "integrators/IntegratorFactory.hpp"
+#include "integrators/IntegratorKind.hpp"
 #include "io/scene/SceneReader.hpp"
 #include "io/scene/SceneSchema.hpp"
 
@@ -19,6 +20,7 @@ namespace mfwave {
 
 struct IntegratorSpec {
   std::string name = "central_difference";  // secondOrderIntegratorNames(), or firstOrderIntegratorNames()
+  IntegratorKind kind = IntegratorKind::CentralDifference;  // what `name` stands for
   Real endTime = 0;
   std::optional<Real> timeStep;  // given: the step (it divides endTime)
   Real cfl = 0.5;                // used when timeStep is not given (1 by default for first-order)

@@ -18,7 +18,7 @@ StepLimitCheck checkStepLimit(const IntegratorSpec& integrator, const StabilityS
   what.precision(6);
   std::string key, advice;
   if (verdict.integratorUnstable) {
-    const bool newmark = integrator.name == "newmark";
+    const bool newmark = integrator.kind == IntegratorKind::Newmark;
     key = newmark ? "integrator.newmark_gamma" : "integrator.arkode_table";
     what << verdict.limit.integrator << " lets undamped modes grow at any step (" << verdict.limit.note
          << "); " << context << " the fastest mode (omega_max = " << omegaMax << ", from " << omegaSource

@@ -177,8 +177,14 @@ TEST(FirstOrderIntegratorSpec, NamesDefaultAndCfl) {
   EXPECT_EQ(defaults.integrator.endTime, 1.0);
   EXPECT_EQ(defaults.scene.integrator.name, "leapfrog");  // readScene reads the same
 
-  for (const std::string& name : firstOrderIntegratorNames())
-    EXPECT_EQ(readPlate("", "name = \"" + name + "\"\nend_time = 1.0\n").integrator.name, name);
+  EXPECT_EQ(defaults.integrator.kind, IntegratorKind::Leapfrog);
+  for (const std::string& name : firstOrderIntegratorNames()) {
+    const IntegratorSpec read = readPlate("", "name = \"" + name + "\"\nend_time = 1.0\n").integrator;
+    EXPECT_EQ(read.name, name);
+    EXPECT_EQ(read.kind, integratorKind(name));  // the name is typed once read
+  }
+  EXPECT_EQ(readPlate("", "name = \"predictor_corrector\"\nend_time = 1.0\n").integrator.kind,
+            IntegratorKind::PredictorCorrector);
   const Read fixed = readPlate("", "name = \"predictor_corrector\"\nend_time = 1.0\ntime_step = 0.001\n");
   EXPECT_EQ(*fixed.integrator.timeStep, 0.001);
   const Read cfl = readPlate("", "end_time = 1.0\ncfl = 0.5\n");

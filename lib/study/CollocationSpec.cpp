@@ -1,0 +1,47 @@
+#include "study/CollocationSpec.hpp"
+
+#include "methods/collocation/RadialBasisShapeFunctions.hpp"
+#include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
+
+#include <sstream>
+
+namespace mfwave {
+
+std::string CollocationSpec::describe() const {
+  std::ostringstream s;
+  if (kind == CollocationShapeKind::RadialBasis)
+    s << "radial basis " << radialBasis << ", method.shape_ratio = " << shapeRatio;
+  else
+    s << "reproducing kernel order " << order << ", method.support_ratio = " << supportRatio;
+  return s.str();
+}
+
+CollocationSpec readCollocationSpec(SceneReader& reader, const std::string& methodName, const std::string& program) {
+  CollocationSpec spec;
+  if (methodName == "reproducing_kernel") {
+    spec.order = static_cast<int>(reader.integer("method.order"));
+    spec.supportRatio = reader.number("method.support_ratio");
+  } else if (methodName == "radial_basis") {
+    spec.kind = CollocationShapeKind::RadialBasis;
+    spec.radialBasis = reader.string("method.basis");
+    spec.shapeRatio = reader.number("method.shape_ratio");
+  } else {
+    reader.fail("method.name", program + " uses reproducing_kernel or radial_basis");
+  }
+  return spec;
+}
+
+template <int D>
+std::unique_ptr<ShapeFunctions<D>> makeCollocationShapes(const CollocationSpec& spec, const Coordinates<D>& nodes,
+                                                         Real h) {
+  if (spec.kind == CollocationShapeKind::RadialBasis)
+    return std::make_unique<RadialBasisShapeFunctions<D>>(nodes,
+                                                          makeRadialBasisFunction(spec.radialBasis, spec.shapeRatio * h));
+  return std::make_unique<ReproducingKernelShapeFunctions<D>>(nodes, spec.order, spec.supportRatio * h);
+}
+
+template std::unique_ptr<ShapeFunctions<1>> makeCollocationShapes<1>(const CollocationSpec&, const Coordinates<1>&, Real);
+template std::unique_ptr<ShapeFunctions<2>> makeCollocationShapes<2>(const CollocationSpec&, const Coordinates<2>&, Real);
+template std::unique_ptr<ShapeFunctions<3>> makeCollocationShapes<3>(const CollocationSpec&, const Coordinates<3>&, Real);
+
+}  // namespace mfwave
