@@ -244,15 +244,9 @@ int main(int argc, char** argv) {
     const Scene& scene = plan.study.scene;
     RunSummary summary(kProgram, scene.info.name, scene.method.name, scene.integrator.name);
     summary.files.add("cases.csv");
-    summary.particles = paper.record.particles;
-    summary.meanNeighbours = paper.meanNeighbours;
-    summary.timeStep = paper.record.timeStep;
-    summary.simulatedTime = scene.integrator.endTime;
     summary.addCases(results);
-    for (const CaseResult& r : results) {
-      summary.steps += r.record.steps;
-      summary.wallSeconds += r.record.setupSeconds + r.record.loopSeconds;
-    }
+    summary.totalsFromFirstCase();
+    summary.meanNeighbours = paper.meanNeighbours;
     for (const CaseResult& r : results)
       for (const ProbeResult& p : r.probes) {
         if (!p.hasExact) continue;

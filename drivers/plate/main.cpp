@@ -59,75 +59,37 @@ SceneSchema plateSchema() {
   addUpdatedLagrangianSphKeys(schema);
   useFirstOrderIntegrators(schema);
   schema.add("study", T::Table).describedAs("the cases of the plate study");
-  schema.add("study.velocity_factor", T::Number)
-      .withUnit("-")
-      .defaultsTo("0.05")
-      .positive()
+  schema.add("study.velocity_factor", T::Number).withUnit("-").defaultsTo("0.05").positive()
       .describedAs("V_f of the main case: the tip starts at V_f c0, c0 = sqrt(K / rho)");
-  schema.add("study.small_velocity_factor", T::Number)
-      .withUnit("-")
-      .defaultsTo("0.01")
-      .nonNegative()
+  schema.add("study.small_velocity_factor", T::Number).withUnit("-").defaultsTo("0.01").nonNegative()
       .describedAs("V_f of the small-amplitude cases (and of the very weak form case); 0: none");
-  schema.add("study.resolutions", T::NumberArray)
-      .withUnit("-")
-      .defaultsToNote("[H / geometry.spacing]")
+  schema.add("study.resolutions", T::NumberArray).withUnit("-").defaultsToNote("[H / geometry.spacing]")
       .describedAs("particles across the thickness, H / dp, of the convergence cases (whole numbers)");
-  schema.add("study.convergence_end_time", T::Number)
-      .withUnit("s")
-      .defaultsTo("1.5")
-      .positive()
+  schema.add("study.convergence_end_time", T::Number).withUnit("s").defaultsTo("1.5").positive()
       .describedAs("simulated time of the short cases: small V_f, very weak form SPH, other resolutions");
-  schema.add("study.convergence_large_amplitude", T::Boolean)
-      .defaultsTo("false")
+  schema.add("study.convergence_large_amplitude", T::Boolean).defaultsTo("false")
       .describedAs("also run study.velocity_factor at the other resolutions (by default only the small one)");
-  schema.add("study.clamp_layers", T::Integer)
-      .withUnit("-")
-      .defaultsTo("3")
-      .atLeast(1)
+  schema.add("study.clamp_layers", T::Integer).withUnit("-").defaultsTo("3").atLeast(1)
       .describedAs("columns of fixed particles at x < 0 that clamp the plate (at least the kernel support / dp)");
-  schema.add("study.energy_every", T::Integer)
-      .withUnit("-")
-      .defaultsTo("100")
-      .atLeast(1)
+  schema.add("study.energy_every", T::Integer).withUnit("-").defaultsTo("100").atLeast(1)
       .describedAs("steps between rows of the energy ledger");
-  schema.add("study.png_frames", T::Integer)
-      .withUnit("-")
-      .defaultsTo("8")
-      .nonNegative()
+  schema.add("study.png_frames", T::Integer).withUnit("-").defaultsTo("8").nonNegative()
       .describedAs("about this many PNG pictures of the main case (with output.png); 0: none");
-  schema.add("study.shear_coefficient", T::Number)
-      .withUnit("-")
-      .defaultsTo("0.8333333333333334")
-      .positive()
+  schema.add("study.shear_coefficient", T::Number).withUnit("-").defaultsTo("0.8333333333333334").positive()
       .describedAs("Timoshenko shear coefficient kappa of the reference (5/6 for a rectangle)");
-  schema.add("study.linearised_modes", T::Boolean)
-      .defaultsTo("true")
+  schema.add("study.linearised_modes", T::Boolean).defaultsTo("true")
       .describedAs("also compute the first bending period of the updated-Lagrangian SPH linearised about rest (no "
                    "amplitude, no artificial terms, no time integration) at every resolution: seconds up to "
                    "H / dp = 10, minutes beyond");
-  schema.add("study.very_weak_sph", T::Boolean)
-      .defaultsTo("true")
+  schema.add("study.very_weak_sph", T::Boolean).defaultsTo("true")
       .describedAs("also run the very weak form SPH (consistent variant) at the scene's resolution and small V_f");
-  schema.add("study.very_weak_smoothing_length_ratio", T::Number)
-      .withUnit("-")
-      .defaultsTo("1.0")
-      .positive()
+  schema.add("study.very_weak_smoothing_length_ratio", T::Number).withUnit("-").defaultsTo("1.0").positive()
       .describedAs("h / dx of the very weak form case");
-  schema.add("study.very_weak_smoothing_rate", T::Number)
-      .withUnit("1/s")
-      .defaultsTo("1.0e4")
-      .nonNegative()
+  schema.add("study.very_weak_smoothing_rate", T::Number).withUnit("1/s").defaultsTo("1.0e4").nonNegative()
       .describedAs("rate of the filter v <- v - alpha (I - S)^2 v of the very weak form case (below 1e4 it blows up)");
-  schema.add("study.very_weak_cfl", T::Number)
-      .withUnit("-")
-      .defaultsTo("0.5")
-      .between(0, 1, false, true)
+  schema.add("study.very_weak_cfl", T::Number).withUnit("-").defaultsTo("0.5").between(0, 1, false, true)
       .describedAs("central-difference step of the very weak form case, as a fraction of its operator's stable step");
-  schema.add("study.very_weak_ghost_layers", T::Integer)
-      .withUnit("-")
-      .defaultsTo("2")
-      .nonNegative()
+  schema.add("study.very_weak_ghost_layers", T::Integer).withUnit("-").defaultsTo("2").nonNegative()
       .describedAs("ghost layers on every face of the very weak form case (they complete the kernel sums)");
   return schema;
 }
@@ -276,8 +238,7 @@ CaseTable<PlateCaseResult> casesTable() {
   t.column("case", [](R r) { return r.settings.name; }, TerminalColumn("case", 20).left())
       .column("method", [](R r) { return methodName(r.settings.method); })
       .column("H_over_dp", [](R r) { return r.settings.rows; }, TerminalColumn("H/dp", 6))
-      .column("dp [m]", [](R r) { return r.spacing; })
-      .column("V_f", [](R r) { return r.settings.velocityFactor; })
+      .column("dp [m]", [](R r) { return r.spacing; }).column("V_f", [](R r) { return r.settings.velocityFactor; })
       .column("particles", [](R r) { return r.record.particles; }, TerminalColumn("particles", 10))
       .column("fixed_particles", [](R r) { return r.fixedParticles; })
       .column("h [m]", [](R r) { return r.smoothingLength; })
@@ -402,15 +363,9 @@ int main(int argc, char** argv) {
     const Scene& scene = plan.study.scene;
     RunSummary summary(kProgram, scene.info.name, scene.method.name, scene.integrator.name);
     summary.files.add("cases.csv");
-    summary.particles = main.record.particles;
-    summary.meanNeighbours = main.meanNeighbours;
-    summary.timeStep = main.record.timeStep;
-    summary.simulatedTime = main.settings.endTime;
     summary.addCases(results);
-    for (const PlateCaseResult& r : results) {
-      summary.steps += r.record.steps;
-      summary.wallSeconds += r.record.setupSeconds + r.record.loopSeconds;
-    }
+    summary.totalsFromFirstCase();
+    summary.meanNeighbours = main.meanNeighbours;
     summary.figures.push_back({"thin_period [s]", main.thinPeriod});
     summary.figures.push_back({"timoshenko_period [s]", main.timoshenkoPeriod});
     for (const PlateCaseResult& r : results) {

@@ -257,15 +257,10 @@ int main(int argc, char** argv) {
     const CaseResult& first = results.front();
     RunSummary summary(kProgram, scene.info.name, scene.method.name, plan.study.integration.integrator);
     summary.files.add("cases.csv");
-    summary.particles = first.record.particles;
-    summary.meanNeighbours = first.meanNeighbours;
-    summary.timeStep = first.record.timeStep;
-    summary.simulatedTime = scene.integrator.endTime;
     summary.addCases(results);
-    for (const CaseResult& r : results) {
-      summary.steps += r.record.steps;
-      summary.wallSeconds += r.record.setupSeconds + r.record.loopSeconds;
-    }
+    summary.totalsFromFirstCase();
+    summary.meanNeighbours = first.meanNeighbours;
+    summary.simulatedTime = scene.integrator.endTime;  // the scene's, even when the first case stopped early
     // No exact solution: the errors are the energy balance and the fragments beyond the two rings.
     for (const CaseResult& r : results) {
       summary.errors.push_back({r.settings.name + "_largest_balance_drift", r.largestBalanceDrift});

@@ -72,6 +72,19 @@ void RunSummary::totalsFromCases() {
   }
 }
 
+void RunSummary::totalsFromFirstCase() {
+  if (cases.empty()) return;
+  particles = cases.front().particles;
+  timeStep = cases.front().timeStep;
+  simulatedTime = cases.front().simulatedTime;
+  steps = 0;
+  wallSeconds = 0;
+  for (const CaseRecord& c : cases) {
+    steps += c.steps;
+    wallSeconds += c.setupSeconds + c.loopSeconds;
+  }
+}
+
 void RunSummary::finish() { peakMemoryMiB = mfwave::peakMemoryMiB(); }
 
 void RunSummary::print(std::ostream& out) const {

@@ -93,6 +93,9 @@ struct RunSummary {
   // The run's totals from its cases, for a study whose cases run one after another: particles of
   // the largest case, steps and (loop) wall seconds summed over all cases.
   void totalsFromCases();
+  // The totals of a study whose first case is its main one: particles, dt and simulated time of
+  // the first case, steps and wall seconds (set-up and loop) summed over all cases.
+  void totalsFromFirstCase();
   // The record of every case of a study (each `Case` holds its `record` from the start), in run
   // order.
   template <class Case>

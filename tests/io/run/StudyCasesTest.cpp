@@ -66,5 +66,20 @@ TEST(StudyCases, ASummaryTakesEveryRecordWholeInRunOrder) {
   EXPECT_EQ(summary.files.entries(), (std::vector<std::string>{"scene.resolved.toml", "n4.csv", "n8.csv"}));
 }
 
+TEST(StudyCases, AStudyLedByItsFirstCaseTakesItsHeadlineAndSumsTheCost) {
+  std::vector<Result> results = runCases(std::vector<int>{16, 4}, runOne, false);
+  results[0].record.timeStep = 0.01;
+  results[0].record.simulatedTime = 2;
+  for (Result& r : results) r.record.setupSeconds = 0.25;
+  RunSummary summary("study", "scene", "method", "integrator");
+  summary.addCases(results);
+  summary.totalsFromFirstCase();
+  EXPECT_EQ(summary.particles, 256);  // the first case's, not the largest by chance
+  EXPECT_EQ(summary.timeStep, 0.01);
+  EXPECT_EQ(summary.simulatedTime, 2);
+  EXPECT_EQ(summary.steps, 200);
+  EXPECT_DOUBLE_EQ(summary.wallSeconds, 2 * (0.25 + 0.5));  // set-up and loop of every case
+}
+
 }  // namespace
 }  // namespace mfwave
