@@ -33,7 +33,6 @@ struct CaseResult : StudyCase {
   Real plateauStressError = 0;  // (mean sigma over |x| < f c t) / (-rho c v0) - 1
   Real frontErrorOverDx = 0;    // (measured right front - c t) / dx
   Real balanceDrift = 0;        // EnergyLedger::largestBalanceDrift
-  long framesWritten = 0;
   Real orderVelocity = std::nan(""), orderStress = std::nan("");
 };
 

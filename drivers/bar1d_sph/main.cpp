@@ -144,7 +144,6 @@ int main(int argc, char** argv) {
     summary.notes.add("particles: the finest case; steps and wall time summed over all cases");
     summary.notes.add("errors: relative L1 norms at the end time against SymmetricBarImpact; plateau error relative "
                       "to rho c v0; front error in particle spacings");
-    if (results.front().framesWritten > 0 || results.back().framesWritten > 0) summary.files.add("frame.pvd");
     summary.conclude(folder, &std::cout);
     return 0;
   });

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -12,6 +13,7 @@
 namespace fs = std::filesystem;
 using mfwave::testing::runStudy;
 using mfwave::testing::StudyOutcome;
+using mfwave::testing::summaryFiles;
 using mfwave::testing::summaryNumbers;
 
 namespace {
@@ -31,6 +33,9 @@ TEST(Bar1dSphStudy, PlateauFrontsAndConvergence) {
   for (const char* file : {"cases.csv", "profile-0.02.csv", "profile-0.01.csv", "profile-0.005.csv", "frame.pvd",
                            "summary.json", "scene.resolved.toml"})
     EXPECT_TRUE(fs::exists(out / file)) << file;
+  // The frame series of the middle case (dx = geometry.spacing) is listed with what it holds.
+  const std::vector<std::string> listed = summaryFiles(out / "summary.json");
+  EXPECT_TRUE(std::any_of(listed.begin(), listed.end(), [](const std::string& f) { return f.rfind("frame.pvd (", 0) == 0; }));
 
   const auto e = summaryNumbers(out / "summary.json", "errors");
   const auto f = summaryNumbers(out / "summary.json", "figures");

@@ -11,6 +11,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace mfwave::testing {
 
@@ -47,6 +48,12 @@ inline std::map<std::string, double> summaryNumbers(const std::filesystem::path&
       if (value.is_number()) found[key] = value.get<double>();
   }
   return found;
+}
+
+// The files a summary.json lists (relative to its folder, as the driver wrote them).
+inline std::vector<std::string> summaryFiles(const std::filesystem::path& summaryPath) {
+  const nlohmann::json summary = nlohmann::json::parse(std::ifstream(summaryPath));
+  return summary["files"].get<std::vector<std::string>>();
 }
 
 }  // namespace mfwave::testing
