@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 using mfwave::testing::runStudy;
@@ -30,6 +31,7 @@ TEST(Bar1dSphStudy, PlateauFrontsAndConvergence) {
   const StudyOutcome run = runBar("--set 'study.spacings=[0.02,0.01,0.005]' --set geometry.spacing=0.01 --out " + out.string(),
                              "three");
   ASSERT_TRUE(run.exited && run.exitCode == 0) << run.log;
+  EXPECT_EQ(mfwave::testing::summaryDisagreements(out), std::vector<std::string>{});  // every output listed
   for (const char* file : {"cases.csv", "profile-0.02.csv", "profile-0.01.csv", "profile-0.005.csv", "frame.pvd",
                            "summary.json", "scene.resolved.toml"})
     EXPECT_TRUE(fs::exists(out / file)) << file;

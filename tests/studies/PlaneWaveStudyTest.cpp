@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -28,7 +29,10 @@ PlaneWaveRun run(const std::string& arguments, const std::string& name) {
   PlaneWaveRun r{mfwave::testing::runStudy(PLANEWAVE_EXECUTABLE, std::string(SCENES_FOLDER) + "/planewave.toml",
                                   "--out " + out.string() + " " + arguments, "planewave-" + name),
         {}};
-  if (r.outcome.exitCode == 0) r.numbers = mfwave::testing::summaryNumbers(out / "summary.json", nullptr);
+  if (r.outcome.exitCode == 0) {
+    r.numbers = mfwave::testing::summaryNumbers(out / "summary.json", nullptr);
+    EXPECT_EQ(mfwave::testing::summaryDisagreements(out), std::vector<std::string>{});  // every output listed
+  }
   return r;
 }
 

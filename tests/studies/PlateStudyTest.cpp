@@ -14,6 +14,7 @@
 #include <iterator>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 using mfwave::testing::runStudy;
@@ -42,6 +43,7 @@ TEST(PlateStudy, CoarsePlatesConvergeAndKeepTheirEnergyOverThirtyPeriods) {
           out.string(),
       "coarse");
   ASSERT_TRUE(run.exited && run.exitCode == 0) << run.log;
+  EXPECT_EQ(mfwave::testing::summaryDisagreements(out), std::vector<std::string>{});  // every output listed
   for (const char* file : {"cases.csv", "ulsph_Hdp3_Vf0.05-tip.csv", "ulsph_Hdp3_Vf0.05-energy.csv",
                            "ulsph_Hdp3_Vf0.01-tip.csv", "ulsph_Hdp5_Vf0.01-tip.csv", "vwsph_Hdp3_Vf0.01-tip.csv",
                            "ulsph_Hdp3_Vf0.05.pvd", "ulsph_Hdp3_Vf0.05_000001.vtp", "summary.json",
@@ -108,6 +110,7 @@ TEST(PlateStudy, LinearisedPeriodConvergesToTimoshenkoAtSecondOrder) {
           out.string(),
       "modes");
   ASSERT_TRUE(run.exited && run.exitCode == 0) << run.log;
+  EXPECT_EQ(mfwave::testing::summaryDisagreements(out), std::vector<std::string>{});  // every output listed
   EXPECT_TRUE(fs::exists(out / "modes.csv"));
   // summary.json lists every file the run wrote, modes.csv included.
   std::ifstream json(out / "summary.json");

@@ -1,5 +1,7 @@
 // Runs the bar1d and plane2d drivers (Luo-Liu-Huang RK collocation) as a user would and checks
 // their convergence tables, and that an unstable support is refused.
+#include "support/StudyRun.hpp"
+
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -60,6 +62,7 @@ TEST(Bar1dStudy, DisplacementConvergesAtFirstOrderVelocityAtAboutOneThird) {
   // Critical step of the paper's case: c dt = 0.3106 (paper, Table 1: 0.318 predicted, 0.322 numerical).
   EXPECT_NEAR(num(rows[0], 3) * std::sqrt(10.0), 0.3106, 2e-3);
   EXPECT_TRUE(std::filesystem::exists(out + "/nodes-161-profile.csv"));
+  EXPECT_EQ(mfwave::testing::summaryDisagreements(out), std::vector<std::string>{});  // every output listed
 }
 
 TEST(Bar1dStudy, ImplicitNewmarkAgreesWithCentralDifference) {
@@ -92,6 +95,7 @@ TEST(Plane2dStudy, PlaneStrainConvergesAtSecondOrderInL2) {
   EXPECT_NEAR(num(rows[2], 6), 2.0, 0.2);
   EXPECT_NEAR(num(rows[2], 8), 2.0, 0.2);
   EXPECT_LT(num(rows[2], 5), 6e-3);
+  EXPECT_EQ(mfwave::testing::summaryDisagreements(out), std::vector<std::string>{});  // every output listed
 }
 
 // Issue 17: RK collocation at a / h = 3 in 2-D has interior modes with omega^2 < 0 (they grow at

@@ -1,4 +1,6 @@
 // Runs the wave1d driver as a user would and checks its convergence table against theory.
+#include "support/StudyRun.hpp"
+
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -63,6 +65,7 @@ TEST(Wave1dStudy, EveryIntegratorConvergesAtSecondOrderInDx) {
     EXPECT_LT(series.back().energyDrift, 1e-2) << name;
   }
   EXPECT_TRUE(std::filesystem::exists(out + "/central_difference-128-probe.csv"));
+  EXPECT_EQ(mfwave::testing::summaryDisagreements(out), std::vector<std::string>{});  // every output listed
 }
 
 TEST(Wave1dStudy, BadInputFailsWithTheKeyAndNoOutput) {

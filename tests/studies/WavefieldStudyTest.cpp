@@ -1,6 +1,8 @@
 // Runs the wavefield driver as a user would: the sample 3-D scene writes its frames, collection,
 // probes and summary; every malformed scene of tests/io/scene/malformed fails with exit code 2
 // and names its key, and none crashes.
+#include "support/StudyRun.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
@@ -10,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -50,6 +53,7 @@ TEST(WavefieldStudy, SampleBlockSceneWritesFramesProbesAndSummary) {
                                        "--out " + out.string(),
                                    "block");
   ASSERT_TRUE(run.exited && run.exitCode == 0) << run.log;
+  EXPECT_EQ(mfwave::testing::summaryDisagreements(out), std::vector<std::string>{});  // every output listed
   EXPECT_TRUE(fs::exists(out / "frame.pvd"));
   EXPECT_TRUE(fs::exists(out / "frame_000000.vtp"));
   EXPECT_TRUE(fs::exists(out / "frame_000002.vtp"));  // steps 0, 25, 50 of 72
@@ -78,6 +82,7 @@ TEST(WavefieldStudy, PngFramesUnderXvfb) {
                                        "--out " + out.string(),
                                    "png", "xvfb-run -a -s '-screen 0 1280x1024x24' ");
   ASSERT_TRUE(run.exited && run.exitCode == 0) << run.log;
+  EXPECT_EQ(mfwave::testing::summaryDisagreements(out), std::vector<std::string>{});  // every output listed
   EXPECT_TRUE(fs::exists(out / "frame_000000.png")) << run.log;
   EXPECT_GT(fs::file_size(out / "frame_000000.png"), 10000u);
 }
@@ -90,6 +95,7 @@ TEST(WavefieldStudy, WithoutADisplayTheRunSaysWhyNoPngWasMade) {
                                        "--out " + out.string(),
                                    "nodisplay", "env -u DISPLAY ");
   ASSERT_TRUE(run.exited && run.exitCode == 0) << run.log;
+  EXPECT_EQ(mfwave::testing::summaryDisagreements(out), std::vector<std::string>{});  // every output listed
   EXPECT_NE(run.log.find("no PNG frames"), std::string::npos) << run.log;
   EXPECT_TRUE(fs::exists(out / "frame_000000.vtp"));
   EXPECT_FALSE(fs::exists(out / "frame_000000.png"));

@@ -56,4 +56,43 @@ inline std::vector<std::string> summaryFiles(const std::filesystem::path& summar
   return summary["files"].get<std::vector<std::string>>();
 }
 
+// What summary.json and the folder disagree on: each file in `folder` that the summary does not
+// list, and each entry listed (without a wildcard) that is not there. An entry may carry a note
+// in parentheses ("frame.pvd (5 frames)"); a listed "<base>.pvd" covers its frames
+// "<base>_NNNNNN.vtp" and "<base>_*.png (N images)" its pictures. Empty when they agree.
+inline std::vector<std::string> summaryDisagreements(const std::filesystem::path& folder) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> listed;
+  for (std::string entry : summaryFiles(folder / "summary.json")) {
+    const std::size_t note = entry.find(" (");
+    listed.push_back(note == std::string::npos ? entry : entry.substr(0, note));
+  }
+  const auto isListed = [&](const std::string& name) {
+    for (const std::string& entry : listed) {
+      if (entry == name) return true;
+      const std::size_t star = entry.find('*');
+      if (star != std::string::npos && name.size() >= entry.size() - 1 &&
+          name.compare(0, star, entry, 0, star) == 0 &&
+          name.compare(name.size() - (entry.size() - star - 1), std::string::npos, entry, star + 1) == 0)
+        return true;
+      // "<base>.pvd" lists its frames "<base>_NNNNNN.vtp"
+      if (entry.size() > 4 && entry.compare(entry.size() - 4, 4, ".pvd") == 0) {
+        const std::string base = entry.substr(0, entry.size() - 4) + "_";
+        if (name.size() == base.size() + 10 && name.compare(0, base.size(), base) == 0 &&
+            name.compare(name.size() - 4, 4, ".vtp") == 0)
+          return true;
+      }
+    }
+    return false;
+  };
+  std::vector<std::string> disagreements;
+  for (const auto& file : fs::directory_iterator(folder))
+    if (file.is_regular_file() && !isListed(file.path().filename().string()))
+      disagreements.push_back("not listed: " + file.path().filename().string());
+  for (const std::string& entry : listed)
+    if (entry.find('*') == std::string::npos && !fs::exists(folder / entry))
+      disagreements.push_back("listed, not written: " + entry);
+  return disagreements;
+}
+
 }  // namespace mfwave::testing
