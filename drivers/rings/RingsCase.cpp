@@ -11,8 +11,10 @@
 #include "io/vtk/PngFrameRenderer.hpp"
 #include "io/vtk/VtkFrameWriter.hpp"
 #include "kernels/KernelFactory.hpp"
+#include "observers/BodyMotionRecorder.hpp"
 #include "observers/ProbeRecorder.hpp"
 #include "observers/StabilityMonitor.hpp"
+#include "observers/StepSizeRecorder.hpp"
 #include "observers/TimeLoop.hpp"
 #include "observers/TimeSeries.hpp"
 #include "particles/Annulus.hpp"
@@ -24,6 +26,7 @@
 #include <iomanip>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <optional>
 
 namespace mfwave::rings {
@@ -52,10 +55,10 @@ Coordinates<D> positionsOf(const UpdatedLagrangianSphLayout<D>& layout, const Ve
 
 bool allFinite(const Vector& y) { return y.allFinite(); }
 
-// Follows the two rings on the whole state y, every step: the smallest step, each ring's centre
-// of mass (position and x velocity) and the gap between them along x every `every` steps, and
-// every particle with its fragment at the snapshot times.
-class RingTracker : public Observer {
+// Every particle with its fragment at the snapshot times, from the adapter's particles (at their
+// current positions when a view is shown): seen at every step, a snapshot at the first state at or
+// after each time, and every remaining one at the end.
+class Snapshots : public Observer {
  public:
   struct Snapshot {
     Real time;
@@ -63,84 +66,42 @@ class RingTracker : public Observer {
     std::vector<Index> fragment;
   };
 
-  RingTracker(const UpdatedLagrangianSph<D>& system, Index leftCount, long every, std::vector<Real> snapshotTimes,
-              Real linkDistance)
-      : layout_(system.layout()),
-        mass_(system.masses()),
-        left_(leftCount),
-        every_(every),
-        snapshotTimes_(std::move(snapshotTimes)),
-        link_(linkDistance),
-        series_("t [s]", {"x_left [m]", "x_right [m]", "vx_left [m/s]", "vx_right [m/s]", "gap_x [m]", "dt [s]"}) {}
+  Snapshots(const ParticleSet<D>& particles, std::vector<Real> times, Real linkDistance)
+      : particles_(particles), times_(std::move(times)), link_(linkDistance) {}
 
-  void begin(const StateView& s) override { take(s, false); }
   void observe(const StateView& s) override { take(s, false); }
   void end(const StateView& s) override { take(s, true); }
-
-  const TimeSeries& series() const { return series_; }
   const std::vector<Snapshot>& snapshots() const { return snapshots_; }
-  Real smallestStep() const { return smallestStep_; }
-  Real smallestGap() const { return smallestGap_; }
 
  private:
   void take(const StateView& s, bool last) {
-    const Vector& y = s.displacement;  // a first-order integrator's view: the whole state
-    if (s.step == lastStep_ && !last) return;
-    if (s.step > lastStep_ && lastStep_ >= 0) {  // seen every step: s.dt is the step just taken
-      lastStepSize_ = s.dt;
-      smallestStep_ = std::min(smallestStep_, lastStepSize_);
-    }
-    lastStep_ = s.step;
-    if (!allFinite(y)) return;
-    if ((s.step % every_ == 0 || last) && s.step != lastSampled_) sample(s);
-    const Real slack = 1e-9 * (snapshotTimes_.empty() ? 1 : std::max(snapshotTimes_.back(), Real(1e-300)));
-    while (nextSnapshot_ < snapshotTimes_.size() && (last || s.time >= snapshotTimes_[nextSnapshot_] - slack)) {
-      Snapshot snap{s.time, positionsOf(layout_, y), {}};
+    if (!s.displacement.allFinite()) return;
+    const Real slack = 1e-9 * (times_.empty() ? 1 : std::max(times_.back(), Real(1e-300)));
+    while (next_ < times_.size() && (last || s.time >= times_[next_] - slack)) {
+      Snapshot snap{s.time, particles_.coordinates(), {}};
       snap.fragment = findFragments(snap.positions, link_).label;
       snapshots_.push_back(std::move(snap));
-      ++nextSnapshot_;
-      if (last) continue;
-      // one snapshot per state: later times wait for later steps
-      break;
+      ++next_;
+      if (!last) break;  // one snapshot per state: later times wait for later steps
     }
   }
 
-  void sample(const StateView& s) {
-    lastSampled_ = s.step;
-    const Vector& y = s.displacement;
-    Real m[2] = {0, 0}, x[2] = {0, 0}, vx[2] = {0, 0};
-    Real leftEdge = -std::numeric_limits<Real>::infinity(), rightEdge = std::numeric_limits<Real>::infinity();
-    for (Index i = 0; i < layout_.particles; ++i) {
-      const int r = i < left_ ? 0 : 1;
-      const Real mi = mass_[static_cast<std::size_t>(i)];
-      const Real xi = y[layout_.position(i, 0)];
-      m[r] += mi;
-      x[r] += mi * xi;
-      vx[r] += mi * y[layout_.velocity(i, 0)];
-      if (r == 0)
-        leftEdge = std::max(leftEdge, xi);
-      else
-        rightEdge = std::min(rightEdge, xi);
-    }
-    const Real gap = rightEdge - leftEdge;
-    smallestGap_ = std::min(smallestGap_, gap);
-    series_.append(s.time, {x[0] / m[0], x[1] / m[1], vx[0] / m[0], vx[1] / m[1], gap, lastStepSize_});
-  }
-
-  const UpdatedLagrangianSphLayout<D>& layout_;
-  const std::vector<Real>& mass_;
-  Index left_;
-  long every_;
-  std::vector<Real> snapshotTimes_;
-  std::size_t nextSnapshot_ = 0;
+  const ParticleSet<D>& particles_;
+  std::vector<Real> times_;
+  std::size_t next_ = 0;
   Real link_;
-  TimeSeries series_;
   std::vector<Snapshot> snapshots_;
-  long lastStep_ = -1, lastSampled_ = -1;
-  Real lastStepSize_ = 0;
-  Real smallestStep_ = std::numeric_limits<Real>::infinity();
-  Real smallestGap_ = std::numeric_limits<Real>::infinity();
 };
+
+// <case>-rings.csv: each ring's centre of mass (x) and its x velocity, the gap between the rings
+// along x (the right ring's leftmost particle minus the left ring's rightmost) and the step.
+TimeSeries ringMotion(const std::vector<BodyMotionRecorder<D>::Sample>& samples) {
+  TimeSeries series("t [s]", {"x_left [m]", "x_right [m]", "vx_left [m/s]", "vx_right [m/s]", "gap_x [m]", "dt [s]"});
+  for (const auto& s : samples)
+    series.append(s.time, {s.centre[0][0], s.centre[1][0], s.velocity[0][0], s.velocity[1][0],
+                           s.lower[1][0] - s.upper[0][0], s.dt});
+  return series;
+}
 
 // Shows the adapted view (particles at their current positions) to the PNG renderer with four
 // still, zero-valued markers at the corners of the scene's box, so every picture frames the same
@@ -172,11 +133,11 @@ class WindowedView : public ViewAdapter {
   Vector displacement_, velocity_;
 };
 
-void writeSnapshots(const std::string& path, const std::vector<RingTracker::Snapshot>& snapshots, Index leftCount) {
+void writeSnapshots(const std::string& path, const std::vector<Snapshots::Snapshot>& snapshots, Index leftCount) {
   AtomicFile file(path);
   std::ostream& out = file.stream();
   out << "t [s],particle,ring,fragment,x [m],y [m]\n" << std::setprecision(9);
-  for (const RingTracker::Snapshot& s : snapshots)
+  for (const Snapshots::Snapshot& s : snapshots)
     for (std::size_t i = 0; i < s.fragment.size(); ++i)
       out << s.time << ',' << i << ',' << (static_cast<Index>(i) < leftCount ? "left" : "right") << ',' << s.fragment[i]
           << ',' << s.positions[0][i] << ',' << s.positions[1][i] << '\n';
@@ -246,9 +207,17 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   EnergyLedger<D> ledger(system);
   std::vector<Real> snapshotTimes;
   for (int k = 0; k < study.snapshots; ++k) snapshotTimes.push_back(endTime * k / std::max(1, study.snapshots - 1));
-  RingTracker tracker(system, leftCount, study.trackEvery, snapshotTimes, study.linkDistance * result.spacing);
-  // One particle view for every particle output, each at its own interval.
+  // One particle view for every particle output, each at its own interval: the rings' motion,
+  // the snapshots, the stability monitor, probes and frames.
   SolidStateAdapter<D> adapter(system, particles);
+  std::vector<Index> left(static_cast<std::size_t>(leftCount)), right(static_cast<std::size_t>(record.particles - leftCount));
+  std::iota(left.begin(), left.end(), Index(0));
+  std::iota(right.begin(), right.end(), leftCount);
+  BodyMotionRecorder<D> motion(adapter.particles(), system.masses(), {{"left", left}, {"right", right}});
+  adapter.add(motion, study.trackEvery);
+  Snapshots snapshots(adapter.particles(), snapshotTimes, study.linkDistance * result.spacing);
+  adapter.add(snapshots);
+  StepSizeRecorder steps;
   StabilityMonitorOptions stability = scene.stability.options(D);
   StabilityMonitor monitor(stability);
   adapter.add(monitor);
@@ -283,7 +252,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
 
   TimeLoop loop;
   loop.add(reporter);
-  loop.add(tracker);
+  loop.add(steps);
   loop.add(adapter);
   loop.add(ledger, study.trackEvery);
   record.setupSeconds = setupClock.seconds();
@@ -302,7 +271,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   result.rhsEvaluations = integrator->rhsEvaluations();
   result.meanNeighbours = system.meanNeighbourCount();
   result.neighbourRebuilds = system.neighbourRebuilds();
-  result.smallestStep = tracker.smallestStep();
+  result.smallestStep = steps.smallest();
   record.timeStep = record.steps > 0 ? record.simulatedTime / static_cast<Real>(record.steps) : 0;
 
   // energy budget and zero-energy-mode indicators
@@ -334,9 +303,9 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     result.fragments = -1;
     result.notes.push_back(settings.name + ": the final state is not finite; no fragment count");
   }
-  const TimeSeries& motion = tracker.series();
-  if (motion.rows() > 0) {
-    const std::vector<Real> vl = motion.column(2), vr = motion.column(3), gap = motion.column(4);
+  const TimeSeries rings = ringMotion(motion.samples());
+  if (rings.rows() > 0) {
+    const std::vector<Real> vl = rings.column(2), vr = rings.column(3), gap = rings.column(4);
     result.leftVelocityStart = vl.front();
     result.rightVelocityStart = vr.front();
     result.leftVelocityEnd = vl.back();
@@ -347,21 +316,21 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     // are out of it for good.
     for (std::size_t k = 0; k < gap.size(); ++k) {
       if (gap[k] < result.supportRadius) {
-        if (result.contactTime < 0) result.contactTime = motion.times()[k];
+        if (result.contactTime < 0) result.contactTime = rings.times()[k];
         result.separationTime = -1;
       } else if (result.contactTime >= 0 && result.separationTime < 0) {
-        result.separationTime = motion.times()[k];
+        result.separationTime = rings.times()[k];
       }
     }
-    result.smallestGap = tracker.smallestGap();
+    result.smallestGap = *std::min_element(gap.begin(), gap.end());
   }
 
   // files
   energy.writeCsv(folder + "/" + settings.name + "-energy.csv");
   result.files.push_back(settings.name + "-energy.csv");
-  motion.writeCsv(folder + "/" + settings.name + "-rings.csv");
+  rings.writeCsv(folder + "/" + settings.name + "-rings.csv");
   result.files.push_back(settings.name + "-rings.csv");
-  writeSnapshots(folder + "/" + settings.name + "-positions.csv", tracker.snapshots(), leftCount);
+  writeSnapshots(folder + "/" + settings.name + "-positions.csv", snapshots.snapshots(), leftCount);
   result.files.push_back(settings.name + "-positions.csv");
   if (!probes.empty()) {
     probeRecorder.series().writeCsv(folder + "/" + settings.name + "-probes.csv");
