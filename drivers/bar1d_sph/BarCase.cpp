@@ -69,14 +69,14 @@ CaseResult runCase(const Settings& settings, Real dx, const std::string& folder,
 
   EnergyLedger<1> ledger(system);
   SolidStateAdapter<1> adapter(system, particles);
-  std::optional<VtkFrameWriter<1>> frames;
+  typename ParticleFrames<1>::Settings frameOptions;  // VTK frames only
+  frameOptions.vtk = writeFrames && settings.output.vtk;
+  frameOptions.extra = adapter.extraFields();
+  ParticleFrames<1> frames(adapter.particles(), folder, "frame", frameOptions);
+  frames.attachTo(adapter, settings.output.every);
   TimeLoop loop;
   loop.add(ledger, 20);
-  if (writeFrames && settings.output.vtk) {
-    frames.emplace(adapter.particles(), folder, "frame", 1, adapter.extraFields());
-    adapter.add(*frames);
-    loop.add(adapter, settings.output.every);
-  }
+  loop.add(adapter);
   CaseRecord& record = result.record;
   record.setupSeconds = setup.seconds();
   const RunStatistics stats = loop.run(*integrator, settings.endTime);
@@ -123,7 +123,7 @@ CaseResult runCase(const Settings& settings, Real dx, const std::string& folder,
   result.frontErrorOverDx = (measuredFront(x, sigma, exact.interfaceStress()) - exact.frontPosition(t)) / dx;
   result.balanceDrift = ledger.largestBalanceDrift();
   // The frame series, whichever case writes it (the one at geometry.spacing).
-  frameOutputReport<1>("frame", frames, std::nullopt).appendTo(result.files, result.notes);
+  frames.report().appendTo(result.files, result.notes);
   record.errors = {{"l1_velocity", result.l1Velocity},
                    {"l1_stress", result.l1Stress},
                    {"plateau_stress_error", result.plateauStressError},

@@ -109,21 +109,13 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
 
   StabilityMonitor monitor(scene.stability.options(D));
   ProgressReporter reporter(scene.integrator.endTime, particles.physicalCount(), progress);
-  std::optional<VtkFrameWriter<D>> frames;
-  std::optional<PngFrameRenderer<D>> images;
+  ParticleFrames<D> frames(particles, folder, settings.name, frameSettings<D>(scene.output, settings.writeFrames));
   TimeLoop loop;
   loop.add(monitor);
   loop.add(ledger);
   loop.add(reporter);
   loop.add(recorder, scene.output.probeEvery);
-  if (settings.writeFrames && scene.output.vtk) {
-    frames.emplace(particles, folder, settings.name, D);
-    loop.add(*frames, scene.output.every);
-  }
-  if (settings.writeFrames && scene.output.png) {
-    images.emplace(particles, folder, settings.name, D, pngOptionsFor(scene.output));
-    loop.add(*images, scene.output.every);
-  }
+  frames.attachTo(loop, scene.output.every);
   const std::string energyFile = settings.name + "-energy.csv";
   RunStatistics stats;
   try {
@@ -214,7 +206,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     result.files.push_back("exact.csv");
   }
   result.files.push_back(settings.name + "-probes.csv");
-  frameOutputReport(settings.name, frames, images).appendTo(result.files, result.notes);
+  frames.report().appendTo(result.files, result.notes);
   record.peakMemoryMiB = peakMemoryMiB();
   return result;
 }

@@ -65,26 +65,18 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
   adapter.add(tip, study.tipEvery);
   EnergyLedger<D> ledger(system);
   ProgressReporter reporter(settings.endTime, result.record.particles, progress);
-  std::optional<VtkFrameWriter<D>> frames;
-  std::optional<PngFrameRenderer<D>> images;
+  typename ParticleFrames<D>::Settings frameOptions = frameSettings<D>(scene.output, settings.writeFrames);
+  frameOptions.png = frameOptions.png && study.pngFrames > 0;
+  // About study.pngFrames pictures over the run (rendering costs ~1 s each).
+  const Real expectedFrames = settings.endTime / firstStep / static_cast<Real>(scene.output.every);
+  frameOptions.pngEvery = std::max(1L, std::lround(expectedFrames / static_cast<Real>(std::max(1L, study.pngFrames))));
+  frameOptions.extra = adapter.extraFields();
+  ParticleFrames<D> frames(adapter.particles(), folder, settings.name, frameOptions);
+  frames.attachTo(adapter, scene.output.every);
   TimeLoop loop;
   loop.add(reporter);
   loop.add(adapter);
   loop.add(ledger, study.energyEvery);
-  if (settings.writeFrames && scene.output.writesFrames()) {
-    if (scene.output.vtk) {
-      frames.emplace(adapter.particles(), folder, settings.name, D, adapter.extraFields());
-      adapter.add(*frames, scene.output.every);
-    }
-    if (scene.output.png && study.pngFrames > 0) {
-      // About study.pngFrames pictures over the run (rendering costs ~1 s each).
-      const Real expectedFrames = settings.endTime / firstStep / static_cast<Real>(scene.output.every);
-      const long every = std::max(1L, std::lround(expectedFrames / static_cast<Real>(study.pngFrames)));
-      images.emplace(adapter.particles(), folder, settings.name, D, pngOptionsFor(scene.output), every,
-                     adapter.extraFields());
-      adapter.add(*images, scene.output.every);
-    }
-  }
   result.record.setupSeconds = setupClock.seconds();
 
   const RunStatistics stats = loop.run(*integrator, settings.endTime);
@@ -112,7 +104,7 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
   energy.writeCsv(folder + "/" + settings.name + "-energy.csv");
   result.files.push_back(settings.name + "-tip.csv");
   result.files.push_back(settings.name + "-energy.csv");
-  frameOutputReport(settings.name, frames, images).appendTo(result.files, result.notes);
+  frames.report().appendTo(result.files, result.notes);
   analyseTip(result, tip.series(), plate, study.shearCoefficient);
   return result;
 }

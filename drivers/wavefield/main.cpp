@@ -120,23 +120,16 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
   ProbeRecorder probes(probeList, 1);
   EnergyObserver energy(EnergyObserver::ofLinearSystem(system));
   ProgressReporter progress(scene.integrator.endTime, particles.size(), !cli.quiet);
-  std::optional<VtkFrameWriter<D>> frames;
-  std::optional<PngFrameRenderer<D>> images;
+  typename ParticleFrames<D>::Settings frameOptions = frameSettings<D>(scene.output);
+  frameOptions.components = 1;  // a scalar state
+  if (frameOptions.pngOptions.component != PngOptions::magnitude) frameOptions.pngOptions.component = 0;
+  ParticleFrames<D> frames(particles, folder, "frame", frameOptions);
   TimeLoop loop;
   loop.add(monitor);
   loop.add(progress);
   if (!scene.probes.empty()) loop.add(probes, scene.output.probeEvery);
   if (scene.output.energy) loop.add(energy, scene.output.probeEvery);
-  if (scene.output.vtk) {
-    frames.emplace(particles, folder, "frame", 1);
-    loop.add(*frames, scene.output.every);
-  }
-  if (scene.output.png) {
-    PngOptions png = pngOptionsFor(scene.output);
-    if (png.component != PngOptions::magnitude) png.component = 0;  // a scalar state has one component
-    images.emplace(particles, folder, "frame", 1, png);
-    loop.add(*images, scene.output.every);
-  }
+  frames.attachTo(loop, scene.output.every);
 
   const double setupSeconds = setup.seconds();
   const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
@@ -150,7 +143,7 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
     energy.series().writeCsv(folder + "/energy.csv");
     summary.files.add("energy.csv");
   }
-  const FrameOutputReport frameReport = frameOutputReport("frame", frames, images);
+  const FrameOutputReport frameReport = frames.report();
   summary.files.addAll(frameReport.files);
   summary.notes.addAll(frameReport.notes);
   summary.particles = particles.size();

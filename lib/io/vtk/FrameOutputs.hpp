@@ -43,4 +43,56 @@ FrameOutputReport frameOutputReport(const std::string& base, const std::optional
   return report;
 }
 
+// The particle frames of one series `base` a run writes: the VTK series (<base>_NNNNNN.vtp and
+// <base>.pvd) and the PNG pictures (<base>_NNNNNN.png) as asked, both of the same particle set
+// (which a ViewAdapter may keep at the current positions). attachTo adds them to whatever shows
+// them the state (a TimeLoop, or a ViewAdapter for a first-order method); report() is the
+// summary's lines for them.
+template <int D>
+class ParticleFrames {
+ public:
+  struct Settings {
+    bool vtk = false;
+    bool png = false;
+    PngOptions pngOptions;
+    long pngEvery = 1;       // a picture every n-th time the renderer is due
+    ExtraFields extra;       // fields beyond u and v in every frame and picture
+    int components = D;      // of u and v per particle in the view
+  };
+
+  // The particle set must outlive the frames.
+  ParticleFrames(const ParticleSet<D>& particles, const std::string& folder, const std::string& base,
+                 const Settings& settings)
+      : base_(base) {
+    if (settings.vtk) vtk_.emplace(particles, folder, base, settings.components, settings.extra);
+    if (settings.png)
+      png_.emplace(particles, folder, base, settings.components, settings.pngOptions, settings.pngEvery,
+                   settings.extra);
+  }
+
+  template <class Host>
+  void attachTo(Host& host, long every) {
+    if (vtk_) host.add(*vtk_, every);
+    if (png_) host.add(*png_, every);
+  }
+
+  FrameOutputReport report() const { return frameOutputReport(base_, vtk_, png_); }
+
+ private:
+  std::string base_;
+  std::optional<VtkFrameWriter<D>> vtk_;
+  std::optional<PngFrameRenderer<D>> png_;
+};
+
+// The frames [output] asks for (vtk, png with pngOptionsFor), or none when `wanted` is false (a
+// case that writes no frames).
+template <int D>
+typename ParticleFrames<D>::Settings frameSettings(const OutputSpec& output, bool wanted = true) {
+  typename ParticleFrames<D>::Settings settings;
+  settings.vtk = wanted && output.vtk;
+  settings.png = wanted && output.png;
+  settings.pngOptions = pngOptionsFor(output);
+  return settings;
+}
+
 }  // namespace mfwave
