@@ -12,6 +12,7 @@
 #include "io/vtk/VtkFrameWriter.hpp"
 #include "kernels/KernelFactory.hpp"
 #include "observers/BodyMotionRecorder.hpp"
+#include "observers/PositionSnapshots.hpp"
 #include "observers/ProbeRecorder.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/StepSizeRecorder.hpp"
@@ -55,44 +56,6 @@ Coordinates<D> positionsOf(const UpdatedLagrangianSphLayout<D>& layout, const Ve
 
 bool allFinite(const Vector& y) { return y.allFinite(); }
 
-// Every particle with its fragment at the snapshot times, from the adapter's particles (at their
-// current positions when a view is shown): seen at every step, a snapshot at the first state at or
-// after each time, and every remaining one at the end.
-class Snapshots : public Observer {
- public:
-  struct Snapshot {
-    Real time;
-    Coordinates<D> positions;
-    std::vector<Index> fragment;
-  };
-
-  Snapshots(const ParticleSet<D>& particles, std::vector<Real> times, Real linkDistance)
-      : particles_(particles), times_(std::move(times)), link_(linkDistance) {}
-
-  void observe(const StateView& s) override { take(s, false); }
-  void end(const StateView& s) override { take(s, true); }
-  const std::vector<Snapshot>& snapshots() const { return snapshots_; }
-
- private:
-  void take(const StateView& s, bool last) {
-    if (!s.displacement.allFinite()) return;
-    const Real slack = 1e-9 * (times_.empty() ? 1 : std::max(times_.back(), Real(1e-300)));
-    while (next_ < times_.size() && (last || s.time >= times_[next_] - slack)) {
-      Snapshot snap{s.time, particles_.coordinates(), {}};
-      snap.fragment = findFragments(snap.positions, link_).label;
-      snapshots_.push_back(std::move(snap));
-      ++next_;
-      if (!last) break;  // one snapshot per state: later times wait for later steps
-    }
-  }
-
-  const ParticleSet<D>& particles_;
-  std::vector<Real> times_;
-  std::size_t next_ = 0;
-  Real link_;
-  std::vector<Snapshot> snapshots_;
-};
-
 // <case>-rings.csv: each ring's centre of mass (x) and its x velocity, the gap between the rings
 // along x (the right ring's leftmost particle minus the left ring's rightmost) and the step.
 TimeSeries ringMotion(const std::vector<BodyMotionRecorder<D>::Sample>& samples) {
@@ -133,14 +96,18 @@ class WindowedView : public ViewAdapter {
   Vector displacement_, velocity_;
 };
 
-void writeSnapshots(const std::string& path, const std::vector<Snapshots::Snapshot>& snapshots, Index leftCount) {
+// <case>-positions.csv: every particle at each snapshot time, with its ring and its fragment then.
+void writeSnapshots(const std::string& path, const std::vector<PositionSnapshots<D>::Snapshot>& snapshots,
+                    Index leftCount, Real linkDistance) {
   AtomicFile file(path);
   std::ostream& out = file.stream();
   out << "t [s],particle,ring,fragment,x [m],y [m]\n" << std::setprecision(9);
-  for (const Snapshots::Snapshot& s : snapshots)
-    for (std::size_t i = 0; i < s.fragment.size(); ++i)
-      out << s.time << ',' << i << ',' << (static_cast<Index>(i) < leftCount ? "left" : "right") << ',' << s.fragment[i]
+  for (const auto& s : snapshots) {
+    const std::vector<Index> fragment = findFragments(s.positions, linkDistance).label;
+    for (std::size_t i = 0; i < fragment.size(); ++i)
+      out << s.time << ',' << i << ',' << (static_cast<Index>(i) < leftCount ? "left" : "right") << ',' << fragment[i]
           << ',' << s.positions[0][i] << ',' << s.positions[1][i] << '\n';
+  }
   file.commit();
 }
 
@@ -215,7 +182,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   std::iota(right.begin(), right.end(), leftCount);
   BodyMotionRecorder<D> motion(adapter.particles(), system.masses(), {{"left", left}, {"right", right}});
   adapter.add(motion, study.trackEvery);
-  Snapshots snapshots(adapter.particles(), snapshotTimes, study.linkDistance * result.spacing);
+  PositionSnapshots<D> snapshots(adapter.particles(), snapshotTimes);
   adapter.add(snapshots);
   StepSizeRecorder steps;
   StabilityMonitorOptions stability = scene.stability.options(D);
@@ -330,7 +297,8 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   result.files.push_back(settings.name + "-energy.csv");
   rings.writeCsv(folder + "/" + settings.name + "-rings.csv");
   result.files.push_back(settings.name + "-rings.csv");
-  writeSnapshots(folder + "/" + settings.name + "-positions.csv", snapshots.snapshots(), leftCount);
+  writeSnapshots(folder + "/" + settings.name + "-positions.csv", snapshots.snapshots(), leftCount,
+                 study.linkDistance * result.spacing);
   result.files.push_back(settings.name + "-positions.csv");
   if (!probes.empty()) {
     probeRecorder.series().writeCsv(folder + "/" + settings.name + "-probes.csv");
