@@ -229,12 +229,19 @@ int main(int argc, char** argv) {
     reader.checkAllKeysRead();  // unknown keys: before any work
     const std::string folder = prepareOutputFolder(cli.options(), study.scene.output.folder, reader);
 
-    std::vector<CaseResult> results;
+    // Every integrator at every resolution; the finest of each writes its time series.
+    struct Planned {
+      std::string integrator;
+      int cells;
+      bool writeSeries;
+    };
+    std::vector<Planned> plan;
     for (const auto& name : study.integrators)
-      for (std::size_t r = 0; r < study.cells.size(); ++r) {
-        results.push_back(runCase(study, name, study.cells[r], folder, r + 1 == study.cells.size()));
-        if (!cli.options().quiet) std::cerr << "  done " << name << " with " << study.cells[r] << " cells\n";
-      }
+      for (std::size_t r = 0; r < study.cells.size(); ++r)
+        plan.push_back({name, study.cells[r], r + 1 == study.cells.size()});
+    std::vector<CaseResult> results = runCases(
+        plan, [&](const Planned& c) { return runCase(study, c.integrator, c.cells, folder, c.writeSeries); },
+        !cli.options().quiet);
 
     const auto sameIntegrator = [](const CaseResult& a, const CaseResult& b) { return a.integrator == b.integrator; };
     storeObservedOrders(results, &CaseResult::dx, &CaseResult::error, &CaseResult::order, sameIntegrator);
