@@ -66,36 +66,6 @@ TimeSeries ringMotion(const std::vector<BodyMotionRecorder<D>::Sample>& samples)
   return series;
 }
 
-// Shows the adapted view (particles at their current positions) to the PNG renderer with four
-// still, zero-valued markers at the corners of the scene's box, so every picture frames the same
-// window (the renderer fits its view to the particles it is given).
-class WindowedView : public ViewAdapter {
- public:
-  WindowedView(const ParticleSet<D>& moving, const std::vector<Real>& lower, const std::vector<Real>& upper)
-      : moving_(moving), windowed_(moving) {
-    const Real volume = moving.volume.empty() ? 1 : moving.volume.front();
-    for (int corner = 0; corner < 4; ++corner)
-      windowed_.add(Vec2(corner & 1 ? upper[0] : lower[0], corner & 2 ? upper[1] : lower[1]), volume);
-    displacement_ = Vector::Zero(windowed_.size() * D);
-    velocity_ = Vector::Zero(windowed_.size() * D);
-  }
-  const ParticleSet<D>& particles() const { return windowed_; }
-
- private:
-  StateView adapt(const StateView& s) override {
-    const Index n = moving_.size();
-    for (int a = 0; a < D; ++a)
-      std::copy(moving_.coordinate(a).begin(), moving_.coordinate(a).end(), windowed_.coordinate(a).begin());
-    displacement_.head(n * D) = s.displacement;
-    velocity_.head(n * D) = s.velocity;
-    return {s.step, s.time, displacement_, velocity_, s.dt};
-  }
-
-  const ParticleSet<D>& moving_;
-  ParticleSet<D> windowed_;
-  Vector displacement_, velocity_;
-};
-
 // <case>-positions.csv: every particle at each snapshot time, with its ring and its fragment then.
 void writeSnapshots(const std::string& path, const std::vector<PositionSnapshots<D>::Snapshot>& snapshots,
                     Index leftCount, Real linkDistance) {
@@ -123,7 +93,10 @@ PngOptions pngOptions(const StudySettings& study, Real approachSpeed) {
     const Real pixelsPerMetre = 0.5 * png.height * 0.88 / std::max(halfHeight, halfWidth / aspect);
     png.pointSize = std::clamp(0.9 * scene.geometry.spacing * pixelsPerMetre, 1.0, 40.0);
   }
-  // One colour scale for every picture: the rings' initial speed sets it for the velocity.
+  // Every picture frames the scene's box (the rings move through it), with one colour scale: the
+  // rings' initial speed sets it for the velocity.
+  png.window = std::array<Real, 6>{scene.geometry.lower[0], scene.geometry.upper[0], scene.geometry.lower[1],
+                                   scene.geometry.upper[1], 0, 0};
   if (png.field == "velocity")
     png.range = png.component == PngOptions::magnitude ? std::array<Real, 2>{0, 2 * approachSpeed}
                                                        : std::array<Real, 2>{-1.5 * approachSpeed, 1.5 * approachSpeed};
@@ -193,9 +166,6 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   if (!probes.empty()) adapter.add(probeRecorder, scene.output.probeEvery);
   ProgressReporter reporter(endTime, record.particles, progress);
 
-  std::optional<VtkFrameWriter<D>> frames;
-  std::optional<WindowedView> window;
-  std::optional<PngFrameRenderer<D>> images;
   const ExtraFields methodFields = adapter.extraFields();
   const ExtraFields extra = [&](const StateView& s, Index count, std::vector<ParticleField>& fields) {
     methodFields(s, count, fields);
@@ -206,16 +176,11 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     std::vector<Real> fragment(pieces.label.begin(), pieces.label.end());
     fields.push_back(ParticleField::scalar("fragment", std::move(fragment)));
   };
-  if (settings.writeFrames && scene.output.vtk) {
-    frames.emplace(adapter.particles(), folder, settings.name, D, extra);
-    adapter.add(*frames, scene.output.every);
-  }
-  if (settings.writeFrames && scene.output.png) {
-    window.emplace(adapter.particles(), scene.geometry.lower, scene.geometry.upper);
-    images.emplace(window->particles(), folder, settings.name, D, pngOptions(study, result.approachSpeed));
-    window->add(*images);
-    adapter.add(*window, scene.output.every);
-  }
+  typename ParticleFrames<D>::Settings frameOptions = frameSettings<D>(scene.output, settings.writeFrames);
+  frameOptions.pngOptions = pngOptions(study, result.approachSpeed);
+  frameOptions.extra = extra;
+  ParticleFrames<D> frames(adapter.particles(), folder, settings.name, frameOptions);
+  frames.attachTo(adapter, scene.output.every);
 
   TimeLoop loop;
   loop.add(reporter);
@@ -304,7 +269,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     probeRecorder.series().writeCsv(folder + "/" + settings.name + "-probes.csv");
     result.files.push_back(settings.name + "-probes.csv");
   }
-  frameOutputReport(settings.name, frames, images).appendTo(result.files, result.notes);
+  frames.report().appendTo(result.files, result.notes);
   if (!result.failure.empty()) result.notes.push_back(settings.name + " stopped early: " + result.failure);
   record.errors = {{"largest_balance_drift", result.largestBalanceDrift},
                    {"extra_fragments", static_cast<Real>(result.fragments - 2)}};

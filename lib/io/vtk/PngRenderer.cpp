@@ -107,7 +107,10 @@ double automaticPointSize(const double bounds[6], Index count, int dimension, vt
 void placeCamera(vtkRenderer& renderer, int dimension, const PngOptions& options) {
   vtkCamera* camera = renderer.GetActiveCamera();
   double bounds[6];
-  renderer.ComputeVisiblePropBounds(bounds);
+  if (options.window)
+    std::copy(options.window->begin(), options.window->end(), bounds);
+  else
+    renderer.ComputeVisiblePropBounds(bounds);
   const double centre[3] = {0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
                             0.5 * (bounds[4] + bounds[5])};
   camera->SetFocalPoint(centre);
@@ -119,8 +122,8 @@ void placeCamera(vtkRenderer& renderer, int dimension, const PngOptions& options
     camera->SetViewUp(0, 1, 0);
     camera->ParallelProjectionOn();  // a flat cloud seen flat: no perspective distortion
   }
-  // ResetCamera keeps the direction and fits the cloud's bounding sphere exactly.
-  renderer.ResetCamera();
+  // ResetCamera keeps the direction and fits the bounding sphere of the box exactly.
+  renderer.ResetCamera(bounds);
   // The colour bar takes the right-hand strip: the cloud gets the left 80 %, centred there.
   const double usableWidth = options.colourBar ? 0.8 : 1.0;
   if (options.colourBar) camera->SetWindowCenter(0.15, 0.0);

@@ -36,6 +36,10 @@ struct PngOptions {
   // Fixed colour range, so every picture of a series has the same scale; empty: the frame's
   // min..max (widened when all values are equal).
   std::optional<std::array<Real, 2>> range;
+  // Fixed view box {xmin, xmax, ymin, ymax, zmin, zmax} that the camera frames instead of the
+  // particles' bounds, so every picture of a series shows the same region while bodies move;
+  // empty: fitted to the particles.
+  std::optional<std::array<Real, 6>> window;
   std::array<Real, 3> background{1.0, 1.0, 1.0};  // white, black text
 };
 

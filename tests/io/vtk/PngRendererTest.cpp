@@ -195,6 +195,36 @@ TEST(VtkPngRenderer, PlaneSeenFromAboveWithAFixedRange) {
   EXPECT_EQ(rightBlue, 0);
 }
 
+// A fixed window: the camera frames the box {0..4} x {0..4}, not the particles, so a unit square
+// of particles at the origin sits in the lower-left of the picture (its centre at about 25 %
+// across and 83 % down) and nothing is drawn in the rest.
+TEST(VtkPngRenderer, AFixedWindowFramesTheBoxNotTheParticles) {
+  MFWAVE_NEED_DISPLAY();
+  const ParticleSet<2> square = makeRectangle(Vec2(0, 0), Vec2(1, 1), 0.1);
+  const std::vector<Real> p(static_cast<std::size_t>(square.size()), 1.0);
+  const ParticleFrame<2> frame{&square.coordinates(), square.size(), 0.0, {ParticleField::scalar("p", p)}};
+  PngOptions options;
+  options.field = "p";
+  options.component = 0;
+  options.width = 320;
+  options.height = 240;
+  options.colourBar = false;
+  options.title = false;
+  options.pointSize = 4;
+  options.window = std::array<Real, 6>{0, 4, 0, 4, 0, 0};
+  const fs::path path = scratchFolder() / "window.png";
+  PngRenderer(options).render(frame, path.string());
+  const Image image = readPng(path);
+  ASSERT_EQ(image.width, 320);
+  EXPECT_GT(image.foreground(0.1, 0.4, 0.65, 1.0, white).first, 200);  // the square, lower left
+  EXPECT_EQ(image.foreground(0.45, 1.0, 0.0, 1.0, white).first, 0);   // nothing right of it
+  EXPECT_EQ(image.foreground(0.0, 1.0, 0.0, 0.6, white).first, 0);    // nor above it
+  options.window.reset();  // fitted to the particles: the square spans the middle instead
+  const fs::path fitted = scratchFolder() / "fitted.png";
+  PngRenderer(options).render(frame, fitted.string());
+  EXPECT_GT(readPng(fitted).foreground(0.6, 0.9, 0.0, 0.6, white).first, 100);
+}
+
 TEST(VtkPngRenderer, BadFieldOrComponentThrows) {
   MFWAVE_NEED_DISPLAY();
   const BlockFrame block;
