@@ -54,8 +54,6 @@ Coordinates<D> positionsOf(const UpdatedLagrangianSphLayout<D>& layout, const Ve
   return x;
 }
 
-bool allFinite(const Vector& y) { return y.allFinite(); }
-
 // <case>-rings.csv: each ring's centre of mass (x) and its x velocity, the gap between the rings
 // along x (the right ring's leftmost particle minus the left ring's rightmost) and the step.
 TimeSeries ringMotion(const std::vector<BodyMotionRecorder<D>::Sample>& samples) {
@@ -126,8 +124,9 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   UpdatedLagrangianSph<D> system(particles, options);
   result.smoothingLength = system.smoothingLength();
   result.supportRadius = makeKernel(options.kernel, D, result.smoothingLength)->supportRadius();
-  const std::vector<std::pair<Index, Index>> links =
-      linkPairs(particles.coordinates(), study.linkDistance * result.spacing);
+  // Fragments: particles closer than the link distance are joined.
+  const Real link = study.linkDistance * result.spacing;
+  const std::vector<std::pair<Index, Index>> links = linkPairs(particles.coordinates(), link);
   result.links = static_cast<Index>(links.size());
   const Material& material = options.material;
   result.soundSpeed = std::sqrt(material.bulkModulus() / material.density());
@@ -172,7 +171,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
     std::vector<Real> ring(static_cast<std::size_t>(count));
     for (Index i = 0; i < count; ++i) ring[static_cast<std::size_t>(i)] = i < leftCount ? 0 : 1;
     fields.push_back(ParticleField::scalar("ring", std::move(ring)));
-    const Fragments pieces = findFragments(adapter.particles().coordinates(), study.linkDistance * result.spacing);
+    const Fragments pieces = findFragments(adapter.particles().coordinates(), link);
     std::vector<Real> fragment(pieces.label.begin(), pieces.label.end());
     fields.push_back(ParticleField::scalar("fragment", std::move(fragment)));
   };
@@ -210,7 +209,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   const TimeSeries& energy = ledger.series();
   result.initialEnergy = system.energy(y0);
   const Vector& y = integrator->solution();
-  const bool finite = allFinite(y);
+  const bool finite = y.allFinite();
   if (finite) result.finalEnergy = system.energy(y);
   result.largestBalanceDrift = ledger.largestBalanceDrift();
   const Real scale =
@@ -226,10 +225,11 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
 
   // fragments at the end, and each ring's rebound
   if (finite) {
-    const Fragments pieces = findFragments(positionsOf(system.layout(), y), study.linkDistance * result.spacing);
+    const Coordinates<D> positions = positionsOf(system.layout(), y);
+    const Fragments pieces = findFragments(positions, link);
     result.fragments = pieces.count();
     result.strayParticles = pieces.particlesOutsideLargest(2);
-    result.tornLinks = tornLinks(links, positionsOf(system.layout(), y), 2 * study.linkDistance * result.spacing);
+    result.tornLinks = tornLinks(links, positions, 2 * link);
     for (std::size_t f = 0; f < pieces.sizes.size() && f < 10; ++f) result.fragmentSizes.push_back(pieces.sizes[f]);
   } else {
     result.fragments = -1;
@@ -263,7 +263,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   rings.writeCsv(folder + "/" + settings.name + "-rings.csv");
   result.files.push_back(settings.name + "-rings.csv");
   writeSnapshots(folder + "/" + settings.name + "-positions.csv", snapshots.snapshots(), leftCount,
-                 study.linkDistance * result.spacing);
+                 link);
   result.files.push_back(settings.name + "-positions.csv");
   if (!probes.empty()) {
     probeRecorder.series().writeCsv(folder + "/" + settings.name + "-probes.csv");

@@ -157,6 +157,21 @@ TEST(VtkPngRenderer, BlockShowsColouredSpheresColourBarAndTitle) {
   EXPECT_GT(plain.foreground(0.0, 1.0, 0.0, 1.0, white).first, static_cast<long>(0.1 * 640 * 480));
 }
 
+// A small picture of the scalar field `name` with nothing but the particles: no colour bar, no
+// title, so pixel counts see the particles alone.
+namespace {
+PngOptions bareScalarPicture(const std::string& name) {
+  PngOptions options;
+  options.field = name;
+  options.component = 0;
+  options.width = 320;
+  options.height = 240;
+  options.colourBar = false;
+  options.title = false;
+  return options;
+}
+}  // namespace
+
 TEST(VtkPngRenderer, PlaneSeenFromAboveWithAFixedRange) {
   MFWAVE_NEED_DISPLAY();
   // p = -1 on the left half (x < 1), +1 on the right: blue left, red right when seen from +z.
@@ -164,13 +179,7 @@ TEST(VtkPngRenderer, PlaneSeenFromAboveWithAFixedRange) {
   std::vector<Real> p;
   for (Index i = 0; i < plane.size(); ++i) p.push_back(plane.position(i)[0] < 0.99 ? -1.0 : 1.0);
   const ParticleFrame<2> frame{&plane.coordinates(), plane.size(), 0.0, {ParticleField::scalar("p", p)}};
-  PngOptions options;
-  options.field = "p";
-  options.component = 0;
-  options.width = 320;
-  options.height = 240;
-  options.colourBar = false;
-  options.title = false;
+  PngOptions options = bareScalarPicture("p");
   options.range = std::array<Real, 2>{-1.0, 1.0};
   const fs::path path = scratchFolder() / "plane.png";
   PngRenderer(options).render(frame, path.string());
@@ -203,13 +212,7 @@ TEST(VtkPngRenderer, AFixedWindowFramesTheBoxNotTheParticles) {
   const ParticleSet<2> square = makeRectangle(Vec2(0, 0), Vec2(1, 1), 0.1);
   const std::vector<Real> p(static_cast<std::size_t>(square.size()), 1.0);
   const ParticleFrame<2> frame{&square.coordinates(), square.size(), 0.0, {ParticleField::scalar("p", p)}};
-  PngOptions options;
-  options.field = "p";
-  options.component = 0;
-  options.width = 320;
-  options.height = 240;
-  options.colourBar = false;
-  options.title = false;
+  PngOptions options = bareScalarPicture("p");
   options.pointSize = 4;
   options.window = std::array<Real, 6>{0, 4, 0, 4, 0, 0};
   const fs::path path = scratchFolder() / "window.png";
