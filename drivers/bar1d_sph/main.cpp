@@ -10,7 +10,7 @@
 // Writes cases.csv, profile-<dx>.csv per spacing, frames of the scene's spacing (frame.pvd), and
 // summary.json. Plot: /usr/bin/python3 analysis/plot_bar1d_sph.py OUT. Results: docs/studies/sph-solids.md.
 
-#include "BarCase.hpp"
+#include "studies/bar1d_sph/BarCase.hpp"
 
 #include "analysis/ConvergenceOrders.hpp"
 #include "core/Error.hpp"

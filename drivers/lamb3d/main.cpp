@@ -16,7 +16,7 @@
 //
 //   lamb3d --scene data/scenes/lamb3d.toml [--set 'study.spacings=[0.5]'] [--out DIR]
 
-#include "LambCase.hpp"
+#include "studies/lamb3d/LambCase.hpp"
 
 #include "core/Error.hpp"
 #include "io/run/CaseTable.hpp"

@@ -22,9 +22,9 @@
 //
 //   plate --scene data/scenes/plate.toml [--set 'study.resolutions=[5, 7, 10, 14]'] [--out DIR]
 
-#include "PlateCase.hpp"
+#include "studies/plate/PlateCase.hpp"
 
-#include "PlateModes.hpp"
+#include "studies/plate/PlateModes.hpp"
 
 #include "analysis/RichardsonExtrapolation.hpp"
 #include "core/Error.hpp"

@@ -20,7 +20,7 @@
 //
 //   rings --scene data/scenes/rings.toml [--set geometry.spacing=0.0005] [--out DIR]
 
-#include "RingsCase.hpp"
+#include "studies/rings/RingsCase.hpp"
 
 #include "core/Error.hpp"
 #include "io/run/CaseTable.hpp"

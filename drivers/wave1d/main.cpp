@@ -7,11 +7,10 @@
 //
 //   wave1d --scene data/scenes/wave1d.toml [--set study.cells=[16,32]] [--out DIR]
 
+#include "studies/wave1d/Wave1dCase.hpp"
+
 #include "analysis/ConvergenceOrders.hpp"
-#include "analysis/StableTimeStep.hpp"
-#include "analytic/StandingWave.hpp"
 #include "core/Error.hpp"
-#include "core/Stopwatch.hpp"
 #include "integrators/IntegratorFactory.hpp"
 #include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
@@ -20,25 +19,15 @@
 #include "io/run/RunSummary.hpp"
 #include "io/run/StudyCases.hpp"
 #include "io/scene/LoadScene.hpp"
-#include "io/scene/StepLimitCheck.hpp"
 #include "io/scene/Scene.hpp"
-#include "methods/finite_difference/FiniteDifferenceWaveOperator.hpp"
-#include "neighbours/NeighbourList.hpp"
-#include "observers/EnergyObserver.hpp"
-#include "observers/ProbeRecorder.hpp"
-#include "observers/StabilityMonitor.hpp"
-#include "observers/TimeLoop.hpp"
-#include "particles/Lattice.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 using namespace mfwave;
+using namespace mfwave::wave1d;
 
 namespace {
 
@@ -60,23 +49,6 @@ SceneSchema wave1dSchema() {
   return schema;
 }
 
-struct Study {
-  Scene scene;
-  int mode = 1;
-  std::vector<int> cells;
-  std::vector<std::string> integrators;
-  std::vector<std::string> notes;  // for the summary: steps run above the limit on purpose
-};
-
-struct CaseResult : StudyCase {
-  std::string integrator;
-  int cells = 0;
-  Real dx = 0;
-  Real error = 0;
-  Real energyDrift = 0;
-  Real order = std::nan("");  // against the next coarser case of the same integrator
-};
-
 // convergence.csv and the terminal table, one column each.
 CaseTable<CaseResult> convergenceTable() {
   using R = const CaseResult&;
@@ -93,106 +65,6 @@ CaseTable<CaseResult> convergenceTable() {
       .column("particle_steps_per_s", [](R r) { return r.record.particleStepsPerSecond(); },
               TerminalColumn("part-steps/s", 14).scientific().precision(2));
   return t;
-}
-
-CaseResult runCase(const Study& study, const std::string& integratorName, int cellCount, const std::string& folder,
-                   bool writeSeries) {
-  const Stopwatch setup;
-  const Scene& scene = study.scene;
-  const Real x0 = scene.geometry.lower[0], length = scene.geometry.upper[0] - x0;
-  const Real dx = length / cellCount;
-  const Material& material = scene.material.material();
-  const StandingWave exact(study.mode, length, material.pWaveSpeed(), 1, x0);
-
-  // particles + neighbours
-  const ParticleSet<1> line = makeLine(x0, x0 + length, dx);
-  const NeighbourList neighbours = buildNeighbourList(CellList<1>(line, 1.5 * dx));
-  // discretisation
-  FiniteDifferenceWaveOptions fd;
-  fd.spacing = dx;
-  fd.density = material.density();
-  fd.modulus = material.pWaveModulus();
-  fd.fixedFaces = facesWith(scene.boundaries, BoundaryType::Fixed);
-  LinearSecondOrderSystem system = assembleFiniteDifferenceWave(line, neighbours, fd);
-
-  Vector u0(line.size()), v0(line.size());
-  for (Index i = 0; i < line.size(); ++i) {
-    u0[i] = exact.displacement(line.position(i)[0], 0);
-    v0[i] = exact.velocity(line.position(i)[0], 0);
-  }
-  // integrator: the step is integrator.cfl times the stable central-difference step (the
-  // Gershgorin bound, exact for this operator: dx / c), shortened to land on the end time.
-  const Real criticalDt = centralDifferenceSafeStep(system);
-  const Real dt = scene.integrator.timeStepFor(criticalDt);
-  IntegratorOptions options = scene.integrator.options;
-  auto integrator = makeSecondOrderIntegrator(integratorName, options);
-  integrator->initialise(system, 0, u0, v0, dt);
-
-  // observers
-  StabilityMonitor monitor(scene.stability.options(1));
-  EnergyObserver energy(EnergyObserver::ofLinearSystem(system));
-  const Index quarter = line.size() / 4;
-  ProbeRecorder probes({{"quarter", quarter, 0, ProbeQuantity::Displacement}}, 1);
-  TimeLoop loop;
-  loop.add(monitor);
-  loop.add(energy);
-  if (writeSeries) loop.add(probes);
-  const double setupSeconds = setup.seconds();
-  const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
-
-  // error at the end time, relative to the L2 norm of the mode shape (u(T) itself may be small)
-  const Vector& u = integrator->state().displacement;
-  Real errorSquared = 0, normSquared = 0;
-  for (Index i = 0; i < line.size(); ++i) {
-    const Real x = line.position(i)[0];
-    errorSquared += std::pow(u[i] - exact.displacement(x, stats.endTime), 2);
-    normSquared += std::pow(std::sin(exact.wavenumber() * (x - x0)), 2);
-  }
-  CaseResult result;
-  result.integrator = integratorName;
-  result.cells = cellCount;
-  result.dx = dx;
-  result.error = std::sqrt(errorSquared / normSquared);
-  result.energyDrift = energy.maxRelativeDrift();
-  CaseRecord& record = result.record;
-  record.name = integratorName + ", " + std::to_string(cellCount) + " cells";
-  record.particles = cellCount + 1;
-  result.recordLoop(stats);
-  record.timeStep = dt;
-  record.stableTimeStep = criticalDt;
-  record.simulatedTime = scene.integrator.endTime;
-  record.setupSeconds = setupSeconds;
-  record.errors = {{"relative_l2", result.error}};
-  record.primaryError = "relative_l2";
-  if (writeSeries) {
-    const std::string stem = integratorName + "-" + std::to_string(cellCount);
-    probes.series().writeCsv(folder + "/" + stem + "-probe.csv");
-    energy.series().writeCsv(folder + "/" + stem + "-energy.csv");
-    result.files = {stem + "-probe.csv", stem + "-energy.csv"};
-  }
-  return result;
-}
-
-// Before any work: every integrator's step against its limit L / omega_max (io/scene/StepLimitCheck)
-// with omega_max = 2 c / dx, the Gershgorin bound of the finite-difference Laplacian (its largest
-// eigenvalue with fixed ends is (2 c / dx)^2 cos^2(pi / 2N)). A step above it grows at every
-// resolution, so it is refused naming the key (exit 2), unless stability.allow_growth asks to run
-// there on purpose (the monitor then stops the blow-up, exit 3).
-void refuseStepsAboveTheLimit(Study& study) {
-  const Scene& scene = study.scene;
-  const Real length = scene.geometry.upper[0] - scene.geometry.lower[0];
-  const Real c = scene.material.material().pWaveSpeed();
-  for (const auto& name : study.integrators) {
-    IntegratorSpec integrator = scene.integrator;
-    integrator.name = name;
-    for (const int cells : study.cells) {
-      const Real dx = length / cells;
-      const Real dt = scene.integrator.timeStepFor(dx / c);
-      const StepLimitCheck check = checkStepLimit(integrator, scene.stability, 2 * c / dx, dt, dx / c,
-                                                  "the Gershgorin bound 2 c / dx", "at " + std::to_string(cells) + " cells");
-      if (!check.note.empty()) study.notes.push_back(check.note);
-    }
-  }
 }
 
 Study readStudy(SceneReader& reader) {
