@@ -130,6 +130,25 @@ TEST(WavefieldStudy, AnUnstableTimeStepIsRefusedBeforeAnyWork) {
   }
 }
 
+// Hostile input: a scene whose only line is a dotted key of 200,000 parts used to kill every driver
+// with SIGSEGV inside the TOML reader (its recursion overflowed the stack); now a syntax error.
+TEST(WavefieldStudy, ADeepDottedKeyIsASyntaxErrorNotACrash) {
+  const fs::path dir = fs::temp_directory_path() / "mfwave-deep-key";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  {
+    std::ofstream scene(dir / "deep.toml");
+    for (int k = 0; k < 200000; ++k) scene << "a.";
+    scene << "a = 1\n";
+  }
+  const Outcome run =
+      runWavefield("--scene " + (dir / "deep.toml").string() + " --out " + (dir / "out").string(), "deep-key");
+  ASSERT_TRUE(run.exited) << "crashed: " << run.log;
+  EXPECT_EQ(run.exitCode, 2) << run.log;
+  EXPECT_NE(run.log.find("deep.toml:1:1: (syntax): a dotted key of more than 64 parts"), std::string::npos) << run.log;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 class MalformedScene : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(MalformedScene, FailsWithExitCodeTwoAndNamesTheKey) {

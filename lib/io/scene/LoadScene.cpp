@@ -1,5 +1,6 @@
 #include "io/scene/LoadScene.hpp"
 
+#include "io/scene/KeyDepth.hpp"
 #include "io/scene/Override.hpp"
 
 #include <filesystem>
@@ -19,6 +20,7 @@ SceneReader finish(toml::table&& table, const std::string& sourceName, const std
 }
 
 toml::table parseText(const std::string& text, const std::string& sourceName) {
+  checkKeyDepth(text, sourceName);  // before toml++, which would overflow the stack on a deep key
   try {
     return toml::parse(text, std::string_view(sourceName));
   } catch (const toml::parse_error& e) {

@@ -1,13 +1,21 @@
 #include "io/scene/Override.hpp"
 
+#include "io/scene/KeyDepth.hpp"
 #include "io/scene/SceneError.hpp"
 #include "io/scene/ScenePath.hpp"
 
 namespace mfwave {
 namespace {
 
+// The assignment as the message quotes it: a hostile one can be megabytes long.
+std::string quoted(const std::string& assignment) {
+  constexpr std::size_t shown = 80;
+  if (assignment.size() <= shown) return "'" + assignment + "'";
+  return "'" + assignment.substr(0, shown) + "...' (" + std::to_string(assignment.size()) + " characters)";
+}
+
 [[noreturn]] void malformed(const std::string& assignment, const std::string& problem) {
-  throw SceneError("", "--set", "malformed override '" + assignment + "': " + problem);
+  throw SceneError("", "--set", "malformed override " + quoted(assignment) + ": " + problem);
 }
 
 std::string trim(const std::string& text) {
@@ -21,6 +29,11 @@ std::string trim(const std::string& text) {
 toml::table parseValue(const std::string& assignment, const std::string& text) {
   if (text.empty()) malformed(assignment, "missing value after '=' (write \"\" for an empty string)");
   if (text.find_first_of("\n\r") != std::string::npos) malformed(assignment, "the value spans several lines");
+  try {
+    checkKeyDepth(text, "--set");
+  } catch (const SceneError& e) {
+    malformed(assignment, e.problem());
+  }
   try {
     return toml::parse("v = " + text);
   } catch (const toml::parse_error& e) {
@@ -44,6 +57,9 @@ std::string applyOverride(toml::table& table, const std::string& assignment) {
   if (!segments)
     malformed(assignment, "'" + path + "' is not a key path (keys of letters, digits, '_' and '-' joined by '.', "
                                        "entries of arrays of tables as name[index])");
+  if (segments->size() > kMaxKeyParts)
+    malformed(assignment, "the key has " + std::to_string(segments->size()) + " parts; at most " +
+                              std::to_string(kMaxKeyParts) + " (no scene key has more than four)");
   toml::table value = parseValue(assignment, trim(assignment.substr(equals + 1)));
 
   toml::table* current = &table;
