@@ -20,6 +20,7 @@
 #include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/run/StudyCases.hpp"
+#include "io/scene/Format.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
 #include "methods/collocation/RadialBasisFunction.hpp"
@@ -96,6 +97,8 @@ Study readStudy(SceneReader& reader) {
   study.v0 = reader.number("study.initial_velocity");
   for (Real n : reader.numbers("study.nodes")) {
     if (n != std::floor(n) || n < 6) reader.fail("study.nodes", "each resolution must be a whole number >= 6");
+    if (n > 20000)  // the operator's whole spectrum is taken dense: n^2 memory, n^3 time
+      reader.fail("study.nodes", "at most 20000 nodes (the dense spectrum of the operator), got " + scene::formatNumber(n));
     study.nodes.push_back(static_cast<int>(n));
   }
   study.errorPoints = static_cast<int>(reader.integer("study.error_points"));

@@ -17,6 +17,7 @@
 #include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/run/StudyCases.hpp"
+#include "io/scene/Format.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
 
@@ -88,6 +89,7 @@ int main(int argc, char** argv) {
     std::vector<int> cells;
     for (Real c : reader.numbers("study.cells")) {
       if (c != std::floor(c) || c < 4) reader.fail("study.cells", "each resolution must be a whole number >= 4");
+      if (c > 2000) reader.fail("study.cells", "at most 2000 cells per side (4 million nodes), got " + scene::formatNumber(c));
       cells.push_back(static_cast<int>(c));
     }
     reader.checkAllKeysRead();

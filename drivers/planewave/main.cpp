@@ -22,6 +22,7 @@
 #include "io/scene/LoadScene.hpp"
 #include "kernels/KernelFactory.hpp"
 
+#include <cmath>
 #include <iostream>
 #include <string>
 
@@ -113,7 +114,11 @@ int main(int argc, char** argv) {
     Settings s;
     s.dimension = static_cast<int>(reader.integer("study.dimension"));
     s.method = reader.string("study.method");
-    s.cells = static_cast<int>(reader.integer("study.cells"));
+    const long cells = reader.integer("study.cells");
+    if (std::pow(static_cast<Real>(cells), s.dimension) > 1e8)
+      reader.fail("study.cells", std::to_string(cells) + " per axis in " + std::to_string(s.dimension) +
+                                     "-D is more than 1e8 nodes");
+    s.cells = static_cast<int>(cells);
     if (s.cells % 2 != 0) reader.fail("study.cells", "must be even");
     s.wavelengths = static_cast<int>(reader.integer("study.wavelengths"));
     if (2 * s.wavelengths >= s.cells) reader.fail("study.wavelengths", "needs more than 2 nodes per wavelength");

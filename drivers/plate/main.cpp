@@ -153,6 +153,8 @@ Index rowsOf(SceneReader& reader, const std::string& at, Real rows, const PlateS
   if (!(rows >= 1) || std::abs(rows - rounded) > 1e-9 * rows)
     reader.fail(at, "particles across the thickness must be a whole number >= 1, got " + scene::formatNumber(rows));
   const Real columns = study.length / (study.thickness / rounded);
+  if (rounded * (columns + static_cast<Real>(study.clampLayers)) > 1e8)
+    reader.fail(at, scene::formatNumber(rounded) + " particles across would make more than 1e8 particles");
   if (std::abs(columns - std::round(columns)) > 1e-6 * columns)
     reader.fail(at, "dp = H / " + scene::formatNumber(rounded) + " does not divide the length " +
                         scene::formatNumber(study.length));

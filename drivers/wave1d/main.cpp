@@ -18,6 +18,7 @@
 #include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/run/StudyCases.hpp"
+#include "io/scene/Format.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
 
@@ -79,6 +80,7 @@ Study readStudy(SceneReader& reader) {
   for (Real c : reader.numbers("study.cells")) {
     if (c != std::floor(c) || c < 4 * study.mode)
       reader.fail("study.cells", "each resolution must be a whole number of at least 4 cells per half wave");
+    if (c > 1e8) reader.fail("study.cells", "at most 1e8 cells, got " + scene::formatNumber(c));
     study.cells.push_back(static_cast<int>(c));
   }
   study.integrators = reader.strings("study.integrators");

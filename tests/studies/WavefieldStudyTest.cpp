@@ -24,15 +24,19 @@ struct Outcome {
   std::string log;  // standard output and error
 };
 
-Outcome runWavefield(const std::string& arguments, const std::string& name, const std::string& prefix = "") {
+Outcome runProgram(const std::string& executable, const std::string& arguments, const std::string& name,
+                   const std::string& prefix = "") {
   const fs::path log = fs::temp_directory_path() / ("mfwave-wavefield-" + name + ".log");
-  const std::string command = prefix + WAVEFIELD_EXECUTABLE + std::string(" --quiet ") + arguments + " > " +
-                              log.string() + " 2>&1";
+  const std::string command = prefix + executable + " --quiet " + arguments + " > " + log.string() + " 2>&1";
   const int status = std::system(command.c_str());
   std::ifstream in(log);
   std::stringstream text;
   text << in.rdbuf();
   return {WIFEXITED(status) != 0, WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+Outcome runWavefield(const std::string& arguments, const std::string& name, const std::string& prefix = "") {
+  return runProgram(WAVEFIELD_EXECUTABLE, arguments, name, prefix);
 }
 
 std::string firstLineValue(const fs::path& file, const std::string& marker) {
@@ -147,6 +151,34 @@ TEST(WavefieldStudy, ADeepDottedKeyIsASyntaxErrorNotACrash) {
   EXPECT_EQ(run.exitCode, 2) << run.log;
   EXPECT_NE(run.log.find("deep.toml:1:1: (syntax): a dotted key of more than 64 parts"), std::string::npos) << run.log;
   EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+// Sizes no machine runs (a resolution of 1e12, an end time of 1e300) are typos: refused before any
+// work naming the key, not cast into an overflowed int or step count.
+TEST(WavefieldStudy, ResolutionsAndRunsBeyondAnyMachineAreRefusedNamingTheKey) {
+  const std::string scenes = std::string(SCENES_FOLDER) + "/";
+  const struct {
+    const char* executable;
+    std::string arguments;
+    const char* expected;
+  } cases[] = {
+      {WAVE1D_EXECUTABLE, "--scene " + scenes + "wave1d.toml --set 'study.cells=[1e12]'", "study.cells: at most 1e8"},
+      {BAR1D_EXECUTABLE, "--scene " + scenes + "bar1d.toml --set 'study.nodes=[1e12]'", "study.nodes: at most 20000"},
+      {PLANE2D_EXECUTABLE, "--scene " + scenes + "plane2d.toml --set 'study.cells=[1e12]'", "study.cells: at most 2000"},
+      {LAMB3D_EXECUTABLE, "--scene " + scenes + "lamb3d.toml --set 'study.spacings=[0.5]' --set integrator.end_time=1e300",
+       "integrator.end_time: 1e300 s at a step of"},
+      {WAVEFIELD_EXECUTABLE, "--scene " + scenes + "block-ricker.toml --set integrator.end_time=1e300",
+       "more than 1e12 is refused"},
+  };
+  const fs::path out = fs::temp_directory_path() / "mfwave-beyond-any-machine";
+  for (const auto& c : cases) {
+    fs::remove_all(out);
+    const Outcome run = runProgram(c.executable, c.arguments + " --out " + out.string(), "beyond");
+    ASSERT_TRUE(run.exited) << "crashed: " << c.arguments << "\n" << run.log;
+    EXPECT_EQ(run.exitCode, 2) << c.arguments << "\n" << run.log;
+    EXPECT_NE(run.log.find(c.expected), std::string::npos) << c.arguments << "\n" << run.log;
+    EXPECT_FALSE(fs::exists(out / "summary.json"));
+  }
 }
 
 class MalformedScene : public ::testing::TestWithParam<std::string> {};

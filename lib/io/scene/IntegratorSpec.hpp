@@ -28,6 +28,9 @@ struct IntegratorSpec {
 
   // The step to run with: timeStep, or the largest step <= cfl * stableStep that divides
   // endTime into whole steps.
+  // The most steps a run may take (1e12: days at 10^7 steps/s); stepsFor refuses more, naming
+  // integrator.end_time (or time_step), exit 2.
+  static constexpr Real kMaxSteps = 1e12;
   Real timeStepFor(Real stableStep) const;
   long stepsFor(Real stableStep) const;  // endTime / timeStepFor(stableStep), rounded
 };

@@ -320,6 +320,27 @@ TEST(SceneReader, BlockRickerExampleBuildsItsParticles) {
   EXPECT_TRUE(s.output.vtk && s.output.png);
 }
 
+TEST(SceneReader, ARunOfMoreThanATrillionStepsIsRefusedNamingTheKey) {
+  // end_time = 1e300 used to overflow the step count into a huge step, refused as "above the limit".
+  SceneReader reader = loadScene(std::string(MFWAVE_SCENE_DATA_DIR) + "/block-ricker.toml",
+                                 {"integrator.end_time=1e300"});
+  const Scene s = readFully(reader);
+  try {
+    s.integrator.stepsFor(0.01);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "integrator.end_time");
+    EXPECT_NE(e.problem().find("more than 1e12 is refused"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(s.integrator.stepsFor(1e-12 * 1e300 / 0.5), 1000000000000L);  // 1e12 itself runs (cfl 0.5)
+  const SceneError tiny = sceneErrorOf([] {
+    SceneReader r = loadScene(sceneTestFile("valid/base-2d.toml"), {"integrator.time_step=1e-13"});
+    readFully(r);
+  });
+  EXPECT_EQ(tiny.key(), "integrator.time_step");
+  EXPECT_NE(tiny.problem().find("more than 1e12 is refused"), std::string::npos) << tiny.what();
+}
+
 TEST(SceneReader, TheBaseOfTheMalformedScenesIsValid) {
   SceneReader reader = loadScene(sceneTestFile("valid/base-2d.toml"));
   EXPECT_NO_THROW(readFully(reader));
