@@ -21,7 +21,8 @@ SolidIntegrationSettings solidIntegrationSettings(const IntegratorSpec& spec) {
 
 template <int D>
 std::unique_ptr<FirstOrderIntegrator> makeSolidIntegrator(UpdatedLagrangianSph<D>& system, const Vector& y0,
-                                                          const SolidIntegrationSettings& settings) {
+                                                          const SolidIntegrationSettings& settings, Real endTime,
+                                                          const std::string& endTimeKey) {
   if (!(settings.cfl > 0) || !std::isfinite(settings.cfl)) throw InputError("integrator.cfl", "must be positive");
   const Real stable = settings.cfl * system.evaluateStepCriteria(0, y0);
   if (settings.fixedStep > 2 * stable) {
@@ -29,6 +30,13 @@ std::unique_ptr<FirstOrderIntegrator> makeSolidIntegrator(UpdatedLagrangianSph<D
     why << "is " << settings.fixedStep << ", more than twice the stable step " << stable
         << " of the CFL, viscous and force criteria at t = 0";
     throw InputError("integrator.time_step", why.str());
+  }
+  const Real firstStep = settings.fixedStep > 0 ? settings.fixedStep : stable;
+  if (!(endTime / firstStep <= IntegratorSpec::kMaxSteps)) {
+    std::ostringstream why;
+    why << endTime << " s at the first step of " << firstStep << " s is about " << endTime / firstStep
+        << " steps; more than " << IntegratorSpec::kMaxSteps << " is refused";
+    throw InputError(endTimeKey, why.str());
   }
   std::unique_ptr<FirstOrderIntegrator> integrator = makeFirstOrderIntegrator(settings.integrator, settings.arkode);
   if (settings.fixedStep > 0) {
@@ -42,10 +50,13 @@ std::unique_ptr<FirstOrderIntegrator> makeSolidIntegrator(UpdatedLagrangianSph<D
 }
 
 template std::unique_ptr<FirstOrderIntegrator> makeSolidIntegrator<1>(UpdatedLagrangianSph<1>&, const Vector&,
-                                                                      const SolidIntegrationSettings&);
+                                                                      const SolidIntegrationSettings&, Real,
+                                                                      const std::string&);
 template std::unique_ptr<FirstOrderIntegrator> makeSolidIntegrator<2>(UpdatedLagrangianSph<2>&, const Vector&,
-                                                                      const SolidIntegrationSettings&);
+                                                                      const SolidIntegrationSettings&, Real,
+                                                                      const std::string&);
 template std::unique_ptr<FirstOrderIntegrator> makeSolidIntegrator<3>(UpdatedLagrangianSph<3>&, const Vector&,
-                                                                      const SolidIntegrationSettings&);
+                                                                      const SolidIntegrationSettings&, Real,
+                                                                      const std::string&);
 
 }  // namespace mfwave

@@ -25,9 +25,11 @@ SolidIntegrationSettings solidIntegrationSettings(const IntegratorSpec& spec);
 
 // Evaluates F(0, y0) once (so the force criterion has accelerations), then builds and initialises
 // the integrator. Throws InputError("integrator.time_step") when a fixed step exceeds twice the
-// method's stable step at t = 0 (a run that would blow up at once).
+// method's stable step at t = 0 (a run that would blow up at once), and InputError(endTimeKey) when
+// `endTime` at the first step is more than IntegratorSpec::kMaxSteps steps (a typo, not a run).
 template <int D>
 std::unique_ptr<FirstOrderIntegrator> makeSolidIntegrator(UpdatedLagrangianSph<D>& system, const Vector& y0,
-                                                          const SolidIntegrationSettings& settings);
+                                                          const SolidIntegrationSettings& settings, Real endTime,
+                                                          const std::string& endTimeKey = "integrator.end_time");
 
 }  // namespace mfwave

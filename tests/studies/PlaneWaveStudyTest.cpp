@@ -92,4 +92,11 @@ TEST(PlaneWaveStudy, BadInputIsRefusedBeforeAnyWork) {
   EXPECT_EQ(rk3d.outcome.exitCode, 3) << rk3d.outcome.log;
   const PlaneWaveRun odd = run("--set study.cells=33", "odd");
   EXPECT_EQ(odd.outcome.exitCode, 2) << odd.outcome.log;
+  // Sizes no machine runs, refused naming the key (they were an internal error and a negative step).
+  const PlaneWaveRun huge = run("--set study.cells=2000000000", "huge");
+  EXPECT_EQ(huge.outcome.exitCode, 2) << huge.outcome.log;
+  EXPECT_NE(huge.outcome.log.find("study.cells: 2000000000 per axis"), std::string::npos) << huge.outcome.log;
+  const PlaneWaveRun forever = run("--set study.periods=1e300", "forever");
+  EXPECT_EQ(forever.outcome.exitCode, 2) << forever.outcome.log;
+  EXPECT_NE(forever.outcome.log.find("study.periods: 1e+300 periods"), std::string::npos) << forever.outcome.log;
 }

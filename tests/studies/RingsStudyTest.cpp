@@ -112,6 +112,11 @@ TEST(RingsStudy, BadInputNamesItsKey) {
   run = runRings("--set method.name=finite_difference --out " + out.string(), "bad-method");
   EXPECT_EQ(run.exitCode, 2) << run.log;
   EXPECT_NE(run.log.find("method"), std::string::npos) << run.log;
+  // An end time of 1e300 is about 1e307 steps of the method's criteria: a typo, not a run (it used
+  // to run on for ever).
+  run = runRings("--set integrator.end_time=1e300 --out " + out.string(), "bad-end");
+  EXPECT_EQ(run.exitCode, 2) << run.log;
+  EXPECT_NE(run.log.find("integrator.end_time: 1e+300 s at the first step of"), std::string::npos) << run.log;
   EXPECT_FALSE(fs::exists(out / "summary.json"));
 }
 

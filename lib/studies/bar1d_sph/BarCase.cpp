@@ -65,7 +65,7 @@ CaseResult runCase(const Settings& settings, Real dx, const std::string& folder,
   Vector velocity(n);
   for (Index i = 0; i < n; ++i) velocity[i] = particles.position(i)[0] < 0 ? v0 : -v0;
   const Vector y0 = system.initialState(velocity);
-  auto integrator = makeSolidIntegrator(system, y0, settings.integration);
+  auto integrator = makeSolidIntegrator(system, y0, settings.integration, settings.endTime);
 
   EnergyLedger<1> ledger(system);
   SolidStateAdapter<1> adapter(system, particles);

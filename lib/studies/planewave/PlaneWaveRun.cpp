@@ -7,6 +7,7 @@
 #include "integrators/IntegratorFactory.hpp"
 #include "integrators/IntegratorKind.hpp"
 #include "integrators/StabilityLimit.hpp"
+#include "io/scene/IntegratorSpec.hpp"
 #include "systems/LinearSecondOrderSystem.hpp"
 
 #include <Eigen/SparseLU>
@@ -70,7 +71,14 @@ Outcome run(const Settings& s) {
   const Real speed = s.shear ? s.lattice.material.sWaveSpeed() : s.lattice.material.pWaveSpeed();
   const PlaneWave<D> wave(k, e, speed);
   record.simulatedTime = s.periods * wave.period();
-  record.steps = static_cast<long>(std::ceil(record.simulatedTime / (s.cfl * record.stableTimeStep) - 1e-9));
+  const Real steps = std::ceil(record.simulatedTime / (s.cfl * record.stableTimeStep) - 1e-9);
+  if (!(steps <= IntegratorSpec::kMaxSteps)) {
+    std::ostringstream why;
+    why << s.periods << " periods at cfl " << s.cfl << " is about " << steps << " steps; more than "
+        << IntegratorSpec::kMaxSteps << " is refused";
+    throw InputError("study.periods", why.str());
+  }
+  record.steps = static_cast<long>(steps);
   record.timeStep = record.simulatedTime / static_cast<Real>(record.steps);
 
   // Nodal values of the exact field; collocation unknowns are coefficients d with M d = u.

@@ -55,7 +55,8 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
 
   // the integrator, with the method's step criteria (times integrator.cfl) before every step
   std::unique_ptr<FirstOrderIntegrator> integrator =
-      makeSolidIntegrator(system, y0, solidIntegrationSettings(scene.integrator));
+      makeSolidIntegrator(system, y0, solidIntegrationSettings(scene.integrator), settings.endTime,
+                          settings.writeFrames ? "integrator.end_time" : "study.convergence_end_time");
   const Real firstStep = study.stepFactor * system.stableStep(y0);
 
   // observers: tip, energy ledger, frames through the particle view

@@ -137,7 +137,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   for (Index i = 0; i < record.particles; ++i)
     velocity[i * D] = i < leftCount ? result.approachSpeed : -result.approachSpeed;
   const Vector y0 = system.initialState(velocity);
-  std::unique_ptr<FirstOrderIntegrator> integrator = makeSolidIntegrator(system, y0, study.integration);
+  std::unique_ptr<FirstOrderIntegrator> integrator = makeSolidIntegrator(system, y0, study.integration, scene.integrator.endTime);
   result.firstStep = integrator->stepSize();
 
   // observers: ledger and ring motion on the whole state; frames, probes and the stability
