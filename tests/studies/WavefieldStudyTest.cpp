@@ -181,6 +181,22 @@ TEST(WavefieldStudy, ResolutionsAndRunsBeyondAnyMachineAreRefusedNamingTheKey) {
   }
 }
 
+// An output folder that cannot be made (a file of that name, a path under a file) is bad input
+// naming where it came from, not an internal error.
+TEST(WavefieldStudy, AnOutputFolderThatCannotBeMadeIsBadInput) {
+  const fs::path file = fs::temp_directory_path() / "mfwave-out-is-a-file";
+  fs::remove_all(file);
+  std::ofstream(file) << "not a folder\n";
+  const std::string scene = "--scene " + std::string(SCENES_FOLDER) + "/block-ricker.toml";
+  const Outcome out = runWavefield(scene + " --out " + file.string(), "out-file");
+  ASSERT_TRUE(out.exited) << out.log;
+  EXPECT_EQ(out.exitCode, 2) << out.log;
+  EXPECT_NE(out.log.find("--out: cannot make the output folder"), std::string::npos) << out.log;
+  const Outcome folder = runWavefield(scene + " --set output.folder=" + (file / "below").string(), "out-below-file");
+  EXPECT_EQ(folder.exitCode, 2) << folder.log;
+  EXPECT_NE(folder.log.find("output.folder: cannot make the output folder"), std::string::npos) << folder.log;
+}
+
 class MalformedScene : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(MalformedScene, FailsWithExitCodeTwoAndNamesTheKey) {
