@@ -1,6 +1,7 @@
 #include "observers/TimeLoop.hpp"
 
 #include "core/Error.hpp"
+#include "core/Interruption.hpp"
 #include "core/Stopwatch.hpp"
 
 #include <cmath>
@@ -16,13 +17,14 @@ void TimeLoop::add(Observer& observer, long every) {
 RunStatistics TimeLoop::run(Integrator& integrator, Real endTime) {
   if (!std::isfinite(endTime)) throw InputError("end_time", "must be finite");
   const Stopwatch wall;
+  const InterruptionGuard guard;
   RunStatistics stats;
   stats.startTime = integrator.time();
   const long firstStep = integrator.stepCount();
   for (auto& entry : observers_) entry.observer->begin(integrator.state());
 
   // Half a step of slack so round-off in t never adds or drops a fixed step.
-  while (integrator.time() < endTime - 0.5 * integrator.stepSize()) {
+  while (integrator.time() < endTime - 0.5 * integrator.stepSize() && !interruptionRequested()) {
     integrator.step();
     const long n = integrator.stepCount() - firstStep;
     for (auto& entry : observers_)
@@ -34,6 +36,7 @@ RunStatistics TimeLoop::run(Integrator& integrator, Real endTime) {
     entry.observer->end(integrator.state());
   }
   stats.steps = taken;
+  stats.interrupted = interruptionRequested() && integrator.time() < endTime - 0.5 * integrator.stepSize();
   stats.endTime = integrator.time();
   stats.wallSeconds = wall.seconds();
   return stats;

@@ -13,6 +13,7 @@ struct RunStatistics {
   Real startTime = 0;
   Real endTime = 0;
   double wallSeconds = 0;
+  bool interrupted = false;  // SIGINT / SIGTERM ended the loop before endTime (core/Interruption)
 };
 
 class TimeLoop {
@@ -21,7 +22,9 @@ class TimeLoop {
   void add(Observer& observer, long every = 1);
 
   // Steps until the integrator's time reaches endTime (within half a step). An InstabilityError
-  // raised by an observer propagates at once: the run stops where it blew up.
+  // raised by an observer propagates at once: the run stops where it blew up. SIGINT or SIGTERM
+  // ends the loop after the current step as if it were the last (observers see it, end() is
+  // called, the statistics say `interrupted`).
   RunStatistics run(Integrator& integrator, Real endTime);
 
  private:

@@ -8,6 +8,9 @@
 #include <sys/wait.h>
 
 #include <cstdlib>
+#include <unistd.h>
+#include <cstdio>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -195,6 +198,45 @@ TEST(WavefieldStudy, AnOutputFolderThatCannotBeMadeIsBadInput) {
   const Outcome folder = runWavefield(scene + " --set output.folder=" + (file / "below").string(), "out-below-file");
   EXPECT_EQ(folder.exitCode, 2) << folder.log;
   EXPECT_NE(folder.log.find("output.folder: cannot make the output folder"), std::string::npos) << folder.log;
+}
+
+// SIGTERM while the run steps: it ends after the current step, every output of the steps taken is
+// written, summary.json says where the run stopped, and the exit status is 128 + 15.
+TEST(WavefieldStudy, ASigtermEndsTheRunCleanlyWithItsOutputs) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-wavefield-sigterm";
+  fs::remove_all(out);
+  const fs::path log = fs::temp_directory_path() / "mfwave-wavefield-sigterm.log";
+  // A run of about 10^6 steps, so the signal surely arrives while it steps; frames every 20 steps
+  // tell that it does.
+  const std::string command = "exec " + std::string(WAVEFIELD_EXECUTABLE) + " --quiet --scene " + SCENES_FOLDER +
+                              "/block-ricker.toml --set integrator.end_time=15000 --set output.every=20 --out " +
+                              out.string() + " > " + log.string() + " 2>&1";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {  // the child becomes the driver itself (exec), so the signal and the status are its own
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  for (int k = 0; k < 600 && !fs::exists(out / "frame_000002.vtp"); ++k) usleep(50000);
+  const bool stepping = fs::exists(out / "frame_000002.vtp");
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(stepping) << "the run did not start stepping";
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by the signal instead of stopping cleanly";
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM);
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("wavefield: interrupted by SIGTERM"), std::string::npos) << text.str();
+  ASSERT_TRUE(fs::exists(out / "summary.json")) << text.str();
+  const nlohmann::json summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  EXPECT_EQ(summary["interrupted"], "SIGTERM");
+  const double reached = summary["simulated_time"];
+  EXPECT_GT(reached, 0);
+  EXPECT_LT(reached, 15000);
+  EXPECT_TRUE(fs::exists(out / "probes.csv"));
+  EXPECT_TRUE(fs::exists(out / "frame.pvd"));
 }
 
 class MalformedScene : public ::testing::TestWithParam<std::string> {};

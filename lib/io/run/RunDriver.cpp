@@ -1,6 +1,7 @@
 #include "io/run/RunDriver.hpp"
 
 #include "core/Error.hpp"
+#include "core/Interruption.hpp"
 
 #include <exception>
 #include <iostream>
@@ -9,7 +10,13 @@ namespace mfwave {
 
 int runDriver(const std::string& program, const std::function<int()>& body) {
   try {
-    return body();
+    const int status = body();
+    if (interruptionRequested()) {
+      std::cerr << program << ": interrupted by " << interruptionSignalName()
+                << ": the outputs of the steps taken are written (summary.json says where the run stopped)\n";
+      return 128 + interruptionSignal();
+    }
+    return status;
   } catch (const InputError& e) {
     std::cerr << program << ": error: " << e.what() << '\n';
     return 2;

@@ -2,6 +2,7 @@
 
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
+#include "core/Interruption.hpp"
 
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
@@ -58,6 +59,7 @@ void RunSummary::addCase(CaseRecord record) {
     throw Error("RunSummary::addCase: the primary error '" + record.primaryError + "' of case '" + record.name +
                 "' is not one of its errors");
   if (std::isnan(record.peakMemoryMiB)) record.peakMemoryMiB = mfwave::peakMemoryMiB();
+  if (std::isfinite(record.interruptedAt)) record.simulatedTime = record.interruptedAt;
   cases.push_back(std::move(record));
 }
 
@@ -120,6 +122,7 @@ void RunSummary::writeJson(const std::string& path) const {
   j["wall_seconds"] = wallSeconds;
   j["particle_steps_per_second"] = particleStepsPerSecond();
   j["peak_memory_mib"] = peakMemoryMiB;
+  if (interruptionRequested()) j["interrupted"] = interruptionSignalName();  // only then: a run that ended early
   j["errors"] = nlohmann::ordered_json::object();
   for (const auto& [name, value] : errors) j["errors"][name] = value;
   j["figures"] = nlohmann::ordered_json::object();
@@ -136,6 +139,7 @@ void RunSummary::writeJson(const std::string& path) const {
       k["dt"] = c.timeStep;
       k["stable_dt"] = c.stableTimeStep;
       k["simulated_time"] = c.simulatedTime;
+      if (std::isfinite(c.interruptedAt)) k["interrupted_at"] = c.interruptedAt;
       k["setup_seconds"] = c.setupSeconds;
       k["loop_seconds"] = c.loopSeconds;
       k["particle_steps_per_second"] = c.particleStepsPerSecond();
@@ -162,6 +166,13 @@ void RunSummary::writeJson(const std::string& path) const {
 }
 
 void RunSummary::conclude(const std::string& folder, std::ostream* terminal) {
+  // An interrupted case: the run's simulated time is how far that case got, whatever the driver set.
+  for (const CaseRecord& c : cases)
+    if (std::isfinite(c.interruptedAt)) simulatedTime = c.interruptedAt;
+  if (interruptionRequested())
+    notes.add(std::string("interrupted by ") + interruptionSignalName() +
+              ": the run stopped early; steps, simulated time, errors and figures are those of the part that ran, "
+              "and the cases after the one that was stepping were not run");
   finish();
   writeJson(folder + "/summary.json");
   if (terminal) print(*terminal);

@@ -54,6 +54,9 @@ struct CaseRecord {
   // Named errors against the reference; `primaryError` names the one a tool ranks the case by.
   std::vector<std::pair<std::string, Real>> errors;
   std::string primaryError;
+  // The time the case had reached when SIGINT or SIGTERM ended it early (StudyCase::recordLoop);
+  // unknown for a case that ran to its end. addCase then takes it as the simulated time.
+  Real interruptedAt = kUnknown;
   double peakMemoryMiB = kUnknown;      // the process's peak when the case ended (cases run smallest
                                         // first); addCase fills in the peak so far if unknown
 

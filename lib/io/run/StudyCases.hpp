@@ -4,6 +4,7 @@
 // its notes, so that the summary takes every case whole (RunSummary::addCases,
 // RunSummary::mergeNotesAndFiles) and no driver copies a field into a record.
 
+#include "core/Interruption.hpp"
 #include "io/run/RunSummary.hpp"
 #include "observers/TimeLoop.hpp"
 
@@ -19,15 +20,19 @@ struct StudyCase {
   std::vector<std::string> files;  // written, relative to the output folder
   std::vector<std::string> notes;  // for the summary (stability.allow_growth, fallbacks, ...)
 
-  // The time loop's share of the record: the steps it took and its seconds.
+  // The time loop's share of the record: the steps it took, its seconds and, when SIGINT or SIGTERM
+  // ended it early, the time it had reached.
   void recordLoop(const RunStatistics& loop) {
     record.steps = loop.steps;
     record.loopSeconds = loop.wallSeconds;
+    if (loop.interrupted) record.interruptedAt = loop.endTime;
   }
 };
 
 // Runs `run(settings)` for each entry of `plan` in order and returns the results; with `progress`,
-// says on stderr when each case is done, by its record's name, particles and steps.
+// says on stderr when each case is done, by its record's name, particles and steps. After SIGINT or
+// SIGTERM (core/Interruption) the case that was stepping ends early and no further case starts:
+// the results hold the cases run so far.
 template <class Settings, class Run>
 auto runCases(const std::vector<Settings>& plan, Run&& run, bool progress) {
   std::vector<std::decay_t<std::invoke_result_t<Run&, const Settings&>>> results;
@@ -38,6 +43,7 @@ auto runCases(const std::vector<Settings>& plan, Run&& run, bool progress) {
       const CaseRecord& r = results.back().record;
       std::cerr << "  done " << r.name << " (" << r.particles << " particles, " << r.steps << " steps)\n";
     }
+    if (interruptionRequested()) break;
   }
   return results;
 }

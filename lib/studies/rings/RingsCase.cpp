@@ -191,7 +191,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   const Stopwatch runClock;
   try {
     const RunStatistics stats = loop.run(*integrator, endTime);
-    record.steps = stats.steps;
+    result.recordLoop(stats);  // the loop's seconds are the clock's below (set-up of the catch included)
     record.simulatedTime = stats.endTime;
   } catch (const InstabilityError& e) {
     result.failure = e.what();
