@@ -7,7 +7,8 @@ BEFORE and AFTER hold one folder per run (a driver's --out). For every CSV, the 
 cell are compared exactly, except columns whose header names a timing or a memory figure; for
 every summary.json, every error and figure (same exclusions), the size, step and time entries,
 the file list and the notes. Prints one line per run (identical, or the differences) and exits 1
-when any run differs. The refactors of issue 16 were checked with it (docs/architecture.md).
+when any run differs. The refactors of issue 16 were checked with it (docs/architecture.md);
+tests/tools/determinism_test.py compares 1 against 2 threads with it.
 """
 import csv
 import json

@@ -24,10 +24,14 @@ AtomicFile::~AtomicFile() {
 }
 
 void AtomicFile::commit() {
+  errno = 0;
   stream_.flush();
   const bool ok = static_cast<bool>(stream_);
   stream_.close();
-  if (!ok || stream_.fail()) throw Error("writing '" + temporaryPath_ + "' failed");
+  const int error = errno;  // the write's: a full disk (ENOSPC), a file size limit (EFBIG), ...
+  if (!ok || stream_.fail())
+    throw Error("writing '" + path_ + "' failed" + (error != 0 ? std::string(": ") + std::strerror(error) : "") +
+                " (the file under that name is not touched)");
   if (std::rename(temporaryPath_.c_str(), path_.c_str()) != 0)
     throw Error("cannot rename '" + temporaryPath_ + "' to '" + path_ + "': " + std::strerror(errno));
   committed_ = true;

@@ -184,20 +184,36 @@ TEST(WavefieldStudy, ResolutionsAndRunsBeyondAnyMachineAreRefusedNamingTheKey) {
   }
 }
 
-// An output folder that cannot be made (a file of that name, a path under a file) is bad input
-// naming where it came from, not an internal error.
-TEST(WavefieldStudy, AnOutputFolderThatCannotBeMadeIsBadInput) {
+// An output folder that cannot be made (a file of that name, a path under a file) is an error of the
+// environment (exit 1) naming the path and where it came from, before any work; not an internal error.
+TEST(WavefieldStudy, AnOutputFolderThatCannotBeMadeIsSaidWithItsPath) {
   const fs::path file = fs::temp_directory_path() / "mfwave-out-is-a-file";
   fs::remove_all(file);
   std::ofstream(file) << "not a folder\n";
   const std::string scene = "--scene " + std::string(SCENES_FOLDER) + "/block-ricker.toml";
   const Outcome out = runWavefield(scene + " --out " + file.string(), "out-file");
   ASSERT_TRUE(out.exited) << out.log;
-  EXPECT_EQ(out.exitCode, 2) << out.log;
-  EXPECT_NE(out.log.find("--out: cannot make the output folder"), std::string::npos) << out.log;
+  EXPECT_EQ(out.exitCode, 1) << out.log;
+  EXPECT_NE(out.log.find("wavefield: error: --out: cannot make the output folder '" + file.string() + "'"),
+            std::string::npos) << out.log;
   const Outcome folder = runWavefield(scene + " --set output.folder=" + (file / "below").string(), "out-below-file");
-  EXPECT_EQ(folder.exitCode, 2) << folder.log;
+  EXPECT_EQ(folder.exitCode, 1) << folder.log;
   EXPECT_NE(folder.log.find("output.folder: cannot make the output folder"), std::string::npos) << folder.log;
+}
+
+// A file that cannot be written whole (here a 20 KiB file size limit, as a full disk or a quota
+// would) stops the run with exit 1 naming the file and why; no temporary and no partial file stays.
+TEST(WavefieldStudy, AFileThatCannotBeWrittenWholeStopsTheRunNamingIt) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-wavefield-fsize";
+  fs::remove_all(out);
+  const Outcome run = runWavefield("--scene " + std::string(SCENES_FOLDER) + "/block-ricker.toml --out " + out.string(),
+                                   "fsize", "ulimit -f 20; ");
+  ASSERT_TRUE(run.exited) << "killed (SIGXFSZ?): " << run.log;
+  EXPECT_EQ(run.exitCode, 1) << run.log;
+  EXPECT_NE(run.log.find("writing VTK frame '" + (out / "frame_000000.vtp").string() + "' failed: File too large"),
+            std::string::npos) << run.log;
+  for (const auto& entry : fs::directory_iterator(out))
+    EXPECT_EQ(entry.path().filename(), "scene.resolved.toml") << "left behind: " << entry.path();
 }
 
 // SIGTERM while the run steps: it ends after the current step, every output of the steps taken is

@@ -3,12 +3,17 @@
 #include "core/Error.hpp"
 #include "core/Interruption.hpp"
 
+#include <csignal>
 #include <exception>
 #include <iostream>
 
 namespace mfwave {
 
 int runDriver(const std::string& program, const std::function<int()>& body) {
+  // A file that outgrows RLIMIT_FSIZE (a quota, a small filesystem limit) would kill the process
+  // with SIGXFSZ mid-write; ignored, the write fails instead and the writer reports it (exit 1,
+  // naming the file, the temporary removed).
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     const int status = body();
     if (interruptionRequested()) {

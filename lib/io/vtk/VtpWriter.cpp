@@ -3,6 +3,7 @@
 #include "core/Error.hpp"
 #include "io/vtk/FramePolyData.hpp"
 
+#include <vtkErrorCode.h>
 #include <vtkNew.h>
 #include <vtkXMLPolyDataWriter.h>
 
@@ -32,11 +33,16 @@ void VtpWriter::write(const ParticleFrame<D>& frame, const std::string& path) {
   writer->EncodeAppendedDataOff();
   writer->SetCompressorTypeToZLib();
   writer->SetHeaderTypeToUInt64();  // blocks over 4 GiB for large clouds
+  // VTK prints a failure as a page of its pipeline's state; it is reported below, with the path.
+  const int shown = vtkObject::GetGlobalWarningDisplay();
+  vtkObject::SetGlobalWarningDisplay(0);
   const int ok = writer->Write();
+  vtkObject::SetGlobalWarningDisplay(shown);
   if (ok != 1 || writer->GetErrorCode() != 0) {
     std::remove(temporary.c_str());
-    throw Error("writing VTK frame '" + path + "' failed (VTK error code " +
-                std::to_string(writer->GetErrorCode()) + ")");
+    throw Error("writing VTK frame '" + path + "' failed: " +
+                vtkErrorCode::GetStringFromErrorCode(static_cast<int>(writer->GetErrorCode())) +
+                " (VTK error code " + std::to_string(writer->GetErrorCode()) + ")");
   }
   if (std::rename(temporary.c_str(), path.c_str()) != 0) {
     const int error = errno;

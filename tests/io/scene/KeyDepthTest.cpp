@@ -51,6 +51,13 @@ TEST(KeyDepth, KeysUpToTheLimitAndDotsInValuesStringsAndCommentsPass) {
   checkKeyDepth("d = 1979-05-27T07:32:00.999999-07:00\n", "s.toml");
 }
 
+TEST(KeyDepth, NestedValuesStopAtTheReadersLimit) {
+  const std::string deep = "a = " + std::string(100000, '[') + std::string(100000, ']') + "\n";
+  const SceneError e = sceneErrorOf([&] { parseScene(deep, "nested.toml", {}, SceneSchema::common()); });
+  EXPECT_EQ(e.key(), "(syntax)");
+  EXPECT_NE(e.problem().find("maximum nested value depth of 256"), std::string::npos) << e.what();
+}
+
 TEST(KeyDepth, ADeepOverrideIsRefused) {
   const SceneError path = sceneErrorOf([] { loadScene(sceneTestFile("valid/full-3d.toml"), {dottedKey(100000) + "=1"}); });
   EXPECT_EQ(path.key(), "--set");

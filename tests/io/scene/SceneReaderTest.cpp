@@ -320,6 +320,15 @@ TEST(SceneReader, BlockRickerExampleBuildsItsParticles) {
   EXPECT_TRUE(s.output.vtk && s.output.png);
 }
 
+TEST(SceneReader, LimitsOfTheLattice) {
+  const SceneError tiny = sceneErrorOf([] {
+    SceneReader r = loadScene(std::string(MFWAVE_SCENE_DATA_DIR) + "/block-ricker.toml", {"geometry.spacing=1e-300"});
+    readFully(r);
+  });
+  EXPECT_EQ(tiny.key(), "geometry.spacing");
+  EXPECT_NE(tiny.problem().find("would create more than 1e10 particles"), std::string::npos) << tiny.what();
+}
+
 TEST(SceneReader, ARunOfMoreThanATrillionStepsIsRefusedNamingTheKey) {
   // end_time = 1e300 used to overflow the step count into a huge step, refused as "above the limit".
   SceneReader reader = loadScene(std::string(MFWAVE_SCENE_DATA_DIR) + "/block-ricker.toml",
