@@ -129,6 +129,18 @@ Plan readPlan(SceneReader& reader) {
     }
   }
   std::sort(grids.begin() + 1, grids.end(), [](const GeometrySpec& a, const GeometrySpec& b) { return a.spacing > b.spacing; });
+  // A whole run holds about 6.7 KiB per particle (docs/performance.md); with the ghosts and a
+  // margin, 8 KiB. A spacing that needs more than the machine has is refused before any case.
+  const double machine = physicalMemoryMiB();
+  for (const GeometrySpec& grid : grids) {
+    const double need = 8.0 / 1024.0 * static_cast<double>(grid.particleCount());
+    if (need > machine)
+      reader.fail(grid.spacing == g.spacing ? "geometry.spacing" : "study.spacings",
+                  "dx = " + scene::formatNumber(grid.spacing) + " needs about " +
+                      scene::formatNumber(std::round(need / 1024.0)) + " GiB (" +
+                      std::to_string(grid.particleCount()) + " particles at about 8 KiB each); this machine has " +
+                      scene::formatNumber(std::round(machine / 1024.0)) + " GiB");
+  }
 
   // At the scene's spacing: the main variant (with frames), the published figure cases, the free
   // block; then every other spacing, for each variant, cheapest first.

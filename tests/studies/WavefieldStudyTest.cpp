@@ -172,6 +172,9 @@ TEST(WavefieldStudy, ResolutionsAndRunsBeyondAnyMachineAreRefusedNamingTheKey) {
        "integrator.end_time: 1e300 s at a step of"},
       {WAVEFIELD_EXECUTABLE, "--scene " + scenes + "block-ricker.toml --set integrator.end_time=1e300",
        "more than 1e12 is refused"},
+      // 3.4e8 particles: about 2.6 TB against the machine's memory, refused before any case.
+      {LAMB3D_EXECUTABLE, "--scene " + scenes + "lamb3d.toml --set 'study.spacings=[0.5, 0.01]'",
+       "study.spacings: dx = 0.01 needs about"},
   };
   const fs::path out = fs::temp_directory_path() / "mfwave-beyond-any-machine";
   for (const auto& c : cases) {

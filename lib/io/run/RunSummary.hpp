@@ -128,5 +128,8 @@ struct RunSummary {
 
 // Peak resident set size of this process so far, in MiB (getrusage).
 double peakMemoryMiB();
+// The machine's physical memory in MiB (unknown if the system does not say): what a run that
+// would need more is refused against, before it allocates.
+double physicalMemoryMiB();
 
 }  // namespace mfwave
