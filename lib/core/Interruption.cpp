@@ -47,6 +47,4 @@ const char* interruptionSignalName() {
 
 void clearInterruption() { requested = 0; }
 
-void requestInterruption(int signal) { onInterruption(signal); }
-
 }  // namespace mfwave

@@ -21,12 +21,10 @@ class InterruptionGuard {
 // of the process.
 int interruptionSignal();
 inline bool interruptionRequested() { return interruptionSignal() != 0; }
-// "SIGINT", "SIGTERM" or "signal N".
+// "SIGINT", "SIGTERM" or "a signal".
 const char* interruptionSignalName();
 
 // For tests: forget a past interruption.
 void clearInterruption();
-// For tests: what the handler does on `signal` (the flag and the default action restored).
-void requestInterruption(int signal);
 
 }  // namespace mfwave
