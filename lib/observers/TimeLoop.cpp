@@ -24,7 +24,8 @@ RunStatistics TimeLoop::run(Integrator& integrator, Real endTime) {
   for (auto& entry : observers_) entry.observer->begin(integrator.state());
 
   // Half a step of slack so round-off in t never adds or drops a fixed step.
-  while (integrator.time() < endTime - 0.5 * integrator.stepSize() && !interruptionRequested()) {
+  const auto beforeTheEnd = [&] { return integrator.time() < endTime - 0.5 * integrator.stepSize(); };
+  while (beforeTheEnd() && !interruptionRequested()) {
     integrator.step();
     const long n = integrator.stepCount() - firstStep;
     for (auto& entry : observers_)
@@ -36,7 +37,7 @@ RunStatistics TimeLoop::run(Integrator& integrator, Real endTime) {
     entry.observer->end(integrator.state());
   }
   stats.steps = taken;
-  stats.interrupted = interruptionRequested() && integrator.time() < endTime - 0.5 * integrator.stepSize();
+  stats.interrupted = interruptionRequested() && beforeTheEnd();
   stats.endTime = integrator.time();
   stats.wallSeconds = wall.seconds();
   return stats;

@@ -32,12 +32,10 @@ std::unique_ptr<FirstOrderIntegrator> makeSolidIntegrator(UpdatedLagrangianSph<D
     throw InputError("integrator.time_step", why.str());
   }
   const Real firstStep = settings.fixedStep > 0 ? settings.fixedStep : stable;
-  if (!(endTime / firstStep <= IntegratorSpec::kMaxSteps)) {
-    std::ostringstream why;
-    why << endTime << " s at the first step of " << firstStep << " s is about " << endTime / firstStep
-        << " steps; more than " << IntegratorSpec::kMaxSteps << " is refused";
-    throw InputError(endTimeKey, why.str());
-  }
+  std::ostringstream what;
+  what << endTime << " s at the first step of " << firstStep << " s";
+  const std::string tooMany = tooManySteps(endTime / firstStep, what.str());
+  if (!tooMany.empty()) throw InputError(endTimeKey, tooMany);
   std::unique_ptr<FirstOrderIntegrator> integrator = makeFirstOrderIntegrator(settings.integrator, settings.arkode);
   if (settings.fixedStep > 0) {
     integrator->initialise(system, 0, y0, settings.fixedStep);

@@ -15,15 +15,16 @@ Real IntegratorSpec::timeStepFor(Real stableStep) const {
 
 long IntegratorSpec::stepsFor(Real stableStep) const {
   const Real steps = timeStep ? std::round(endTime / *timeStep) : std::ceil(endTime / (cfl * stableStep) - 1e-9);
-  // A count beyond kMaxSteps is a typo in a key (end_time = 1e300), not a run, and it would overflow
-  // the step counter.
-  if (!(steps <= kMaxSteps))
-    throw InputError(timeStep ? "integrator.time_step" : "integrator.end_time",
-                     scene::formatNumber(endTime) + " s at a step of " +
-                         scene::formatNumber(timeStep ? *timeStep : cfl * stableStep) + " s is " +
-                         scene::formatNumber(steps) + " steps; more than " + scene::formatNumber(kMaxSteps) +
-                         " is refused");
+  const std::string problem = tooManySteps(steps, scene::formatNumber(endTime) + " s at a step of " +
+                                                      scene::formatNumber(timeStep ? *timeStep : cfl * stableStep) + " s");
+  if (!problem.empty()) throw InputError(timeStep ? "integrator.time_step" : "integrator.end_time", problem);
   return std::max(1L, static_cast<long>(steps));
+}
+
+std::string tooManySteps(Real steps, const std::string& what) {
+  if (steps <= IntegratorSpec::kMaxSteps) return "";
+  return what + " is " + scene::formatNumber(steps) + " steps; more than " +
+         scene::formatNumber(IntegratorSpec::kMaxSteps) + " is refused";
 }
 
 IntegratorSpec readIntegrator(SceneReader& reader) {
@@ -42,11 +43,9 @@ IntegratorSpec readIntegrator(SceneReader& reader) {
   if (reader.has("integrator.time_step")) {
     s.timeStep = reader.number("integrator.time_step");
     const Real steps = s.endTime / *s.timeStep;
-    if (!(steps <= IntegratorSpec::kMaxSteps))
-      reader.fail("integrator.time_step", scene::formatNumber(*s.timeStep) + " makes " + scene::formatNumber(steps) +
-                                              " steps of end_time = " + scene::formatNumber(s.endTime) +
-                                              "; more than " + scene::formatNumber(IntegratorSpec::kMaxSteps) +
-                                              " is refused");
+    const std::string tooMany = tooManySteps(steps, "end_time = " + scene::formatNumber(s.endTime) +
+                                                        " at a step of " + scene::formatNumber(*s.timeStep));
+    if (!tooMany.empty()) reader.fail("integrator.time_step", tooMany);
     if (std::abs(steps - std::round(steps)) > 1e-8 * std::max(Real(1), steps) || std::round(steps) < 1)
       reader.fail("integrator.time_step", scene::formatNumber(*s.timeStep) + " does not divide end_time = " +
                                               scene::formatNumber(s.endTime) + " into whole steps");

@@ -72,12 +72,10 @@ Outcome run(const Settings& s) {
   const PlaneWave<D> wave(k, e, speed);
   record.simulatedTime = s.periods * wave.period();
   const Real steps = std::ceil(record.simulatedTime / (s.cfl * record.stableTimeStep) - 1e-9);
-  if (!(steps <= IntegratorSpec::kMaxSteps)) {
-    std::ostringstream why;
-    why << s.periods << " periods at cfl " << s.cfl << " is about " << steps << " steps; more than "
-        << IntegratorSpec::kMaxSteps << " is refused";
-    throw InputError("study.periods", why.str());
-  }
+  std::ostringstream what;
+  what << s.periods << " periods at cfl " << s.cfl;
+  const std::string tooMany = tooManySteps(steps, what.str());
+  if (!tooMany.empty()) throw InputError("study.periods", tooMany);
   record.steps = static_cast<long>(steps);
   record.timeStep = record.simulatedTime / static_cast<Real>(record.steps);
 
