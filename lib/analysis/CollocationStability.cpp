@@ -3,6 +3,7 @@
 #include "core/Material.hpp"
 #include "methods/collocation/CollocationSystem.hpp"
 #include "methods/collocation/ConstrainedCollocationSystem.hpp"
+#include "solvers/DenseEigenproblems.hpp"
 
 #include "core/Error.hpp"
 #include "integrators/CentralDifference.hpp"
@@ -11,7 +12,6 @@
 #include "observers/TimeLoop.hpp"
 #include "systems/LinearSecondOrderSystem.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -182,9 +182,7 @@ std::string EigenvalueStability::verdict() const {
 }
 
 EigenvalueStability eigenvalueStability(const Eigen::MatrixXd& stiffness, Real imaginaryTolerance) {
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(stiffness, false);
-  if (solver.info() != Eigen::Success) throw Error("eigenvalueStability: the eigenvalue solver did not converge");
-  const Eigen::VectorXcd lambda = solver.eigenvalues();
+  const Eigen::VectorXcd lambda = generalEigenvalues(stiffness, "eigenvalueStability");
   EigenvalueStability r;
   const Real largest = lambda.cwiseAbs().maxCoeff();
   r.largestModulus = largest;

@@ -1,8 +1,8 @@
 #include "analysis/DispersionSpectrum.hpp"
 
 #include "core/Error.hpp"
+#include "solvers/DenseEigenproblems.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -30,14 +30,14 @@ Decomposition decompose(const Eigen::MatrixXcd& T) {
   const Real scale = std::max<Real>(T.cwiseAbs().maxCoeff(), std::numeric_limits<Real>::min());
   if ((T - T.adjoint()).cwiseAbs().maxCoeff() <= 1e-12 * scale) {
     const Eigen::MatrixXcd hermitian = 0.5 * (T + T.adjoint());
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> solver(hermitian);
-    result.values = solver.eigenvalues().cast<std::complex<Real>>();
-    result.right = solver.eigenvectors();
+    HermitianEigenpairs solver = hermitianEigenpairs(hermitian, "dispersion spectrum (Hermitian symbol)");
+    result.values = solver.values.cast<std::complex<Real>>();
+    result.right = std::move(solver.vectors);
     result.left = result.right.adjoint();
   } else {
-    Eigen::ComplexEigenSolver<Eigen::MatrixXcd> solver(T, true);
-    result.values = solver.eigenvalues();
-    result.right = solver.eigenvectors();
+    GeneralEigenpairs solver = generalEigenpairs(T, true, "dispersion spectrum (symbol)");
+    result.values = std::move(solver.values);
+    result.right = std::move(solver.vectors);
     result.left = result.right.inverse();
   }
   return result;

@@ -10,8 +10,8 @@
 #include "neighbours/CellList.hpp"
 #include "neighbours/NeighbourList.hpp"
 #include "particles/BoxFace.hpp"
+#include "solvers/DenseEigenproblems.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -299,8 +299,8 @@ JitteredCloudReport jitteredCloudSpectrum(const std::string& method, const Latti
     Eigen::MatrixXd A = fold<D>(rows.acceleration, tiled.base, sites);
     if (rows.mass.nonZeros() > 0)
       A = Eigen::PartialPivLU<Eigen::MatrixXd>(fold<D>(rows.mass, tiled.base, sites)).solve(A);
-    const Eigen::EigenSolver<Eigen::MatrixXd> eigen(A, true);
-    const Eigen::VectorXcd& lambda = eigen.eigenvalues();
+    const GeneralEigenpairs eigen = generalEigenpairs(A, true, "jittered cloud spectrum");
+    const Eigen::VectorXcd& lambda = eigen.values;
     const Real largest = lambda.cwiseAbs().maxCoeff();
     // The box's lowest modes: k = 2 pi / (cells dx) along each axis, cos and sin; shear (D - 1
     // polarisations; 1-D: the only wave) sits below every P mode for any Poisson's ratio.
@@ -320,7 +320,7 @@ JitteredCloudReport jitteredCloudSpectrum(const std::string& method, const Latti
     report.spuriousLowModes = std::max<Index>(0, low - D);
     // Each exact lowest mode is matched to the eigenvector it overlaps most (spurious low modes of
     // a method would otherwise pass for it), and that eigenvalue's frequency is compared.
-    const Eigen::MatrixXcd& vectors = eigen.eigenvectors();
+    const Eigen::MatrixXcd& vectors = eigen.vectors;
     for (int axis = 0; axis < D; ++axis)
       for (int polarisation = 0; polarisation < D; ++polarisation) {
         if (D > 1 && polarisation == axis) continue;

@@ -1,6 +1,7 @@
 #include "analysis/LatticeDispersion.hpp"
 
 #include "core/Error.hpp"
+#include "solvers/DenseEigenproblems.hpp"
 
 #include <Eigen/Dense>
 
@@ -56,22 +57,22 @@ std::vector<EigenPair> eigenPairs(const Eigen::MatrixXd& matrix, const Eigen::Ma
   if (symmetric) {
     const Eigen::MatrixXd sym = 0.5 * (matrix + matrix.transpose());
     const Eigen::MatrixXd dSym = 0.5 * (dMatrix + dMatrix.transpose());
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(sym);
+    const SymmetricEigenpairs solver = symmetricEigenpairs(sym, "lattice dispersion (symmetric symbol)");
     for (Index j = 0; j < n; ++j) {
       auto& p = pairs[static_cast<std::size_t>(j)];
-      p.vector = solver.eigenvectors().col(j);
-      p.value = solver.eigenvalues()(j);
+      p.vector = solver.vectors.col(j);
+      p.value = solver.values(j);
       p.derivative = p.vector.dot(dSym * p.vector);
     }
     return pairs;
   }
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(matrix);
-  const Eigen::MatrixXcd right = solver.eigenvectors();
+  const GeneralEigenpairs solver = generalEigenpairs(matrix, true, "lattice dispersion (symbol)");
+  const Eigen::MatrixXcd& right = solver.vectors;
   const Eigen::MatrixXcd left = right.inverse();  // rows: left eigenvectors with left * right = I
   const Eigen::MatrixXcd dProjected = left * dMatrix.cast<std::complex<Real>>() * right;
   for (Index j = 0; j < n; ++j) {
     auto& p = pairs[static_cast<std::size_t>(j)];
-    const std::complex<Real> value = solver.eigenvalues()(j);
+    const std::complex<Real> value = solver.values(j);
     p.value = value.real();
     p.complexPair = std::abs(value.imag()) > 1e-12 * std::max(scale, std::abs(value));
     p.derivative = dProjected(j, j).real();
@@ -418,7 +419,7 @@ SymbolExtremes<D> symbolExtremes(const LatticeStencil<D>& stencil, Real spacing,
     }
     const StencilSymbol symbol = stencilSymbol(stencil, Vec<D>(kdx / spacing));
     const Eigen::MatrixXd symmetric = 0.5 * (symbol.real + symbol.real.transpose());
-    const Eigen::VectorXd omega2 = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(symmetric).eigenvalues();
+    const Eigen::VectorXd omega2 = symmetricEigenvalues(symmetric, "lattice stencil extremes");
     if (omega2.minCoeff() < e.smallest) {
       e.smallest = omega2.minCoeff();
       e.smallestAt = kdx;

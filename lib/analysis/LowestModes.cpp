@@ -1,6 +1,7 @@
 #include "analysis/LowestModes.hpp"
 
 #include "core/Error.hpp"
+#include "solvers/DenseEigenproblems.hpp"
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/Dense>
@@ -47,10 +48,10 @@ LowestModes lowestModes(const SparseMatrix& stiffness, const Vector& massDiagona
   for (result.iterations = 1; result.iterations <= maximumIterations; ++result.iterations) {
     w = apply(q);
     const Eigen::MatrixXd h = q.transpose() * w;
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ritz(0.5 * (h + h.transpose()));
+    const SymmetricEigenpairs ritz = symmetricEigenpairs(0.5 * (h + h.transpose()), "lowestModes (Ritz values)");
     // descending theta = ascending lambda
-    theta = ritz.eigenvalues().reverse();
-    const Eigen::MatrixXd vectors = ritz.eigenvectors().rowwise().reverse();
+    theta = ritz.values.reverse();
+    const Eigen::MatrixXd vectors = ritz.vectors.rowwise().reverse();
     const Eigen::MatrixXd x = q * vectors, ox = w * vectors;
     bool done = true;
     for (int j = 0; j < count; ++j) {

@@ -1,8 +1,8 @@
 #include "analysis/RestModes.hpp"
 
 #include "core/Error.hpp"
+#include "solvers/DenseEigenproblems.hpp"
 
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -66,9 +66,7 @@ Eigen::MatrixXd restOperatorRows(SplitFirstOrderSystem& system, Real t, const Ve
 RestModes restModes(const Eigen::MatrixXd& restOperator, Real zeroTolerance) {
   RestModes modes;
   if (restOperator.rows() == 0) return modes;
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(restOperator, false);
-  if (solver.info() != Eigen::Success) throw Error("restModes: the eigenvalue solver did not converge");
-  const Eigen::VectorXcd lambda = solver.eigenvalues();
+  const Eigen::VectorXcd lambda = generalEigenvalues(restOperator, "restModes");
   const Real largest = lambda.cwiseAbs().maxCoeff();
   for (Index k = 0; k < lambda.size(); ++k) {
     const std::complex<Real> l = lambda[k];

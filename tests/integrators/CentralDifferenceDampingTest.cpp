@@ -6,9 +6,9 @@
 #include "core/Error.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "integrators/IntegratorFactory.hpp"
+#include "solvers/DenseEigenproblems.hpp"
 
 #include <Eigen/Dense>
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -34,9 +34,9 @@ class ExactLinearMotion {
     a.topRightCorner(n_, n_).setIdentity();
     a.bottomLeftCorner(n_, n_) = -m.inverse() * k;
     a.bottomRightCorner(n_, n_) = -m.inverse() * c;
-    Eigen::EigenSolver<Eigen::MatrixXd> eigen(a);
-    vectors_ = eigen.eigenvectors();
-    values_ = eigen.eigenvalues();
+    GeneralEigenpairs eigen = generalEigenpairs(a, true);
+    vectors_ = std::move(eigen.vectors);
+    values_ = std::move(eigen.values);
     Vector y0(2 * n_);
     y0 << u0, v0;
     coefficients_ = vectors_.partialPivLu().solve(y0.cast<std::complex<Real>>());

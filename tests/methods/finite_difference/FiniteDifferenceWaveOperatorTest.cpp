@@ -3,6 +3,7 @@
 #include "neighbours/NeighbourList.hpp"
 #include "particles/BoxFace.hpp"
 #include "particles/Lattice.hpp"
+#include "solvers/DenseEigenproblems.hpp"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -28,8 +29,8 @@ std::vector<Real> squaredFrequencies(const ParticleSet<D>& particles, const Line
   Eigen::MatrixXd a(n, n);
   for (int r = 0; r < n; ++r)
     for (int c = 0; c < n; ++c) a(r, c) = k(free[r], free[c]) / std::sqrt(m[free[r]] * m[free[c]]);
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(a);
-  std::vector<Real> values(solver.eigenvalues().data(), solver.eigenvalues().data() + n);
+  const Eigen::VectorXd solver = symmetricEigenvalues(a);
+  std::vector<Real> values(solver.data(), solver.data() + n);
   return values;
 }
 
