@@ -115,7 +115,7 @@ SceneSchema atlasSchema() {
       "steps a run below the limit must stay bounded for");
   schema.add("confirm.integrators", ValueType::StringArray).withUnit("-")
       .defaultsTo("[\"central_difference\", \"arkode:classic_rk4\"]").describedAs(
-          "integrators confirmed (central_difference, leapfrog, arkode:<table>; lumped methods only)");
+          "integrators confirmed (central_difference, leapfrog, arkode:<table>)");
   schema.add("confirm.cells", ValueType::Integer).withUnit("-").defaultsTo("8").atLeast(4).describedAs(
       "nodes per axis of the confirmation lattices (raised until the stencil fits)");
   addJitterAtlasKeys(schema);
@@ -250,7 +250,7 @@ struct Confirmation {
 };
 
 // Runs `integrator` at `fraction` of its predicted limit on the method's small periodic lattice
-// (the lumped system, assembled once per method), from random displacements, watched by the
+// (assembled once per method), from random displacements, watched by the
 // StabilityMonitor.
 Confirmation confirm(LinearSecondOrderSystem& system, int components, const std::string& integrator,
                      const IntegratorLimit& limit, Real omegaMax, Real fraction, long steps) {
@@ -343,10 +343,6 @@ void study(const Settings& s, Outputs& out) {
     // Confirmations at the default supports, lambda = mu = rho = 1.
     try {
       const MethodLatticeStencil<D> stencil = latticeMethodStencil<D>(method, base.settings, 1, "study.methods");
-      if (!stencil.mass.offsets.empty()) {
-        out.confirmations << D << ',' << method << ",-,-,-,-,-,\"not run: consistent mass (implicit Newmark only)\"\n";
-        continue;
-      }
       const int lattice = periodicLatticeCells(stencil.acceleration, stencil.mass, 1.0, s.confirmCells);
       const auto op = makePeriodicLatticeOperator<D>(stencil.acceleration, 1.0, lattice, stencil.mass);
       const InteriorStability<D> verdict = interiorStability(DispersionSpectrum<D>(op), 1.0, lattice);
@@ -356,8 +352,13 @@ void study(const Settings& s, Outputs& out) {
         continue;
       }
       const Real omegaMax = std::sqrt(verdict.largestOmegaSquared);
+      // Lumped: M = I. Consistent (RK, RB collocation): the explicit integrators solve with the
+      // periodic collocation mass every step (LinearSecondOrderSystem's LU of M).
       SparseMatrix mass(op.size(), op.size());
-      mass.setIdentity();
+      if (op.lumped())
+        mass.setIdentity();
+      else
+        mass = periodicMatrix(op.mass, 1.0, lattice);
       LinearSecondOrderSystem system(mass, SparseMatrix(), -periodicMatrix(op.acceleration, 1.0, lattice));
       for (const std::string& integrator : s.confirmIntegrators) {
         const IntegratorLimit limit = integratorLimit(integrator);

@@ -110,11 +110,7 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
   integrator->initialise(system, 0, zero, zero, dt);
 
   // observers
-  StabilityMonitorOptions stabilityOptions;
-  stabilityOptions.growthFactor = scene.stability.growthFactor;
-  stabilityOptions.window = scene.stability.window;
-  stabilityOptions.absoluteLimit = scene.stability.absoluteLimit;
-  StabilityMonitor monitor(stabilityOptions);
+  StabilityMonitor monitor(scene.stability.options(1, loadsQuietAfter(scene)));
   std::vector<Probe> probeList = resolveProbes(scene.probes, particles);
   for (Probe& probe : probeList) probe.component = 0;  // a scalar state has one component
   ProbeRecorder probes(probeList, 1);
@@ -146,6 +142,9 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
   const FrameOutputReport frameReport = frames.report();
   summary.files.addAll(frameReport.files);
   summary.notes.addAll(frameReport.notes);
+  std::vector<std::string> growth;
+  noteAllowedGrowth(growth, "", {monitor.growthMessage()});
+  summary.notes.addAll(growth);
   summary.particles = particles.size();
   summary.meanNeighbours = neighbours.meanCount();
   summary.steps = stats.steps;

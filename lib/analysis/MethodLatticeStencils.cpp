@@ -142,9 +142,14 @@ MethodLatticeStencil<D> updatedLagrangianSphInteriorStencil(UpdatedLagrangianSph
   // Lattice steps inside the (open) support along an axis.
   const int reach = static_cast<int>(std::ceil(kernel->supportRadius() / spacing - 1e-9)) - 1;
   MethodLatticeStencil<D> result;
-  // The centre's force reads the stresses of its neighbours, whose rates read their own neighbours:
-  // two supports, plus one spacing for the translation check.
-  result.halfWidth = 2 * reach + 1;
+  // The stencil is read from the centre's column of the rest operator: on a lattice
+  // (A u)_a = sum_r G_r u_{a + r} gives G_r = A(c - r, c), so D perturbations of the centre's
+  // velocity give every block (its rows would take a perturbation per unknown of the block: hours
+  // in 3-D). The rows c - r reach two supports from the centre (the force reads the neighbours'
+  // stresses, whose rates read their own neighbours) and must themselves be interior rows, whose
+  // corrections and sums see a full neighbourhood: three supports, plus one spacing for the
+  // translation check from the next particle's column.
+  result.halfWidth = 3 * reach + 1;
   const ParticleSet<D> particles = block<D>(result.halfWidth, spacing);
   UpdatedLagrangianSph<D> system(particles, options);
   const Vector rest = system.initialState(Vector());
@@ -152,26 +157,23 @@ MethodLatticeStencil<D> updatedLagrangianSphInteriorStencil(UpdatedLagrangianSph
   for (Index i = 0; i < particles.physicalCount(); ++i)
     for (int a = 0; a < D; ++a) velocities.push_back(system.layout().velocity(i, a));
 
-  auto rowsOf = [&](Index particle) {
-    std::vector<Index> rows;
-    for (int a = 0; a < D; ++a) rows.push_back(particle * D + a);
-    return rows;
-  };
   const Index centre = particleAt<D>(particles, Vec<D>::Zero(), spacing);
   const Index next = particleAt<D>(particles, nextAlongX<D>(spacing), spacing);
-  std::vector<Index> rows = rowsOf(centre);
-  for (Index r : rowsOf(next)) rows.push_back(r);
-  const Eigen::MatrixXd A = restOperatorRows(system, 0, rest, velocities, rows);
+  std::vector<Index> columns;
+  for (const Index particle : {centre, next})
+    for (int a = 0; a < D; ++a) columns.push_back(particle * D + a);
+  const Eigen::MatrixXd A = restOperatorColumns(system, 0, rest, velocities, columns);
 
-  auto stencilOf = [&](Index particle, Index firstRow) {
+  auto stencilOf = [&](Index particle, Index firstColumn) {
     LatticeStencil<D> stencil;
     stencil.components = D;
-    const Real largest = A.middleRows(firstRow, D).cwiseAbs().maxCoeff();
-    for (Index b = 0; b < particles.physicalCount(); ++b) {
-      Eigen::MatrixXd g = A.block(firstRow, b * D, D, D);
+    const Real largest = A.middleCols(firstColumn, D).cwiseAbs().maxCoeff();
+    // Rows in descending order: offsets x_particle - x_b ascend as for a row read left to right.
+    for (Index b = particles.physicalCount() - 1; b >= 0; --b) {
+      Eigen::MatrixXd g = A.block(b * D, firstColumn, D, D);
       // The rest operator is a finite difference: entries below its noise are not couplings.
       if (g.cwiseAbs().maxCoeff() <= 1e-9 * largest) continue;
-      stencil.offsets.push_back(particles.position(b) - particles.position(particle));
+      stencil.offsets.push_back(particles.position(particle) - particles.position(b));
       stencil.blocks.push_back(std::move(g));
     }
     return stencil;

@@ -3,7 +3,6 @@
 #include "core/Error.hpp"
 #include "solvers/DenseEigenproblems.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -18,9 +17,15 @@ Eigen::MatrixXd restOperator(SplitFirstOrderSystem& system, Real t, const Vector
   return restOperatorRows(system, t, restState, velocityEntries, rows, relativePerturbation);
 }
 
-Eigen::MatrixXd restOperatorRows(SplitFirstOrderSystem& system, Real t, const Vector& restState,
-                                 const std::vector<Index>& velocityEntries, const std::vector<Index>& rows,
-                                 Real relativePerturbation) {
+namespace {
+
+// Column k of A (all m entries, A_{rk} for the velocity entries r) for each k in `columns`: dQ/dv
+// e_k exactly (Q being linear in v at rest), then dP_v/dq times it by a central difference of step
+// eps dq. `use(k, column)` receives each.
+template <typename Use>
+void restOperatorColumnsEach(SplitFirstOrderSystem& system, Real t, const Vector& restState,
+                             const std::vector<Index>& velocityEntries, const std::vector<Index>& columns,
+                             Real relativePerturbation, const Use& use) {
   const Index n = system.size();
   const Index nq = system.configurationSize();
   if (restState.size() != n)
@@ -29,37 +34,64 @@ Eigen::MatrixXd restOperatorRows(SplitFirstOrderSystem& system, Real t, const Ve
     if (k < nq || k >= n) throw InputError("velocityEntries", "entry " + std::to_string(k) + " is not in p");
   if (!(relativePerturbation > 0)) throw InputError("relativePerturbation", "must be positive");
   const auto m = static_cast<Index>(velocityEntries.size());
-  for (Index r : rows)
-    if (r < 0 || r >= m) throw InputError("rows", "row " + std::to_string(r) + " is not in [0, " + std::to_string(m) + ")");
+  for (Index k : columns)
+    if (k < 0 || k >= m)
+      throw InputError("columns", "column " + std::to_string(k) + " is not in [0, " + std::to_string(m) + ")");
   const Real scale = std::max<Real>(1, restState.head(nq).cwiseAbs().maxCoeff());
 
-  Vector qdotRest(nq), qdot(nq), pPlus(n - nq), pMinus(n - nq);
+  Vector qdotRest(nq), qdot(nq), pPlus(n - nq), pMinus(n - nq), column(m);
   system.configurationRate(t, restState, qdotRest);
-  Eigen::MatrixXd A(static_cast<Index>(rows.size()), m);
   Vector y = restState;
-  for (Index k = 0; k < m; ++k) {
-    // dQ/dv e_k: exact, Q being linear in v at rest.
+  for (Index k : columns) {
     y = restState;
     y[velocityEntries[static_cast<std::size_t>(k)]] += 1;
     system.configurationRate(t, y, qdot);
     const Vector dq = qdot - qdotRest;
     const Real size = dq.cwiseAbs().maxCoeff();
     if (size == 0) {
-      A.col(k).setZero();
+      column.setZero();
+      use(k, column);
       continue;
     }
-    // dP_v/dq dq by a central difference of step eps dq.
     const Real eps = relativePerturbation * scale / size;
     y = restState;
     y.head(nq) += eps * dq;
     system.momentumRate(t, y, pPlus);
     y.head(nq) = restState.head(nq) - eps * dq;
     system.momentumRate(t, y, pMinus);
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-      const Index entry = velocityEntries[static_cast<std::size_t>(rows[r])] - nq;
-      A(static_cast<Index>(r), k) = (pPlus[entry] - pMinus[entry]) / (2 * eps);
+    for (Index r = 0; r < m; ++r) {
+      const Index entry = velocityEntries[static_cast<std::size_t>(r)] - nq;
+      column[r] = (pPlus[entry] - pMinus[entry]) / (2 * eps);
     }
+    use(k, column);
   }
+}
+
+}  // namespace
+
+Eigen::MatrixXd restOperatorRows(SplitFirstOrderSystem& system, Real t, const Vector& restState,
+                                 const std::vector<Index>& velocityEntries, const std::vector<Index>& rows,
+                                 Real relativePerturbation) {
+  const auto m = static_cast<Index>(velocityEntries.size());
+  for (Index r : rows)
+    if (r < 0 || r >= m) throw InputError("rows", "row " + std::to_string(r) + " is not in [0, " + std::to_string(m) + ")");
+  std::vector<Index> all(static_cast<std::size_t>(m));
+  for (Index k = 0; k < m; ++k) all[static_cast<std::size_t>(k)] = k;
+  Eigen::MatrixXd A(static_cast<Index>(rows.size()), m);
+  restOperatorColumnsEach(system, t, restState, velocityEntries, all, relativePerturbation,
+                          [&](Index k, const Vector& column) {
+                            for (std::size_t r = 0; r < rows.size(); ++r) A(static_cast<Index>(r), k) = column[rows[r]];
+                          });
+  return A;
+}
+
+Eigen::MatrixXd restOperatorColumns(SplitFirstOrderSystem& system, Real t, const Vector& restState,
+                                    const std::vector<Index>& velocityEntries, const std::vector<Index>& columns,
+                                    Real relativePerturbation) {
+  Eigen::MatrixXd A(static_cast<Index>(velocityEntries.size()), static_cast<Index>(columns.size()));
+  Index j = 0;
+  restOperatorColumnsEach(system, t, restState, velocityEntries, columns, relativePerturbation,
+                          [&](Index, const Vector& column) { A.col(j++) = column; });
   return A;
 }
 

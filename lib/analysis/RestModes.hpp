@@ -29,6 +29,14 @@ Eigen::MatrixXd restOperatorRows(SplitFirstOrderSystem& system, Real t, const Ve
                                  const std::vector<Index>& velocityEntries, const std::vector<Index>& rows,
                                  Real relativePerturbation = 1e-7);
 
+// Only some columns of A: column j of the result is column columns[j] of restOperator (columns
+// index into velocityEntries), at one rate evaluation per column instead of one per unknown. On a
+// translation-invariant lattice a column holds the whole stencil, G_r = A(c - r, c)
+// (MethodLatticeStencils.hpp). Throws InputError("columns").
+Eigen::MatrixXd restOperatorColumns(SplitFirstOrderSystem& system, Real t, const Vector& restState,
+                                    const std::vector<Index>& velocityEntries, const std::vector<Index>& columns,
+                                    Real relativePerturbation = 1e-7);
+
 struct RestModes {
   std::vector<Real> frequencies;  // omega = sqrt(-Re lambda) of the eigenvalues with Re lambda < 0, ascending
   Real largestGrowthRate = 0;     // max over eigenvalues of sqrt(Re lambda) (Re > 0) and of the flutter

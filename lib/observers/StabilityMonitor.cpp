@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -16,8 +17,8 @@ StabilityMonitor::StabilityMonitor(StabilityMonitorOptions options) : options_(o
     throw InputError("stability.oscillation_threshold", "must be positive");
 }
 
-void StabilityMonitor::fail(const StateView& state, const Vector& field, const char* name, Index worst,
-                            const std::string& why) const {
+std::string StabilityMonitor::message(const StateView& state, const Vector& field, const char* name, Index worst,
+                                      const std::string& why) const {
   std::ostringstream message;
   message.precision(6);
   const long particle = static_cast<long>(worst / options_.components);
@@ -25,7 +26,13 @@ void StabilityMonitor::fail(const StateView& state, const Vector& field, const c
   message << "numerical instability at step " << state.step << ", t = " << state.time << ": " << why << " in "
           << name << " of particle " << particle << " (component " << component << ", value " << field[worst]
           << ")";
-  throw InstabilityError(message.str(), state.step, state.time, particle);
+  return message.str();
+}
+
+void StabilityMonitor::fail(const StateView& state, const Vector& field, const char* name, Index worst,
+                            const std::string& why) const {
+  throw InstabilityError(message(state, field, name, worst, why), state.step, state.time,
+                         static_cast<long>(worst / options_.components));
 }
 
 Real StabilityMonitor::scan(const StateView& state, const Vector& field, const char* name, Index& worst) const {
@@ -61,6 +68,14 @@ bool StabilityMonitor::grewAgainstHistory(History& history, Real amplitude) cons
   return grew;
 }
 
+bool StabilityMonitor::grewSinceQuiet(History& history, Real amplitude, bool judging) const {
+  if (!judging) {
+    history.quietReference = std::max(history.quietReference, amplitude);
+    return false;
+  }
+  return history.quietReference > 0 && amplitude > options_.growthFactor * history.quietReference;
+}
+
 Real StabilityMonitor::oscillationRatio(const Vector& u) const {
   const Real scale = previous_.norm();
   if (scale == 0) return 0;
@@ -86,6 +101,19 @@ void StabilityMonitor::observe(const StateView& state) {
       else
         fail(state, state.velocity, "velocity", worstV, why.str());
     }
+  }
+  if (state.time >= options_.quietAfter) ++quietObservations_;
+  const bool judging = quietObservations_ > options_.window;
+  const bool quietU = grewSinceQuiet(displacement_, amplitudeU, judging);
+  const bool quietV = grewSinceQuiet(velocity_, amplitudeV, judging);
+  if (quietU && quietV && growthMessage_.empty()) {
+    std::ostringstream why;
+    why << "growth after the loads ended (displacement and velocity both above " << options_.growthFactor
+        << " times their largest values until " << options_.window << " observations after t = "
+        << options_.quietAfter << ", from when no load acts: a growing mode of the operator, a negative or complex "
+        << "omega^2, or a step above the integrator's limit)";
+    if (options_.stopGrowthAfterLoads) fail(state, state.displacement, "displacement", worstU, why.str());
+    growthMessage_ = message(state, state.displacement, "displacement", worstU, why.str());
   }
   // Keep the last two displacements (swap buffers: one copy per observation).
   beforePrevious_.swap(previous_);

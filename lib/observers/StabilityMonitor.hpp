@@ -14,13 +14,20 @@
 // r well below 1. Runaway growth is declared when the amplitude has grown by more than
 // `growthFactor` against its history at least `window` observations old AND r exceeds
 // `oscillationThreshold`. Add the monitor with every = 1 so r sees consecutive steps.
-// Slow growth of complex eigenvalue pairs is not grid-scale: set absoluteLimit (or watch the
-// energy) for that.
+// Slow growth (a complex eigenvalue pair, a negative omega^2) is not grid-scale. Once the loads
+// have ended (`quietAfter`), a passive linear system can no longer gain energy, so when BOTH the
+// displacement and the velocity exceed `growthFactor` times their quiet reference (the largest
+// amplitude up to `window` observations after the loads ended) the run is stopped as unstable at
+// any frequency, however slow the growth. Both, because one alone grows in physical motion: the
+// displacement of a body set moving (u = v0 t from 0), the velocity of a body released from a
+// displacement (from 0 at the first step); an unstable mode u ~ e^{st} grows in both.
+// absoluteLimit and the energy ledgers (LinearEnergyLedger) remain the guards while loads act.
 
 #include "observers/Observer.hpp"
 
 #include <deque>
 #include <limits>
+#include <string>
 
 namespace mfwave {
 
@@ -33,6 +40,13 @@ struct StabilityMonitorOptions {
   Real absoluteLimit = std::numeric_limits<Real>::infinity();
   // Unknowns per particle, to report the particle (dof / components) and the component.
   int components = 1;
+  // Every load is zero after this time (TimeFunction::quietAfter; 0 for free vibration from an
+  // initial state); from then on growth is judged at any frequency. +infinity: never.
+  Real quietAfter = std::numeric_limits<Real>::infinity();
+  // false (stability.allow_growth): growth after the loads is recorded (growthMessage()) and the run
+  // goes on, to show it on purpose. Non-finite values, the absolute limit and grid-scale growth
+  // still stop.
+  bool stopGrowthAfterLoads = true;
 };
 
 class StabilityMonitor : public Observer {
@@ -43,15 +57,23 @@ class StabilityMonitor : public Observer {
 
   // The last temporal second-difference ratio r (0 until three observations were made).
   Real oscillationRatio() const { return lastRatio_; }
+  // With stopGrowthAfterLoads = false: the message the run would have stopped with (empty if none).
+  const std::string& growthMessage() const { return growthMessage_; }
 
  private:
   struct History {
     std::deque<Real> amplitudes;
     Real reference = 0;
+    Real quietReference = 0;  // largest amplitude up to `window` observations after quietAfter
   };
   // Largest |value| and where; throws at a non-finite value or above the absolute limit.
   Real scan(const StateView& state, const Vector& field, const char* name, Index& worst) const;
   bool grewAgainstHistory(History& history, Real amplitude) const;
+  // Updates the quiet reference while it is being taken; afterwards, whether the amplitude is above
+  // growthFactor times it.
+  bool grewSinceQuiet(History& history, Real amplitude, bool judging) const;
+  std::string message(const StateView& state, const Vector& field, const char* name, Index worst,
+                      const std::string& why) const;
   [[noreturn]] void fail(const StateView& state, const Vector& field, const char* name, Index worst,
                          const std::string& why) const;
   Real oscillationRatio(const Vector& u) const;
@@ -60,7 +82,9 @@ class StabilityMonitor : public Observer {
   History displacement_, velocity_;
   Vector previous_, beforePrevious_;
   long observations_ = 0;
+  long quietObservations_ = 0;  // observations at or after quietAfter
   Real lastRatio_ = 0;
+  std::string growthMessage_;
 };
 
 }  // namespace mfwave

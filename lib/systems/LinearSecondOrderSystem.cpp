@@ -1,6 +1,7 @@
 #include "systems/LinearSecondOrderSystem.hpp"
 
 #include "core/Error.hpp"
+#include "solvers/FactorisedMatrix.hpp"
 
 #include <string>
 
@@ -30,7 +31,8 @@ LinearSecondOrderSystem::LinearSecondOrderSystem(SparseMatrix mass, SparseMatrix
   adoptDamping(damping);
   mass_.makeCompressed();
   stiffness_.makeCompressed();
-  if (isDiagonal(mass_)) {
+  diagonalMass_ = isDiagonal(mass_);
+  if (diagonalMass_) {
     Vector diagonal = mass_.diagonal();
     if ((diagonal.array() > 0).all()) inverseMassDiagonal_ = diagonal.cwiseInverse();
   }
@@ -55,12 +57,22 @@ void LinearSecondOrderSystem::force(Real t, Vector& f) const {
 
 void LinearSecondOrderSystem::acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v,
                                            Eigen::Ref<Vector> a) {
-  if (inverseMassDiagonal_.size() == 0)
-    throw InputError("mass", "explicit integration needs a diagonal (lumped) mass matrix with positive entries");
+  if (diagonalMass_ && inverseMassDiagonal_.size() == 0)
+    throw InputError("mass", "explicit integration needs a lumped mass matrix with positive entries");
+  if (!diagonalMass_ && !massSolver_) {
+    auto solver = std::make_shared<FactorisedMatrix>();
+    solver->factorise(mass_, "the consistent mass matrix M (explicit integration solves M a = f - C v - K u)");
+    massSolver_ = std::move(solver);
+  }
   force(t, work_);
   subtractStiffnessProduct(u, work_);
   if (hasDamping()) work_.noalias() -= damping_ * v;
-  a.noalias() = inverseMassDiagonal_.cwiseProduct(work_);
+  if (diagonalMass_) {
+    a.noalias() = inverseMassDiagonal_.cwiseProduct(work_);
+  } else {
+    massSolver_->solve(work_, massSolution_);
+    a = massSolution_;
+  }
 }
 
 Real LinearSecondOrderSystem::kineticEnergy(const Vector& v) const { return 0.5 * v.dot(mass_ * v); }

@@ -1,13 +1,19 @@
 #pragma once
 // The linear case M u'' + C u' + K u = f(t), with sparse M, C, K assembled once (linear
 // elastodynamics on fixed particles, collocation). Implicit integrators (Newmark) use the matrices;
-// explicit ones use acceleration(), which needs M diagonal (lumped).
+// explicit ones use acceleration(): with a diagonal (lumped) M by reciprocals, with a consistent M
+// by a sparse LU of M factorised on the first call (solvers/FactorisedMatrix), which is what lets
+// explicit integrators run a consistent-mass operator (the stability atlas confirms the limits of
+// RK and RB collocation that way).
 
 #include "systems/SecondOrderSystem.hpp"
 
 #include <functional>
+#include <memory>
 
 namespace mfwave {
+
+class FactorisedMatrix;
 
 class LinearSecondOrderSystem : public SecondOrderSystem {
  public:
@@ -21,7 +27,8 @@ class LinearSecondOrderSystem : public SecondOrderSystem {
   Index size() const override { return stiffness_.rows(); }
   bool dependsOnVelocity() const override { return damping_.nonZeros() > 0; }
 
-  // a = M^{-1} (f(t) - C v - K u). Requires a diagonal mass matrix (throws InputError otherwise).
+  // a = M^{-1} (f(t) - C v - K u). Throws InputError("mass") for a diagonal M with an entry <= 0,
+  // mfwave::Error for a singular consistent M.
   void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v,
                     Eigen::Ref<Vector> a) override;
 
@@ -53,6 +60,10 @@ class LinearSecondOrderSystem : public SecondOrderSystem {
   Eigen::SparseMatrix<Real, Eigen::RowMajor, int> stiffnessRows_;  // for explicit steps; built on first use
   ForceFunction force_;
   Vector inverseMassDiagonal_;  // empty when M is not diagonal
+  bool diagonalMass_ = false;
+  // M's LU when it is not diagonal, made on the first acceleration(); shared by copies of the system.
+  std::shared_ptr<const FactorisedMatrix> massSolver_;
+  Vector massSolution_;
   Vector work_;
 };
 

@@ -118,3 +118,76 @@ TEST(StabilityMonitor, RejectsMeaninglessOptions) {
   options.growthFactor = 0.5;
   EXPECT_THROW(StabilityMonitor{options}, InputError);
 }
+
+namespace {
+
+// A mode u = e^{s t}, v = s e^{s t} (omega^2 = -s^2 < 0), sampled every dt: smooth, never grid-scale.
+ScriptedIntegrator slowlyGrowingMode(Real s, Real dt) {
+  return ScriptedIntegrator(Vector::Constant(2, 1.0), Vector::Constant(2, s), dt,
+                            [s, dt](long step, Vector& u, Vector& v) {
+                              u.setConstant(std::exp(s * dt * static_cast<Real>(step)));
+                              v = s * u;
+                            });
+}
+
+}  // namespace
+
+TEST(StabilityMonitor, SlowGrowthAfterTheLoadsEndedIsStopped) {
+  // s = 0.01 per unit time, dt = 0.1: a thousandth per step, r ~ 1e-6. While loads act (before
+  // quietAfter = 100, step 1000) it is left alone; the quiet reference is the largest amplitude up
+  // to the 50th observation from then (step 1049, e^{1.049}), and the run stops at the first step
+  // with e^{0.001 k} > 1e3 e^{1.049}: k > 1049 + 1000 ln 1000 = 7956.8, step 7957.
+  ScriptedIntegrator integrator = slowlyGrowingMode(0.01, 0.1);
+  StabilityMonitorOptions options;
+  options.quietAfter = 100;
+  StabilityMonitor monitor(options);
+  TimeLoop loop;
+  loop.add(monitor);
+  try {
+    loop.run(integrator, 2000.0);
+    FAIL() << "slow growth after the loads was not caught";
+  } catch (const InstabilityError& e) {
+    EXPECT_NE(std::string(e.what()).find("growth after the loads ended"), std::string::npos) << e.what();
+    EXPECT_EQ(e.step(), 7957);
+  }
+  // Without an end of the loads the same run is left to the absolute limit (and ends normally).
+  ScriptedIntegrator forced = slowlyGrowingMode(0.01, 0.1);
+  StabilityMonitor watching;
+  TimeLoop second;
+  second.add(watching);
+  EXPECT_NO_THROW(second.run(forced, 2000.0));
+}
+
+TEST(StabilityMonitor, FreeMotionAfterTheLoadsIsNotGrowth) {
+  // Free vibration, quiet from t = 0, 10^6 steps per period, so that the quiet reference is taken
+  // while one field is still near zero. Set moving (u = sin t, v = cos t): u grows 3000-fold
+  // against its reference (sin(50 dt)), v does not. Released from a displacement (u = cos t, v = -sin t): the
+  // other way round. A body translating at v0 (u = v0 t): u grows without bound, v is constant.
+  const Real dt = 2 * M_PI / 1e6;
+  const auto run = [dt](ScriptedIntegrator integrator, Real endTime) {
+    StabilityMonitorOptions options;
+    options.quietAfter = 0;
+    StabilityMonitor monitor(options);
+    TimeLoop loop;
+    loop.add(monitor);
+    EXPECT_NO_THROW(loop.run(integrator, endTime));
+  };
+  run(ScriptedIntegrator(Vector::Zero(1), Vector::Ones(1), dt,
+                         [dt](long k, Vector& u, Vector& v) {
+                           u[0] = std::sin(dt * static_cast<Real>(k));
+                           v[0] = std::cos(dt * static_cast<Real>(k));
+                         }),
+      2 * M_PI);
+  run(ScriptedIntegrator(Vector::Ones(1), Vector::Zero(1), dt,
+                         [dt](long k, Vector& u, Vector& v) {
+                           u[0] = std::cos(dt * static_cast<Real>(k));
+                           v[0] = -std::sin(dt * static_cast<Real>(k));
+                         }),
+      2 * M_PI);
+  run(ScriptedIntegrator(Vector::Zero(1), Vector::Constant(1, 2.0), dt,
+                         [dt](long k, Vector& u, Vector& v) {
+                           u[0] = 2 * dt * static_cast<Real>(k);
+                           v[0] = 2;
+                         }),
+      2 * M_PI);
+}

@@ -180,4 +180,17 @@ TEST(Bar1dStudy, UnstableStepsAndOperatorsAreRefusedBeforeStepping) {
     previous = rate;
   }
   EXPECT_NEAR(previous, 6.25, 0.1);
+  // Run on purpose (stability.allow_growth) at 41 nodes, the stability monitor sees the slow
+  // growth after the impact (no load acts from t = 0): displacement and velocity both 1000 times
+  // their largest values over the first 50 steps (t = 1.25) by t = 1.25 + ln(1000) / 6.25 = 2.35,
+  // and the summary says so.
+  const Bar1dRun allowed = runBar1d("--set 'study.nodes=[41]' --set stability.allow_growth=true", "rb-allowed", scene);
+  ASSERT_EQ(allowed.exitCode, 0) << allowed.log;
+  std::ifstream summary(std::filesystem::temp_directory_path() / "mfwave-study-bar1d-rb-allowed" / "summary.json");
+  const std::string json((std::istreambuf_iterator<char>(summary)), {});
+  const auto at = json.find("growth after the loads ended");
+  ASSERT_NE(at, std::string::npos) << json;
+  const auto time = json.rfind("t = ", at);
+  ASSERT_NE(time, std::string::npos) << json;
+  EXPECT_NEAR(std::stod(json.substr(time + 4)), 2.35, 0.1) << json;
 }

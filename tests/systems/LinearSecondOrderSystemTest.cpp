@@ -60,15 +60,39 @@ TEST(LinearSecondOrderSystem, LoadsAttachedLaterDriveTheAcceleration) {
   EXPECT_DOUBLE_EQ(a[1], 1);
 }
 
-TEST(LinearSecondOrderSystem, ConsistentMassIsRejectedForExplicitUse) {
+TEST(LinearSecondOrderSystem, ConsistentMassIsSolvedForExplicitUse) {
+  // M = [[2, 1], [1, 2]], K = I, f = 0, u = (1, 2): M a = -u gives a = (0, -1).
   SparseMatrix m(2, 2);
   m.insert(0, 0) = 2;
   m.insert(0, 1) = 1;
   m.insert(1, 0) = 1;
   m.insert(1, 1) = 2;
   LinearSecondOrderSystem system(m, SparseMatrix(), diagonal({1, 1}));
-  Vector u = Vector::Zero(2), v = Vector::Zero(2), a;
-  EXPECT_THROW(system.acceleration(0, u, v, a), InputError);
+  Vector u(2), v = Vector::Zero(2), a(2);
+  u << 1, 2;
+  system.acceleration(0, u, v, a);
+  EXPECT_NEAR(a[0], 0.0, 1e-15);
+  EXPECT_NEAR(a[1], -1.0, 1e-15);
+  // A copy shares the factorisation and gives the same.
+  LinearSecondOrderSystem copy = system;
+  Vector b(2);
+  copy.acceleration(0, u, v, b);
+  EXPECT_EQ(a, b);
+}
+
+TEST(LinearSecondOrderSystem, AMassThatCannotBeInvertedIsRefusedOnFirstExplicitUse) {
+  // A lumped mass with a zero entry: bad input naming the mass.
+  LinearSecondOrderSystem lumped(diagonal({1, 0}), SparseMatrix(), diagonal({1, 1}));
+  Vector u = Vector::Zero(2), v = Vector::Zero(2), a(2);
+  EXPECT_THROW(lumped.acceleration(0, u, v, a), InputError);
+  // A singular consistent mass: the factorisation says so.
+  SparseMatrix m(2, 2);
+  m.insert(0, 0) = 1;
+  m.insert(0, 1) = 1;
+  m.insert(1, 0) = 1;
+  m.insert(1, 1) = 1;
+  LinearSecondOrderSystem singular(m, SparseMatrix(), diagonal({1, 1}));
+  EXPECT_THROW(singular.acceleration(0, u, v, a), Error);
 }
 
 TEST(LinearSecondOrderSystem, MismatchedSizesNameTheMatrix) {

@@ -169,7 +169,7 @@ SceneSchema SceneSchema::common() {
 
   s.add("stability", T::Table).describedAs("stops a run that blows up");
   s.add("stability.growth_factor", T::Number).withUnit("-").defaultsTo("1000.0").above(1)
-      .describedAs("stop when the largest displacement or velocity grows by this factor within `window` observations");
+      .describedAs("stop at growth by this factor: of a grid-scale oscillation within `window` observations, or, after every load ended, of both displacement and velocity");
   s.add("stability.window", T::Integer).withUnit("-").defaultsTo("50").atLeast(1)
       .describedAs("observations over which growth is measured");
   s.add("stability.absolute_limit", T::Number).withUnit("m, m/s").defaultsTo("inf").positive().allowInfinity()
@@ -179,7 +179,7 @@ SceneSchema SceneSchema::common() {
   s.add("stability.energy_balance_limit", T::Number).withUnit("-").defaultsTo("1.0").nonNegative()
       .describedAs("linear systems: stop when the energy balance moves by this multiple of the largest energy (0: off)");
   s.add("stability.allow_growth", T::Boolean).defaultsTo("false")
-      .describedAs("run on through energy growth (to show a blow-up on purpose); the summary reports it");
+      .describedAs("run on through growth after the loads (the energy's or the monitor's) to show a blow-up on purpose; the summary reports it");
   return s;
 }
 

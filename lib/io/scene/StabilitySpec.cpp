@@ -13,4 +13,12 @@ StabilitySpec readStability(SceneReader& reader) {
   return s;
 }
 
+void noteAllowedGrowth(std::vector<std::string>& notes, const std::string& where,
+                       const std::vector<std::string>& messages) {
+  for (const std::string& message : messages)
+    if (!message.empty())
+      notes.push_back((where.empty() ? "" : where + ": ") + "stability.allow_growth let the run go on through: " +
+                      message);
+}
+
 }  // namespace mfwave

@@ -116,7 +116,7 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
   const long steps = scene.integrator.stepsFor(criticalDt);
   const long every = std::max<long>(1, steps / study.errorSamples);
   ErrorSampler sampler(system, *shapes, exact, errorPoints, every);
-  StabilityMonitor monitor(scene.stability.options(1));
+  StabilityMonitor monitor(scene.stability.options(1, 0));
   TimeLoop loop;
   loop.add(monitor);
   loop.add(sampler, every);
@@ -131,6 +131,7 @@ CaseResult runCase(const Study& study, int nodeCount, const std::string& folder,
   result.errorV = std::sqrt(e.v / e.vNorm);
   result.maxErrorU = sampler.maxRelativeU();
   if (!note.empty()) result.notes.push_back(note);
+  noteAllowedGrowth(result.notes, "", {monitor.growthMessage()});
   CaseRecord& record = result.record;
   record.name = std::to_string(nodeCount) + " nodes";
   record.particles = nodeCount;

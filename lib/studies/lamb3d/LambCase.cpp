@@ -107,7 +107,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   VeryWeakSphProbes recorder(probes, D, problem.deconvolution());
   record.setupSeconds = assemblyClock.seconds();
 
-  StabilityMonitor monitor(scene.stability.options(D));
+  StabilityMonitor monitor(scene.stability.options(D, ledgerOptions.quietAfter));
   ProgressReporter reporter(scene.integrator.endTime, particles.physicalCount(), progress);
   ParticleFrames<D> frames(particles, folder, settings.name, frameSettings<D>(scene.output, settings.writeFrames));
   TimeLoop loop;
@@ -131,8 +131,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   result.energyFinalFraction = ledger.finalEnergyFraction();
   result.energyBalanceDrift = ledger.largestBalanceDrift();
   result.energyGrowth = ledger.growthMessage();
-  if (!result.energyGrowth.empty())
-    result.notes.push_back(settings.name + ": stability.allow_growth let the run go on through: " + result.energyGrowth);
+  noteAllowedGrowth(result.notes, settings.name, {result.energyGrowth, monitor.growthMessage()});
   if (scene.output.energy) {
     ledger.series().writeCsv(folder + "/" + energyFile);
     result.files.push_back(energyFile);

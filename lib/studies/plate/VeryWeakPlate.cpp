@@ -87,7 +87,7 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
   // The guards of every linear run: the monitor (non-finite values, grid-scale growth) and the
   // energy ledger, which stops any growth of the free vibration (no loads: quiet from t = 0; the
   // clamp's reactions do no work, the filter only takes energy) with exit 3.
-  StabilityMonitor monitor(scene.stability.options(D));
+  StabilityMonitor monitor(scene.stability.options(D, 0));
   LinearEnergyLedgerOptions ledgerOptions;
   ledgerOptions.quietAfter = 0;
   ledgerOptions.growthFactor = scene.stability.energyGrowthFactor;
@@ -107,9 +107,7 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
   result.record.setupSeconds = setupClock.seconds();
 
   const RunStatistics stats = loop.run(*integrator, settings.endTime);
-  if (!ledger.growthMessage().empty())
-    result.notes.push_back(settings.name + ": stability.allow_growth let the run go on through: " +
-                           ledger.growthMessage());
+  noteAllowedGrowth(result.notes, settings.name, {ledger.growthMessage(), monitor.growthMessage()});
   result.recordLoop(stats);
   result.record.timeStep = dt;
   // 1/2 v^T M v + 1/2 u^T K u: the consistent rows make K slightly non-symmetric, so this is the

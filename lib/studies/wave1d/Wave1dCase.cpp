@@ -49,7 +49,7 @@ CaseResult runCase(const Study& study, const std::string& integratorName, int ce
   integrator->initialise(system, 0, u0, v0, dt);
 
   // observers
-  StabilityMonitor monitor(scene.stability.options(1));
+  StabilityMonitor monitor(scene.stability.options(1, 0));
   EnergyObserver energy(EnergyObserver::ofLinearSystem(system));
   const Index quarter = line.size() / 4;
   ProbeRecorder probes({{"quarter", quarter, 0, ProbeQuantity::Displacement}}, 1);
@@ -78,6 +78,7 @@ CaseResult runCase(const Study& study, const std::string& integratorName, int ce
   record.name = integratorName + ", " + std::to_string(cellCount) + " cells";
   record.particles = cellCount + 1;
   result.recordLoop(stats);
+  noteAllowedGrowth(result.notes, record.name, {monitor.growthMessage()});
   record.timeStep = dt;
   record.stableTimeStep = criticalDt;
   record.simulatedTime = scene.integrator.endTime;

@@ -116,7 +116,7 @@ void expectFullScene(const Scene& s) {
   EXPECT_EQ(s.stability.window, 100);
   EXPECT_DOUBLE_EQ(s.stability.growthFactor, 1e3);
   EXPECT_TRUE(std::isinf(s.stability.absoluteLimit));
-  EXPECT_EQ(s.stability.options(3).components, 3);
+  EXPECT_EQ(s.stability.options(3, 0).components, 3);
 }
 
 TEST(SceneReader, FullSceneParsesIntoTypedValues) {
