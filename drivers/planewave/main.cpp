@@ -40,7 +40,7 @@ SceneSchema planeWaveSchema() {
       "dimension of the periodic box");
   schema.add("study.method", ValueType::String).defaultsTo("\"vwsph_consistent\"")
       .oneOf({"finite_difference", "vwsph_published", "vwsph_consistent", "rkcm"})
-      .describedAs("method (rkcm has a consistent mass: newmark only)");
+      .describedAs("method (rkcm has a consistent mass, which explicit integrators solve every step)");
   schema.add("study.cells", ValueType::Integer).withUnit("-").defaultsTo("32").atLeast(8).describedAs(
       "lattice nodes per axis (even); dx = 1 / cells, the box is the unit cube");
   schema.add("study.wavelengths", ValueType::Integer).withUnit("-").defaultsTo("2").atLeast(1).describedAs(

@@ -17,16 +17,20 @@ SparseMatrix diagonal(const std::vector<Real>& d) {
   return m;
 }
 
+SparseMatrix twoByTwo(Real a00, Real a01, Real a10, Real a11) {
+  SparseMatrix m(2, 2);
+  m.insert(0, 0) = a00;
+  m.insert(0, 1) = a01;
+  m.insert(1, 0) = a10;
+  m.insert(1, 1) = a11;
+  return m;
+}
+
 }  // namespace
 
 TEST(LinearSecondOrderSystem, AccelerationIsInverseMassTimesResidual) {
   // Two masses on springs: M = diag(2, 4), K = [[3, -1], [-1, 2]], C = diag(0.5, 0), f = (t, 1).
-  SparseMatrix k(2, 2);
-  k.insert(0, 0) = 3;
-  k.insert(0, 1) = -1;
-  k.insert(1, 0) = -1;
-  k.insert(1, 1) = 2;
-  LinearSecondOrderSystem system(diagonal({2, 4}), diagonal({0.5, 0}), k, [](Real t, Vector& f) {
+  LinearSecondOrderSystem system(diagonal({2, 4}), diagonal({0.5, 0}), twoByTwo(3, -1, -1, 2), [](Real t, Vector& f) {
     f[0] = t;
     f[1] = 1;
   });
@@ -62,12 +66,7 @@ TEST(LinearSecondOrderSystem, LoadsAttachedLaterDriveTheAcceleration) {
 
 TEST(LinearSecondOrderSystem, ConsistentMassIsSolvedForExplicitUse) {
   // M = [[2, 1], [1, 2]], K = I, f = 0, u = (1, 2): M a = -u gives a = (0, -1).
-  SparseMatrix m(2, 2);
-  m.insert(0, 0) = 2;
-  m.insert(0, 1) = 1;
-  m.insert(1, 0) = 1;
-  m.insert(1, 1) = 2;
-  LinearSecondOrderSystem system(m, SparseMatrix(), diagonal({1, 1}));
+  LinearSecondOrderSystem system(twoByTwo(2, 1, 1, 2), SparseMatrix(), diagonal({1, 1}));
   Vector u(2), v = Vector::Zero(2), a(2);
   u << 1, 2;
   system.acceleration(0, u, v, a);
@@ -86,12 +85,7 @@ TEST(LinearSecondOrderSystem, AMassThatCannotBeInvertedIsRefusedOnFirstExplicitU
   Vector u = Vector::Zero(2), v = Vector::Zero(2), a(2);
   EXPECT_THROW(lumped.acceleration(0, u, v, a), InputError);
   // A singular consistent mass: the factorisation says so.
-  SparseMatrix m(2, 2);
-  m.insert(0, 0) = 1;
-  m.insert(0, 1) = 1;
-  m.insert(1, 0) = 1;
-  m.insert(1, 1) = 1;
-  LinearSecondOrderSystem singular(m, SparseMatrix(), diagonal({1, 1}));
+  LinearSecondOrderSystem singular(twoByTwo(1, 1, 1, 1), SparseMatrix(), diagonal({1, 1}));
   EXPECT_THROW(singular.acceleration(0, u, v, a), Error);
 }
 

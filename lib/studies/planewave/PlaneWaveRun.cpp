@@ -27,8 +27,6 @@ Outcome run(const Settings& s) {
   const int c = op.components();
   if (c == 1 && s.shear) throw InputError("study.polarisation", "the scalar finite difference has no S wave");
   if (D == 1 && s.shear) throw InputError("study.polarisation", "there is no S wave in 1-D");
-  if (!op.lumped() && integratorKind(s.integrator) != IntegratorKind::Newmark)
-    throw InputError("integrator.name", "rkcm has a consistent mass; only newmark integrates it here");
 
   const auto extremes = DispersionSpectrum<D>(op).extremes();
   // omega^2 < 0 anywhere on the lattice grows at any step: stop before any work, as an instability
