@@ -352,14 +352,8 @@ void study(const Settings& s, Outputs& out) {
         continue;
       }
       const Real omegaMax = std::sqrt(verdict.largestOmegaSquared);
-      // Lumped: M = I. Consistent (RK, RB collocation): the explicit integrators solve with the
-      // periodic collocation mass every step (LinearSecondOrderSystem's LU of M).
-      SparseMatrix mass(op.size(), op.size());
-      if (op.lumped())
-        mass.setIdentity();
-      else
-        mass = periodicMatrix(op.mass, 1.0, lattice);
-      LinearSecondOrderSystem system(mass, SparseMatrix(), -periodicMatrix(op.acceleration, 1.0, lattice));
+      // Consistent mass (RK, RB collocation): the explicit integrators solve with it every step.
+      LinearSecondOrderSystem system = periodicLatticeSystem(op);
       for (const std::string& integrator : s.confirmIntegrators) {
         const IntegratorLimit limit = integratorLimit(integrator);
         for (Real fraction : s.fractions) {

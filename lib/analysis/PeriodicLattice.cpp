@@ -111,11 +111,22 @@ SparseMatrix periodicMatrix(const LatticeStencil<D>& stencil, Real spacing, int 
   return matrix;
 }
 
+template <int D>
+LinearSecondOrderSystem periodicLatticeSystem(const PeriodicLatticeOperator<D>& op) {
+  SparseMatrix mass(op.size(), op.size());
+  if (op.lumped())
+    mass.setIdentity();
+  else
+    mass = periodicMatrix(op.mass, op.spacing, op.cells);
+  return LinearSecondOrderSystem(mass, SparseMatrix(), -periodicMatrix(op.acceleration, op.spacing, op.cells));
+}
+
 #define MFWAVE_PERIODIC_LATTICE(D)                                                                              \
   template struct PeriodicLatticeOperator<D>;                                                                   \
   template PeriodicLatticeOperator<D> makePeriodicLatticeOperator<D>(LatticeStencil<D>, Real, int, LatticeStencil<D>); \
   template std::vector<std::array<int, D>> latticeSteps<D>(const LatticeStencil<D>&, Real);                     \
   template SparseMatrix periodicMatrix<D>(const LatticeStencil<D>&, Real, int);                                 \
+  template LinearSecondOrderSystem periodicLatticeSystem<D>(const PeriodicLatticeOperator<D>&);                 \
   template Index periodicNode<D>(const std::array<int, D>&, int);                                               \
   template std::array<int, D> latticeCoordinates<D>(Index, int);                                                \
   template int stencilReach<D>(const LatticeStencil<D>&, Real);

@@ -11,6 +11,7 @@
 // numbered node * components + component, nodes x-fastest: node = i_0 + N (i_1 + N i_2).
 
 #include "analysis/LatticeDispersion.hpp"
+#include "systems/LinearSecondOrderSystem.hpp"
 
 #include <array>
 
@@ -44,6 +45,11 @@ std::vector<std::array<int, D>> latticeSteps(const LatticeStencil<D>& stencil, R
 // The stencil assembled on the periodic lattice: a size() x size() sparse matrix (A or M).
 template <int D>
 SparseMatrix periodicMatrix(const LatticeStencil<D>& stencil, Real spacing, int cells);
+
+// M u'' = A u as the system the integrators step: mass M (the identity for a lumped method; a
+// consistent one is solved every explicit step), no damping, stiffness K = -A.
+template <int D>
+LinearSecondOrderSystem periodicLatticeSystem(const PeriodicLatticeOperator<D>& op);
 
 // Node index of lattice coordinates (each taken modulo N), and the coordinates in [0, N) of a node:
 // the numbering of every lattice array here, the FFT grids included (x fastest).

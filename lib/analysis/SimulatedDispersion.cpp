@@ -120,9 +120,7 @@ SimulatedDispersionResult simulateDispersion(const PeriodicLatticeOperator<D>& o
 
   // M u'' + K u = 0 with M = I, K = -A.
   const Index n = op.size();
-  SparseMatrix identity(n, n);
-  identity.setIdentity();
-  LinearSecondOrderSystem system(identity, SparseMatrix(), -periodicMatrix(op.acceleration, op.spacing, op.cells));
+  LinearSecondOrderSystem system = periodicLatticeSystem(op);
   Vector u0 = Vector::Zero(n), v0 = Vector::Zero(n);
   for (int q = 0; q < c; ++q) u0(q) = std::pow(0.5, q);
   std::unique_ptr<SecondOrderIntegrator> integrator = makeSecondOrderIntegrator(options.integrator);

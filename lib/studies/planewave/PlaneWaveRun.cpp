@@ -94,11 +94,8 @@ Outcome run(const Settings& s) {
     }
     return values;
   };
-  SparseMatrix mass(op.size(), op.size());
-  if (op.lumped())
-    mass.setIdentity();
-  else
-    mass = periodicMatrix(op.mass, dx, s.cells);
+  LinearSecondOrderSystem system = periodicLatticeSystem(op);
+  const SparseMatrix& mass = system.mass();
   Vector u0 = nodal(0, false), v0 = nodal(0, true);
   if (!op.lumped()) {
     Eigen::SparseLU<SparseMatrix> lu(mass);
@@ -106,7 +103,6 @@ Outcome run(const Settings& s) {
     u0 = lu.solve(u0);
     v0 = lu.solve(v0);
   }
-  LinearSecondOrderSystem system(mass, SparseMatrix(), -periodicMatrix(op.acceleration, dx, s.cells));
   auto integrator = makeSecondOrderIntegrator(s.integrator);
   integrator->initialise(system, 0, u0, v0, record.timeStep);
   record.setupSeconds = clock.seconds();
