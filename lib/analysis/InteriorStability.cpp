@@ -28,11 +28,30 @@ std::string InteriorStability<D>::describe() const {
   return s.str();
 }
 
+namespace {
+
+template <int D>
+int largestReach(const LatticeStencil<D>& acceleration, const LatticeStencil<D>& mass, Real spacing) {
+  return std::max(stencilReach(acceleration, spacing), mass.size() > 0 ? stencilReach(mass, spacing) : 0);
+}
+
+int evenAtLeast(int cells) {
+  if (cells < 4) throw InputError("cells", "the periodic lattice needs at least 4 cells per axis");
+  return cells % 2 ? cells + 1 : cells;  // the periodic operator wants an even lattice
+}
+
+}  // namespace
+
+template <int D>
+int smallestPeriodicLatticeCells(const LatticeStencil<D>& acceleration, const LatticeStencil<D>& mass, Real spacing,
+                                 int atLeast) {
+  return std::max(evenAtLeast(atLeast), 2 * (largestReach(acceleration, mass, spacing) + 1));
+}
+
 template <int D>
 int periodicLatticeCells(const LatticeStencil<D>& acceleration, const LatticeStencil<D>& mass, Real spacing, int cells) {
-  if (cells < 4) throw InputError("cells", "the periodic lattice needs at least 4 cells per axis");
-  if (cells % 2) ++cells;  // the periodic operator wants an even lattice
-  const int reach = std::max(stencilReach(acceleration, spacing), mass.size() > 0 ? stencilReach(mass, spacing) : 0);
+  cells = evenAtLeast(cells);
+  const int reach = largestReach(acceleration, mass, spacing);
   while (2 * reach >= cells) cells *= 2;
   return cells;
 }
@@ -62,6 +81,7 @@ template struct InteriorStability<2>;
 template struct InteriorStability<3>;
 #define MFWAVE_INSTANTIATE(D)                                                                                    \
   template int periodicLatticeCells<D>(const LatticeStencil<D>&, const LatticeStencil<D>&, Real, int);          \
+  template int smallestPeriodicLatticeCells<D>(const LatticeStencil<D>&, const LatticeStencil<D>&, Real, int);  \
   template InteriorStability<D> interiorStability<D>(const DispersionSpectrum<D>&, Real, int);                   \
   template InteriorStability<D> interiorStability<D>(const LatticeStencil<D>&, const LatticeStencil<D>&, Real, int);
 MFWAVE_INSTANTIATE(1)

@@ -34,6 +34,13 @@ struct InteriorStability {
 template <int D>
 int periodicLatticeCells(const LatticeStencil<D>& acceleration, const LatticeStencil<D>& mass, Real spacing, int cells);
 
+// The smallest even number of cells per axis, at least `atLeast`, in which the stencils reach less
+// than half: the cheapest periodic lattice on which runs of the operator are faithful (the
+// stability atlas's confirmations). Throws InputError("cells") for atLeast < 4.
+template <int D>
+int smallestPeriodicLatticeCells(const LatticeStencil<D>& acceleration, const LatticeStencil<D>& mass, Real spacing,
+                                 int atLeast);
+
 // The verdict from a spectrum already taken (spacing: the lattice's, to report k dx).
 template <int D>
 InteriorStability<D> interiorStability(const DispersionSpectrum<D>& spectrum, Real spacing, int cells);

@@ -124,6 +124,26 @@ struct CloudRows {
   RowMatrix acceleration, mass;
 };
 
+// What the spectrum needs from a method on the cloud: the operator folded onto the tile (M^-1 A
+// of the periodic cloud, M empty: lumped identity) and the tile rows of A u - M a for the
+// quadratic field (u, a) given over the cloud's physical particles.
+struct CloudOperator {
+  Eigen::MatrixXd acceleration, mass;
+  Vector quadraticResidual;
+};
+
+template <int D>
+CloudOperator foldedOperator(const CloudRows& rows, const std::vector<Index>& base, Index sites, const Vector& u,
+                             const Vector& a) {
+  CloudOperator out;
+  out.acceleration = fold<D>(rows.acceleration, base, sites);
+  const bool lumped = rows.mass.nonZeros() == 0;
+  if (!lumped) out.mass = fold<D>(rows.mass, base, sites);
+  out.quadraticResidual = lumped ? Vector(rows.acceleration * u - a.head(sites * D))
+                                 : Vector(rows.acceleration * u - rows.mass * a);
+  return out;
+}
+
 template <int D>
 CloudRows veryWeakSphRows(const std::string& method, const LatticeMethodSettings& s, const ParticleSet<D>& cloud,
                              Index rows) {
@@ -160,17 +180,33 @@ CloudRows collocationRows(const LatticeMethodSettings& s, const ParticleSet<D>& 
   return out;
 }
 
+// The updated-Lagrangian SPH linearised about rest has no matrix: its folded column for site s and
+// component q is the response of the tile rows to s and all its copies moving together along q (a
+// periodic velocity field), one rate evaluation per tile unknown instead of one per unknown of the
+// whole cloud (RestModes.hpp); the quadratic field is one more direction.
 template <int D>
-CloudRows updatedLagrangianRows(const std::string& method, const LatticeMethodSettings& s,
-                                   const ParticleSet<D>& cloud, Index sites) {
+CloudOperator updatedLagrangianOperator(const std::string& method, const LatticeMethodSettings& s,
+                                        const ParticleSet<D>& cloud, const std::vector<Index>& base, Index sites,
+                                        const Vector& u, const Vector& a) {
   UpdatedLagrangianSph<D> system(cloud, linearisedAboutRest(updatedLagrangianSphSettings(method, s)));
   const Vector rest = system.initialState(Vector());
+  const Index physical = cloud.physicalCount();
   std::vector<Index> velocities, rows;
-  for (Index i = 0; i < cloud.physicalCount(); ++i)
-    for (int a = 0; a < D; ++a) velocities.push_back(system.layout().velocity(i, a));
+  for (Index i = 0; i < physical; ++i)
+    for (int q = 0; q < D; ++q) velocities.push_back(system.layout().velocity(i, q));
   for (Index r = 0; r < sites * D; ++r) rows.push_back(r);
-  CloudRows out;
-  out.acceleration = restOperatorRows(system, 0, rest, velocities, rows).sparseView();
+  std::vector<Eigen::Triplet<Real>> entries;
+  for (Index i = 0; i < physical; ++i)
+    for (int q = 0; q < D; ++q) {
+      entries.emplace_back(static_cast<int>(i * D + q), static_cast<int>(base[static_cast<std::size_t>(i)] * D + q), 1.0);
+      if (u(i * D + q) != 0) entries.emplace_back(static_cast<int>(i * D + q), static_cast<int>(sites * D), u(i * D + q));
+    }
+  SparseMatrix directions(static_cast<int>(physical * D), static_cast<int>(sites * D + 1));
+  directions.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::MatrixXd products = restOperatorProducts(system, 0, rest, velocities, directions, rows);
+  CloudOperator out;
+  out.acceleration = products.leftCols(sites * D);
+  out.quadraticResidual = products.col(sites * D) - a.head(sites * D);
   return out;
 }
 
@@ -277,28 +313,25 @@ JitteredCloudReport jitteredCloudSpectrum(const std::string& method, const Latti
     const TiledCloud<D> tiled = tiledCloud<D>(cells, jitter, seed, reach + 1, veryWeak ? reach / 2 + 1 : 0, veryWeak);
     const ParticleSet<D>& cloud = tiled.particles;
     report.closestPair = closestPair<D>(cloud, sites);
-    const CloudRows rows = method == "rkcm" ? collocationRows<D>(settings, cloud, sites)
-                              : veryWeak       ? veryWeakSphRows<D>(method, settings, cloud, sites * D)
-                                               : updatedLagrangianRows<D>(method, settings, cloud, sites);
-
     // Consistency: the quadratic field u = x^2 / 2 e_x (about the tile's centre) has the exact
     // acceleration c_p^2 e_x everywhere.
     const Real cp2 = settings.material.pWaveSpeed() * settings.material.pWaveSpeed();
-    const Index columns = rows.acceleration.cols() / D;
+    const Index columns = cloud.physicalCount();
     Vector u = Vector::Zero(columns * D), a = Vector::Zero(columns * D);
     for (Index i = 0; i < columns; ++i) {
       const Real x = cloud.position(i)(0) - 0.5 * (cells - 1);
       u(i * D) = 0.5 * x * x;
       a(i * D) = cp2;
     }
-    const Vector residual = rows.mass.nonZeros() > 0 ? Vector(rows.acceleration * u - rows.mass * a)
-                                                     : Vector(rows.acceleration * u - a.head(sites * D));
-    report.quadraticResidual = residual.cwiseAbs().maxCoeff() / cp2;
+    const CloudOperator op =
+        method == "rkcm" ? foldedOperator<D>(collocationRows<D>(settings, cloud, sites), tiled.base, sites, u, a)
+        : veryWeak ? foldedOperator<D>(veryWeakSphRows<D>(method, settings, cloud, sites * D), tiled.base, sites, u, a)
+                   : updatedLagrangianOperator<D>(method, settings, cloud, tiled.base, sites, u, a);
+    report.quadraticResidual = op.quadraticResidual.cwiseAbs().maxCoeff() / cp2;
 
     // The spectrum of the periodic cloud: M^-1 A folded, lambda = -omega^2.
-    Eigen::MatrixXd A = fold<D>(rows.acceleration, tiled.base, sites);
-    if (rows.mass.nonZeros() > 0)
-      A = Eigen::PartialPivLU<Eigen::MatrixXd>(fold<D>(rows.mass, tiled.base, sites)).solve(A);
+    Eigen::MatrixXd A = op.acceleration;
+    if (op.mass.size() > 0) A = Eigen::PartialPivLU<Eigen::MatrixXd>(op.mass).solve(A);
     const GeneralEigenpairs eigen = generalEigenpairs(A, true, "jittered cloud spectrum");
     const Eigen::VectorXcd& lambda = eigen.values;
     const Real largest = lambda.cwiseAbs().maxCoeff();

@@ -19,13 +19,18 @@ Eigen::MatrixXd restOperator(SplitFirstOrderSystem& system, Real t, const Vector
 
 namespace {
 
-// Column k of A (all m entries, A_{rk} for the velocity entries r) for each k in `columns`: dQ/dv
-// e_k exactly (Q being linear in v at rest), then dP_v/dq times it by a central difference of step
-// eps dq. `use(k, column)` receives each.
-template <typename Use>
-void restOperatorColumnsEach(SplitFirstOrderSystem& system, Real t, const Vector& restState,
-                             const std::vector<Index>& velocityEntries, const std::vector<Index>& columns,
-                             Real relativePerturbation, const Use& use) {
+void requireRows(const std::vector<Index>& rows, Index m) {
+  for (Index r : rows)
+    if (r < 0 || r >= m) throw InputError("rows", "row " + std::to_string(r) + " is not in [0, " + std::to_string(m) + ")");
+}
+
+// A d for each direction d (m entries each): dQ/dv d exactly (Q being linear in v at rest), then
+// dP_v/dq times it by a central difference of step eps dq. `perturb(j, y)` adds direction j to the
+// velocity entries of y; `use(j, product)` receives A d_j (all m entries).
+template <typename Perturb, typename Use>
+void restOperatorProductsEach(SplitFirstOrderSystem& system, Real t, const Vector& restState,
+                              const std::vector<Index>& velocityEntries, Index directions,
+                              Real relativePerturbation, const Perturb& perturb, const Use& use) {
   const Index n = system.size();
   const Index nq = system.configurationSize();
   if (restState.size() != n)
@@ -34,23 +39,20 @@ void restOperatorColumnsEach(SplitFirstOrderSystem& system, Real t, const Vector
     if (k < nq || k >= n) throw InputError("velocityEntries", "entry " + std::to_string(k) + " is not in p");
   if (!(relativePerturbation > 0)) throw InputError("relativePerturbation", "must be positive");
   const auto m = static_cast<Index>(velocityEntries.size());
-  for (Index k : columns)
-    if (k < 0 || k >= m)
-      throw InputError("columns", "column " + std::to_string(k) + " is not in [0, " + std::to_string(m) + ")");
   const Real scale = std::max<Real>(1, restState.head(nq).cwiseAbs().maxCoeff());
 
-  Vector qdotRest(nq), qdot(nq), pPlus(n - nq), pMinus(n - nq), column(m);
+  Vector qdotRest(nq), qdot(nq), pPlus(n - nq), pMinus(n - nq), product(m);
   system.configurationRate(t, restState, qdotRest);
   Vector y = restState;
-  for (Index k : columns) {
+  for (Index j = 0; j < directions; ++j) {
     y = restState;
-    y[velocityEntries[static_cast<std::size_t>(k)]] += 1;
+    perturb(j, y);
     system.configurationRate(t, y, qdot);
     const Vector dq = qdot - qdotRest;
     const Real size = dq.cwiseAbs().maxCoeff();
     if (size == 0) {
-      column.setZero();
-      use(k, column);
+      product.setZero();
+      use(j, product);
       continue;
     }
     const Real eps = relativePerturbation * scale / size;
@@ -61,10 +63,25 @@ void restOperatorColumnsEach(SplitFirstOrderSystem& system, Real t, const Vector
     system.momentumRate(t, y, pMinus);
     for (Index r = 0; r < m; ++r) {
       const Index entry = velocityEntries[static_cast<std::size_t>(r)] - nq;
-      column[r] = (pPlus[entry] - pMinus[entry]) / (2 * eps);
+      product[r] = (pPlus[entry] - pMinus[entry]) / (2 * eps);
     }
-    use(k, column);
+    use(j, product);
   }
+}
+
+// Column k of A for each k in `columns` (unit directions).
+template <typename Use>
+void restOperatorColumnsEach(SplitFirstOrderSystem& system, Real t, const Vector& restState,
+                             const std::vector<Index>& velocityEntries, const std::vector<Index>& columns,
+                             Real relativePerturbation, const Use& use) {
+  const auto m = static_cast<Index>(velocityEntries.size());
+  for (Index k : columns)
+    if (k < 0 || k >= m)
+      throw InputError("columns", "column " + std::to_string(k) + " is not in [0, " + std::to_string(m) + ")");
+  restOperatorProductsEach(
+      system, t, restState, velocityEntries, static_cast<Index>(columns.size()), relativePerturbation,
+      [&](Index j, Vector& y) { y[velocityEntries[static_cast<std::size_t>(columns[static_cast<std::size_t>(j)])]] += 1; },
+      [&](Index j, const Vector& column) { use(columns[static_cast<std::size_t>(j)], column); });
 }
 
 }  // namespace
@@ -73,8 +90,7 @@ Eigen::MatrixXd restOperatorRows(SplitFirstOrderSystem& system, Real t, const Ve
                                  const std::vector<Index>& velocityEntries, const std::vector<Index>& rows,
                                  Real relativePerturbation) {
   const auto m = static_cast<Index>(velocityEntries.size());
-  for (Index r : rows)
-    if (r < 0 || r >= m) throw InputError("rows", "row " + std::to_string(r) + " is not in [0, " + std::to_string(m) + ")");
+  requireRows(rows, m);
   std::vector<Index> all(static_cast<std::size_t>(m));
   for (Index k = 0; k < m; ++k) all[static_cast<std::size_t>(k)] = k;
   Eigen::MatrixXd A(static_cast<Index>(rows.size()), m);
@@ -92,6 +108,27 @@ Eigen::MatrixXd restOperatorColumns(SplitFirstOrderSystem& system, Real t, const
   Index j = 0;
   restOperatorColumnsEach(system, t, restState, velocityEntries, columns, relativePerturbation,
                           [&](Index, const Vector& column) { A.col(j++) = column; });
+  return A;
+}
+
+Eigen::MatrixXd restOperatorProducts(SplitFirstOrderSystem& system, Real t, const Vector& restState,
+                                     const std::vector<Index>& velocityEntries, const SparseMatrix& directions,
+                                     const std::vector<Index>& rows, Real relativePerturbation) {
+  const auto m = static_cast<Index>(velocityEntries.size());
+  if (directions.rows() != m)
+    throw InputError("directions", "has " + std::to_string(directions.rows()) + " rows, one per velocity entry (" +
+                                       std::to_string(m) + ") needed");
+  requireRows(rows, m);
+  Eigen::MatrixXd A(static_cast<Index>(rows.size()), directions.cols());
+  restOperatorProductsEach(
+      system, t, restState, velocityEntries, directions.cols(), relativePerturbation,
+      [&](Index j, Vector& y) {
+        for (SparseMatrix::InnerIterator it(directions, static_cast<int>(j)); it; ++it)
+          y[velocityEntries[static_cast<std::size_t>(it.row())]] += it.value();
+      },
+      [&](Index j, const Vector& product) {
+        for (std::size_t r = 0; r < rows.size(); ++r) A(static_cast<Index>(r), j) = product[rows[r]];
+      });
   return A;
 }
 

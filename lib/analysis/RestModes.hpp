@@ -37,6 +37,16 @@ Eigen::MatrixXd restOperatorColumns(SplitFirstOrderSystem& system, Real t, const
                                     const std::vector<Index>& velocityEntries, const std::vector<Index>& columns,
                                     Real relativePerturbation = 1e-7);
 
+// A times chosen directions, read at chosen rows: entry (r, j) is (A d_j)[rows[r]] for the columns
+// d_j of `directions` (m x k, sparse). One rate evaluation per direction, whatever its support: a
+// direction that moves a periodic site and all its copies together gives the folded (periodic)
+// operator's column at once (JitteredCloud.cpp), and a smooth field gives A u without the matrix.
+// The central difference in q is taken along the whole direction, so A d_j is exact to the same
+// order as a single column. Throws InputError("directions") or ("rows").
+Eigen::MatrixXd restOperatorProducts(SplitFirstOrderSystem& system, Real t, const Vector& restState,
+                                     const std::vector<Index>& velocityEntries, const SparseMatrix& directions,
+                                     const std::vector<Index>& rows, Real relativePerturbation = 1e-7);
+
 struct RestModes {
   std::vector<Real> frequencies;  // omega = sqrt(-Re lambda) of the eigenvalues with Re lambda < 0, ascending
   Real largestGrowthRate = 0;     // max over eigenvalues of sqrt(Re lambda) (Re > 0) and of the flutter

@@ -30,4 +30,14 @@ std::vector<std::string> secondOrderIntegratorNames();
 std::unique_ptr<SecondOrderIntegrator> makeSecondOrderIntegrator(const std::string& name,
                                                                  const IntegratorOptions& options = {});
 
+// An integrator named in one word, as the stability atlas's confirmations list them:
+// "central_difference", "leapfrog", "newmark" (average acceleration), "newmark:<beta>" with gamma =
+// 1/2 and beta a number or linear_acceleration (1/6) or fox_goodwin (1/12), "arkode:<table>" (fixed
+// step). Gives the factory name and its options; InputError("integrator") for a bad spec.
+struct NamedIntegrator {
+  std::string name;
+  IntegratorOptions options;
+};
+NamedIntegrator namedIntegrator(const std::string& spec);
+
 }  // namespace mfwave

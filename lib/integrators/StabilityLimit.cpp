@@ -44,6 +44,12 @@ Real rungeKuttaImaginaryLimit(const ButcherCoefficients& table, Real tolerance, 
 }
 
 IntegratorLimit integratorLimit(const std::string& integrator, Real beta, Real gamma) {
+  if (integrator.rfind("newmark:", 0) == 0) {
+    const NamedIntegrator spec = namedIntegrator(integrator);
+    IntegratorLimit out = integratorLimit("newmark", spec.options.newmarkBeta, spec.options.newmarkGamma);
+    out.integrator = integrator;
+    return out;
+  }
   IntegratorLimit out;
   out.integrator = integrator;
   const Real infinity = std::numeric_limits<Real>::infinity();
@@ -80,7 +86,7 @@ IntegratorLimit integratorLimit(const std::string& integrator, Real beta, Real g
     return out;
   }
   throw InputError("integrator", "unknown integrator '" + integrator +
-                                     "'; valid: central_difference, leapfrog, newmark, arkode:<table>");
+                                     "'; valid: central_difference, leapfrog, newmark, newmark:<beta>, arkode:<table>");
 }
 
 IntegratorLimit integratorLimit(const std::string& name, const IntegratorOptions& options) {
@@ -137,7 +143,8 @@ StepVerdict judgeStep(const std::string& name, const IntegratorOptions& options,
 
 std::vector<IntegratorLimit> integratorLimits() {
   std::vector<IntegratorLimit> all = {integratorLimit("central_difference"), integratorLimit("leapfrog"),
-                                      integratorLimit("newmark")};
+                                      integratorLimit("newmark"), integratorLimit("newmark:linear_acceleration"),
+                                      integratorLimit("newmark:fox_goodwin")};
   for (const std::string& table : ArkodeExplicit::tableNames()) all.push_back(integratorLimit("arkode:" + table));
   return all;
 }

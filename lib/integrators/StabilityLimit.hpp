@@ -35,7 +35,7 @@ Real rungeKuttaAmplification(const ButcherCoefficients& table, Real y);
 Real rungeKuttaImaginaryLimit(const ButcherCoefficients& table, Real tolerance = 1e-12, Real yMax = 10);
 
 struct IntegratorLimit {
-  std::string integrator;  // "central_difference", "leapfrog", "newmark", "arkode:<table>"
+  std::string integrator;  // "central_difference", "leapfrog", "newmark", "newmark:<beta>", "arkode:<table>"
   // Stable for omega_max dt <= omegaDtLimit: infinity for an unconditionally stable integrator,
   // near 0 for one under which undamped modes grow at practically every step.
   Real omegaDtLimit = 0;
@@ -44,9 +44,10 @@ struct IntegratorLimit {
   std::string note;
 };
 
-// The limit of one integrator: "central_difference", "leapfrog", "newmark" (with beta, gamma) or
-// "arkode:<table>". Throws InputError("integrator") for another name, and what
-// ArkodeExplicit::coefficients throws for an unknown table.
+// The limit of one integrator: "central_difference", "leapfrog", "newmark" (with beta, gamma),
+// "newmark:<beta>" (namedIntegrator: gamma 1/2, the arguments unused) or "arkode:<table>". Throws
+// InputError("integrator") for another name, and what ArkodeExplicit::coefficients throws for an
+// unknown table.
 IntegratorLimit integratorLimit(const std::string& integrator, Real newmarkBeta = 0.25, Real newmarkGamma = 0.5);
 
 // The limit of a second-order integrator as a driver builds it (makeSecondOrderIntegrator): "newmark"

@@ -23,6 +23,20 @@ TEST(InteriorStability, FiniteDifferencesAreStableWithTheClosedFormLargestFreque
   EXPECT_EQ(periodicLatticeCells<2>(fd.acceleration, fd.mass, 0.5, 5), 6);  // rounded up to even
 }
 
+TEST(InteriorStability, LatticeSizesKeepTheStencilWithinHalfThePeriod) {
+  // RK collocation at a = 2.5 dx couples nodes 2 spacings away (the mass too): a lattice of 4 would
+  // fold the stencil onto itself. The spectra double it (their k samples nest), the runs take the
+  // smallest even size that fits.
+  const Material material = Material::fromLame(2, 1, 1);
+  const auto rk = collocationInteriorStencil<2>(CollocationBasis::ReproducingKernel, 2, 2.5, material, 1.0);
+  EXPECT_EQ(periodicLatticeCells<2>(rk.acceleration, rk.mass, 1.0, 4), 8);
+  EXPECT_EQ(smallestPeriodicLatticeCells<2>(rk.acceleration, rk.mass, 1.0, 4), 6);
+  EXPECT_EQ(smallestPeriodicLatticeCells<2>(rk.acceleration, rk.mass, 1.0, 9), 10);
+  const MethodLatticeStencil<2> fd = finiteDifferenceInteriorStencil<2>(1.0, 1.0);
+  EXPECT_EQ(smallestPeriodicLatticeCells<2>(fd.acceleration, fd.mass, 1.0, 4), 4);
+  EXPECT_THROW(smallestPeriodicLatticeCells<2>(fd.acceleration, fd.mass, 1.0, 3), InputError);
+}
+
 TEST(InteriorStability, RkCollocationGrowsAtThreeSupportsAndNotAtTwoAndAHalf) {
   const Material material = Material::fromLame(2, 1, 1);
   const auto stable = collocationInteriorStencil<2>(CollocationBasis::ReproducingKernel, 2, 2.5, material, 1.0);

@@ -57,11 +57,12 @@ TEST(JitteredCloud, CorrectedRowsStayQuadraticallyExactOnIrregularClouds) {
   LatticeMethodSettings linear = s;
   linear.rkOrder = 1;
   EXPECT_GT(jitteredCloudSpectrum<2>("rkcm", linear, 12, 0.25, 2).quadraticResidual, 0.01);
-  // The updated-Lagrangian SPH is exact for quadratics on the lattice at h = dx and loses it when
-  // the particles move: an O(1) error in the second derivative.
+  // The updated-Lagrangian SPH is exact for quadratics on the lattice at h = dx (to the noise of
+  // the central difference that applies it, about 2e-9 of c_p^2) and loses it when the particles
+  // move: an O(1) error in the second derivative.
   LatticeMethodSettings ul = s;
   ul.smoothingLengthRatio = 1.0;
-  EXPECT_LT(jitteredCloudSpectrum<1>("ulsph", ul, 32, 0.0, 1).quadraticResidual, 1e-9);
+  EXPECT_LT(jitteredCloudSpectrum<1>("ulsph", ul, 32, 0.0, 1).quadraticResidual, 1e-8);
   EXPECT_GT(jitteredCloudSpectrum<1>("ulsph", ul, 32, 0.1, 1).quadraticResidual, 1);
 }
 

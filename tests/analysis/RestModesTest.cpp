@@ -110,6 +110,32 @@ TEST(RestModes, DivergentAndFlutterModesShowAsGrowth) {
   EXPECT_NEAR(modes.frequencies[1], 4, 1e-12);
 }
 
+TEST(RestModes, ProductsAlongDirectionsAreSumsOfColumns) {
+  // A d for a direction moving several masses at once (as a periodic site and its copies move in
+  // the jittered clouds) equals the same combination of A's columns, read at any rows.
+  SpringChain chain({1.0, 2.0, 0.5, 1.5, 1.0, 3.0}, {4.0, 1.0, 2.5, 3.0, 0.7, 2.0});
+  std::vector<Index> velocities;
+  for (Index j = 0; j < chain.count(); ++j) velocities.push_back(chain.count() + j);
+  const Vector rest = Vector::Zero(chain.size());
+  const Eigen::MatrixXd A = restOperator(chain, 0, rest, velocities);
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(6, 3);
+  dense(0, 0) = dense(3, 0) = 1;                      // masses 0 and 3 together
+  dense(2, 1) = 1;                                    // one column
+  for (Index j = 0; j < 6; ++j) dense(j, 2) = 0.5 * static_cast<Real>(j * j);  // a smooth field
+  const SparseMatrix directions = dense.sparseView();
+  const std::vector<Index> rows = {5, 1, 2};
+  const Eigen::MatrixXd products = restOperatorProducts(chain, 0, rest, velocities, directions, rows);
+  ASSERT_EQ(products.rows(), 3);
+  ASSERT_EQ(products.cols(), 3);
+  const Eigen::MatrixXd expected = A * dense;
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    for (Index j = 0; j < 3; ++j)
+      EXPECT_NEAR(products(static_cast<Index>(r), j), expected(rows[r], j), 1e-6 * (1 + std::abs(expected(rows[r], j))))
+          << r << ", " << j;
+  EXPECT_THROW(restOperatorProducts(chain, 0, rest, velocities, SparseMatrix(5, 1), rows), InputError);
+  EXPECT_THROW(restOperatorProducts(chain, 0, rest, velocities, directions, {6}), InputError);
+}
+
 TEST(RestModes, BadArgumentsAreRejected) {
   SpringChain chain({1.0, 1.0}, {1.0, 1.0});
   const Vector rest = Vector::Zero(chain.size());

@@ -23,6 +23,28 @@ TEST(IntegratorFactory, EveryNameConstructsAWorkingIntegrator) {
   EXPECT_EQ(secondOrderIntegratorNames().size(), 4u);
 }
 
+TEST(IntegratorFactory, SpecsInOneWordGiveNameAndOptions) {
+  EXPECT_EQ(namedIntegrator("leapfrog").name, "leapfrog");
+  const NamedIntegrator rk = namedIntegrator("arkode:classic_rk4");
+  EXPECT_EQ(rk.name, "arkode");
+  EXPECT_EQ(rk.options.arkode.table, "classic_rk4");
+  EXPECT_DOUBLE_EQ(namedIntegrator("newmark:fox_goodwin").options.newmarkBeta, 1.0 / 12);
+  EXPECT_DOUBLE_EQ(namedIntegrator("newmark:linear_acceleration").options.newmarkBeta, 1.0 / 6);
+  const NamedIntegrator newmark = namedIntegrator("newmark:0.05");
+  EXPECT_EQ(newmark.name, "newmark");
+  EXPECT_DOUBLE_EQ(newmark.options.newmarkBeta, 0.05);
+  EXPECT_DOUBLE_EQ(newmark.options.newmarkGamma, 0.5);
+  EXPECT_DOUBLE_EQ(namedIntegrator("newmark").options.newmarkBeta, 0.25);
+  for (const char* bad : {"euler", "newmark:", "newmark:0.1x", "newmark:-0.1", "arkode:nope", "leapfrog:1"}) {
+    try {
+      namedIntegrator(bad);
+      ADD_FAILURE() << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.key().rfind("integrator", 0), 0u) << bad << ": " << e.key();  // or integrator.table
+    }
+  }
+}
+
 TEST(IntegratorFactory, PassesOptionsThrough) {
   IntegratorOptions options;
   options.newmarkBeta = 0.7;

@@ -72,14 +72,22 @@ TEST(StabilityLimit, CentralDifferenceAndNewmarkLimits) {
   EXPECT_DOUBLE_EQ(integratorLimit("newmark", 0, 0.5).omegaDtLimit, 2);             // central difference
   EXPECT_DOUBLE_EQ(integratorLimit("newmark", 1.0 / 12, 0.5).omegaDtLimit, std::sqrt(6.0));  // Fox-Goodwin
   EXPECT_EQ(integratorLimit("newmark", 0.25, 0.4).omegaDtLimit, 0);
+  // Named in one word, as the stability atlas confirms them.
+  EXPECT_DOUBLE_EQ(integratorLimit("newmark:fox_goodwin").omegaDtLimit, std::sqrt(6.0));
+  EXPECT_DOUBLE_EQ(integratorLimit("newmark:linear_acceleration").omegaDtLimit, 2 * std::sqrt(3.0));
+  EXPECT_DOUBLE_EQ(integratorLimit("newmark:0.1").omegaDtLimit, 1 / std::sqrt(0.15));
+  EXPECT_EQ(integratorLimit("newmark:0.1").integrator, "newmark:0.1");
+  EXPECT_EQ(integratorLimit("newmark:0.25").omegaDtLimit, std::numeric_limits<double>::infinity());
 }
 
 TEST(StabilityLimit, EveryOfferedIntegratorHasALimitAndUnknownNamesAreRefused) {
   const auto all = integratorLimits();
-  EXPECT_EQ(all.size(), 3 + ArkodeExplicit::tableNames().size());
+  EXPECT_EQ(all.size(), 5 + ArkodeExplicit::tableNames().size());  // Newmark: 1/4, 1/6, 1/12
   for (const auto& limit : all) EXPECT_GE(limit.omegaDtLimit, 0) << limit.integrator;
   EXPECT_THROW(integratorLimit("euler"), InputError);
   EXPECT_THROW(integratorLimit("arkode:no_such_table"), InputError);
+  EXPECT_THROW(integratorLimit("newmark:0.6"), InputError);
+  EXPECT_THROW(integratorLimit("newmark:fast"), InputError);
 }
 
 TEST(StabilityLimit, TheGrowthPerStepTurnsAboveOneExactlyAtTheLimit) {

@@ -73,9 +73,10 @@ TEST(StabilityAtlasStudy, EveryMethodIn1dIsConfirmedAtBothSidesOfItsLimit) {
                            "1d");
   ASSERT_TRUE(outcome.exited);
   ASSERT_EQ(outcome.exitCode, 0) << outcome.log;
-  // Central difference and classic RK4 at 0.98 and 1.02 of each method's exact limit on its small
-  // periodic lattice (the collocation methods with their consistent mass, solved every step):
-  // bounded for 10^4 steps below, stopped by the monitor above.
+  // Central difference, classic RK4 and Newmark with beta = 1/12 (limit sqrt 6 / omega_max) at 0.98
+  // and 1.02 of each method's exact limit on its small periodic lattice (the collocation methods
+  // with their consistent mass, solved every step): bounded for 10^4 steps below, stopped by the
+  // monitor above.
   const auto confirmations = table(out / "confirmations.csv");
   int checked = 0;
   for (const Row& r : confirmations) {
@@ -90,8 +91,13 @@ TEST(StabilityAtlasStudy, EveryMethodIn1dIsConfirmedAtBothSidesOfItsLimit) {
     }
   }
   // finite difference, three very weak SPH variants, RK and RB collocation, two UL-SPH: 8 methods x
-  // 2 integrators x 2 fractions.
-  EXPECT_EQ(checked, 32);
+  // 3 integrators x 2 fractions.
+  EXPECT_EQ(checked, 48);
+  const Row& newmark = find(confirmations, {{"method", "finite_difference"}, {"integrator", "newmark:fox_goodwin"},
+                                            {"fraction", "0.98"}});
+  const Row& cd = find(confirmations, {{"method", "finite_difference"}, {"integrator", "central_difference"},
+                                       {"fraction", "0.98"}});
+  EXPECT_NEAR(std::stod(newmark.at("dt")) / std::stod(cd.at("dt")), std::sqrt(6.0) / 2, 1e-6);
   const auto atlas = table(out / "atlas.csv");
   // The finite-difference limit is c dt / dx = 1 exactly; ppw for 1 %: 2 pi / kdx with
   // sinc(kdx / 2) = 0.99, kdx = 0.4903, 12.81 points.
@@ -127,6 +133,25 @@ TEST(StabilityAtlasStudy, EveryMethodIn1dIsConfirmedAtBothSidesOfItsLimit) {
                 "fails", 0),
             0u);
   EXPECT_TRUE(fs::exists(out / "summary.json"));
+}
+
+TEST(StabilityAtlasStudy, ImplicitConfirmationsOnTooDenseOperatorsAreNotRunAndSaySo) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-atlas-implicit";
+  fs::remove_all(out);
+  const auto outcome = run("--out " + out.string() +
+                               " --set 'study.dimensions=[1]' --set 'study.methods=[\"finite_difference\"]'"
+                               " --set 'study.poisson_ratios=[0.25]' --set jitter.enabled=false"
+                               " --set confirm.implicit_max_nonzeros=10",
+                           "implicit");
+  ASSERT_TRUE(outcome.exited);
+  ASSERT_EQ(outcome.exitCode, 0) << outcome.log;
+  const auto confirmations = table(out / "confirmations.csv");
+  // The 8-node periodic lattice's Laplacian has 24 nonzeros: Newmark is not run, the explicit two are.
+  const Row& newmark = find(confirmations, {{"integrator", "newmark:fox_goodwin"}});
+  EXPECT_EQ(newmark.at("outcome"), "not run: an implicit step on an operator of 24 nonzeros "
+                                   "(confirm.implicit_max_nonzeros)");
+  EXPECT_EQ(confirmations.size(), 5u);
+  EXPECT_EQ(find(confirmations, {{"integrator", "central_difference"}, {"fraction", "1.02"}}).at("outcome"), "stopped");
 }
 
 TEST(StabilityAtlasStudy, RkCollocationGrowsAtWideSupportsIn2dAnd3d) {
