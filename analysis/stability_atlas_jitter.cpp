@@ -24,7 +24,7 @@ void addJitterAtlasKeys(SceneSchema& schema) {
       .describedAs("cloud dimensions");
   schema.add("jitter.ulsph_dimensions", T::NumberArray).withUnit("-").defaultsTo("[1.0, 2.0, 3.0]").between(1, 3)
       .describedAs("dimensions of the updated-Lagrangian SPH (three right-hand sides per unknown of the tile; "
-                   "3-D: 4 s a cloud at h = dx, 12 s at 1.3 dx)");
+                   "3-D: 4 to 18 s a cloud, 4.5 minutes in all)");
   schema.add("jitter.fractions", T::NumberArray).withUnit("dx").defaultsTo("[0.0, 0.1, 0.25]").between(0, 0.45)
       .describedAs("largest random offset per axis, as a fraction of the spacing (0: the lattice, a check)");
   schema.add("jitter.seeds", T::Integer).withUnit("-").defaultsTo("3").between(1, 100).describedAs(

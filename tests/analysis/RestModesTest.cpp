@@ -69,14 +69,18 @@ class SpringChain : public SplitFirstOrderSystem {
   std::vector<Real> m_, k_;
 };
 
+// The entries of y that are the chain's velocities.
+std::vector<Index> velocityEntries(const SpringChain& chain) {
+  std::vector<Index> velocities;
+  for (Index j = 0; j < chain.count(); ++j) velocities.push_back(chain.count() + j);
+  return velocities;
+}
+
 }  // namespace
 
 TEST(RestModes, SpringChainFrequenciesMatchTheSymmetricEigenproblem) {
   SpringChain chain({1.0, 2.0, 0.5, 1.5, 1.0, 3.0}, {4.0, 1.0, 2.5, 3.0, 0.7, 2.0});
-  std::vector<Index> velocities;
-  for (Index j = 0; j < chain.count(); ++j) velocities.push_back(chain.count() + j);
-  const Vector rest = Vector::Zero(chain.size());
-  const Eigen::MatrixXd A = restOperator(chain, 0, rest, velocities);
+  const Eigen::MatrixXd A = restOperator(chain, 0, Vector::Zero(chain.size()), velocityEntries(chain));
   // A = -M^-1 D^T K D, entry by entry (the chain's coupling of v_2 to v_1's acceleration: k_2 / m_1).
   EXPECT_NEAR(A(0, 0), -(4.0 + 1.0) / 1.0, 1e-7);
   EXPECT_NEAR(A(0, 1), 1.0 / 1.0, 1e-7);
@@ -114,8 +118,7 @@ TEST(RestModes, ProductsAlongDirectionsAreSumsOfColumns) {
   // A d for a direction moving several masses at once (as a periodic site and its copies move in
   // the jittered clouds) equals the same combination of A's columns, read at any rows.
   SpringChain chain({1.0, 2.0, 0.5, 1.5, 1.0, 3.0}, {4.0, 1.0, 2.5, 3.0, 0.7, 2.0});
-  std::vector<Index> velocities;
-  for (Index j = 0; j < chain.count(); ++j) velocities.push_back(chain.count() + j);
+  const std::vector<Index> velocities = velocityEntries(chain);
   const Vector rest = Vector::Zero(chain.size());
   const Eigen::MatrixXd A = restOperator(chain, 0, rest, velocities);
   Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(6, 3);

@@ -59,20 +59,25 @@ const Row& find(const std::vector<Row>& rows, const std::map<std::string, std::s
   throw std::runtime_error("no row matches");
 }
 
+// Runs the atlas into a fresh `out` with `settings`; true when it exited 0 (else the log is shown).
+bool ranCleanly(const fs::path& out, const std::string& settings, const std::string& name) {
+  fs::remove_all(out);
+  const auto outcome = run("--out " + out.string() + settings, name);
+  EXPECT_TRUE(outcome.exited && outcome.exitCode == 0) << outcome.log;
+  return outcome.exited && outcome.exitCode == 0;
+}
+
 }  // namespace
 
 TEST(StabilityAtlasStudy, EveryMethodIn1dIsConfirmedAtBothSidesOfItsLimit) {
   const fs::path out = fs::temp_directory_path() / "mfwave-atlas-1d";
-  fs::remove_all(out);
-  const auto outcome = run("--out " + out.string() +
-                               " --set 'study.dimensions=[1]' --set 'study.kernels=[\"cubic_spline\", \"gaussian\"]'"
-                               " --set 'study.smoothing_length_ratios=[1.3, 3.0]' --set 'study.ulsph_kernels=[\"cubic_spline\"]'"
-                               " --set 'study.ulsph_smoothing_length_ratios=[1.3]' --set 'study.rk_orders=[2]'"
-                               " --set 'study.rk_support_ratios=[2.5]' --set 'study.rb_shape_ratios=[3.0]'"
-                               " --set 'study.poisson_ratios=[0.25]' --set 'jitter.dimensions=[1]'",
-                           "1d");
-  ASSERT_TRUE(outcome.exited);
-  ASSERT_EQ(outcome.exitCode, 0) << outcome.log;
+  ASSERT_TRUE(ranCleanly(out,
+                         " --set 'study.dimensions=[1]' --set 'study.kernels=[\"cubic_spline\", \"gaussian\"]'"
+                         " --set 'study.smoothing_length_ratios=[1.3, 3.0]' --set 'study.ulsph_kernels=[\"cubic_spline\"]'"
+                         " --set 'study.ulsph_smoothing_length_ratios=[1.3]' --set 'study.rk_orders=[2]'"
+                         " --set 'study.rk_support_ratios=[2.5]' --set 'study.rb_shape_ratios=[3.0]'"
+                         " --set 'study.poisson_ratios=[0.25]' --set 'jitter.dimensions=[1]'",
+                         "1d"));
   // Central difference, classic RK4 and Newmark with beta = 1/12 (limit sqrt 6 / omega_max) at 0.98
   // and 1.02 of each method's exact limit on its small periodic lattice (the collocation methods
   // with their consistent mass, solved every step): bounded for 10^4 steps below, stopped by the
@@ -137,14 +142,11 @@ TEST(StabilityAtlasStudy, EveryMethodIn1dIsConfirmedAtBothSidesOfItsLimit) {
 
 TEST(StabilityAtlasStudy, ImplicitConfirmationsOnTooDenseOperatorsAreNotRunAndSaySo) {
   const fs::path out = fs::temp_directory_path() / "mfwave-atlas-implicit";
-  fs::remove_all(out);
-  const auto outcome = run("--out " + out.string() +
-                               " --set 'study.dimensions=[1]' --set 'study.methods=[\"finite_difference\"]'"
-                               " --set 'study.poisson_ratios=[0.25]' --set jitter.enabled=false"
-                               " --set confirm.implicit_max_nonzeros=10",
-                           "implicit");
-  ASSERT_TRUE(outcome.exited);
-  ASSERT_EQ(outcome.exitCode, 0) << outcome.log;
+  ASSERT_TRUE(ranCleanly(out,
+                         " --set 'study.dimensions=[1]' --set 'study.methods=[\"finite_difference\"]'"
+                         " --set 'study.poisson_ratios=[0.25]' --set jitter.enabled=false"
+                         " --set confirm.implicit_max_nonzeros=10",
+                         "implicit"));
   const auto confirmations = table(out / "confirmations.csv");
   // The 8-node periodic lattice's Laplacian has 24 nonzeros: Newmark is not run, the explicit two are.
   const Row& newmark = find(confirmations, {{"integrator", "newmark:fox_goodwin"}});
@@ -156,15 +158,12 @@ TEST(StabilityAtlasStudy, ImplicitConfirmationsOnTooDenseOperatorsAreNotRunAndSa
 
 TEST(StabilityAtlasStudy, RkCollocationGrowsAtWideSupportsIn2dAnd3d) {
   const fs::path out = fs::temp_directory_path() / "mfwave-atlas-rk";
-  fs::remove_all(out);
-  const auto outcome = run("--out " + out.string() +
-                               " --set 'study.dimensions=[2, 3]' --set 'study.methods=[\"rkcm\"]'"
-                               " --set 'study.rk_orders=[2]' --set 'study.rk_support_ratios=[2.2, 2.5, 3.0]'"
-                               " --set 'study.poisson_ratios=[0.25]' --set confirm.enabled=false"
-                               " --set jitter.enabled=false",
-                           "rk");
-  ASSERT_TRUE(outcome.exited);
-  ASSERT_EQ(outcome.exitCode, 0) << outcome.log;
+  ASSERT_TRUE(ranCleanly(out,
+                         " --set 'study.dimensions=[2, 3]' --set 'study.methods=[\"rkcm\"]'"
+                         " --set 'study.rk_orders=[2]' --set 'study.rk_support_ratios=[2.2, 2.5, 3.0]'"
+                         " --set 'study.poisson_ratios=[0.25]' --set confirm.enabled=false"
+                         " --set jitter.enabled=false",
+                         "rk"));
   const auto atlas = table(out / "atlas.csv");
   EXPECT_EQ(find(atlas, {{"dimension", "2"}, {"value", "2.5"}}).at("status"), "ok");
   EXPECT_EQ(find(atlas, {{"dimension", "2"}, {"value", "3"}}).at("status"), "growing");
