@@ -55,8 +55,7 @@ void LinearSecondOrderSystem::force(Real t, Vector& f) const {
   if (force_) force_(t, f);
 }
 
-void LinearSecondOrderSystem::acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v,
-                                           Eigen::Ref<Vector> a) {
+void LinearSecondOrderSystem::prepareMassSolve() {
   if (diagonalMass_ && inverseMassDiagonal_.size() == 0)
     throw InputError("mass", "explicit integration needs a lumped mass matrix with positive entries");
   if (!diagonalMass_ && !massSolver_) {
@@ -64,6 +63,18 @@ void LinearSecondOrderSystem::acceleration(Real t, Eigen::Ref<const Vector> u, E
     solver->factorise(mass_, "the consistent mass matrix M (explicit integration solves M a = f - C v - K u)");
     massSolver_ = std::move(solver);
   }
+}
+
+Vector LinearSecondOrderSystem::solveMass(const Vector& b) {
+  if (b.size() != size()) throw InputError("mass", "solveMass: the vector has " + std::to_string(b.size()) +
+                                                       " entries, the system " + std::to_string(size()));
+  prepareMassSolve();
+  return diagonalMass_ ? Vector(inverseMassDiagonal_.cwiseProduct(b)) : massSolver_->solve(b);
+}
+
+void LinearSecondOrderSystem::acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v,
+                                           Eigen::Ref<Vector> a) {
+  prepareMassSolve();
   force(t, work_);
   subtractStiffnessProduct(u, work_);
   if (hasDamping()) work_.noalias() -= damping_ * v;

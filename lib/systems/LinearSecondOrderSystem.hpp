@@ -32,6 +32,10 @@ class LinearSecondOrderSystem : public SecondOrderSystem {
   void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v,
                     Eigen::Ref<Vector> a) override;
 
+  // M^{-1} b, with the factorisation acceleration() solves with (made on the first call of either):
+  // for instance the collocation coefficients of nodal values. Same errors as acceleration().
+  Vector solveMass(const Vector& b);
+
   const SparseMatrix& mass() const { return mass_; }
   const SparseMatrix& damping() const { return damping_; }  // 0 x 0 when undamped
   const SparseMatrix& stiffness() const { return stiffness_; }
@@ -49,6 +53,8 @@ class LinearSecondOrderSystem : public SecondOrderSystem {
   Real strainEnergy(const Vector& u) const;
 
  private:
+  // Checks a lumped M, or factorises a consistent one on first use.
+  void prepareMassSolve();
   // Takes the storage of `damping` (left empty) after checking its size.
   void adoptDamping(SparseMatrix& damping);
   // out -= K u, OpenMP-parallel over rows of a row-major copy of K (bitwise thread-independent).

@@ -77,6 +77,12 @@ TEST(LinearSecondOrderSystem, ConsistentMassIsSolvedForExplicitUse) {
   Vector b(2);
   copy.acceleration(0, u, v, b);
   EXPECT_EQ(a, b);
+  // solveMass uses the same factorisation: M^-1 (-u) is that acceleration, bitwise.
+  EXPECT_EQ(system.solveMass(-u), a);
+  // Lumped: entry-wise.
+  LinearSecondOrderSystem lumped(diagonal({2, 4}), SparseMatrix(), diagonal({1, 1}));
+  EXPECT_EQ(lumped.solveMass(u), Vector(Eigen::Vector2d(0.5, 0.5)));
+  EXPECT_THROW(lumped.solveMass(Vector::Zero(3)), InputError);
 }
 
 TEST(LinearSecondOrderSystem, AMassThatCannotBeInvertedIsRefusedOnFirstExplicitUse) {
