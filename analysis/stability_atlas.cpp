@@ -259,10 +259,9 @@ struct Confirmation {
 // Runs `integrator` at `fraction` of its predicted limit on the method's small periodic lattice
 // (assembled once per method), from random displacements, watched by the
 // StabilityMonitor.
-Confirmation confirm(LinearSecondOrderSystem& system, int components, const std::string& integrator,
+Confirmation confirm(LinearSecondOrderSystem& system, int components, const NamedIntegrator& integrator,
                      const IntegratorLimit& limit, Real omegaMax, Real fraction, long steps) {
   Confirmation out;
-  const NamedIntegrator spec = namedIntegrator(integrator);
   out.limitDt = limit.omegaDtLimit / omegaMax;
   out.dt = fraction * out.limitDt;
   std::mt19937_64 random(12345);
@@ -270,7 +269,7 @@ Confirmation confirm(LinearSecondOrderSystem& system, int components, const std:
   Vector u0(system.size());
   for (Index i = 0; i < u0.size(); ++i) u0[i] = uniform(random);
   const Real initial = u0.cwiseAbs().maxCoeff();
-  auto stepper = makeSecondOrderIntegrator(spec.name, spec.options);
+  auto stepper = makeSecondOrderIntegrator(integrator.name, integrator.options);
   stepper->initialise(system, 0, u0, Vector::Zero(system.size()), out.dt);
   StabilityMonitorOptions watch;
   watch.components = components;
@@ -356,10 +355,11 @@ void study(const Settings& s, Outputs& out) {
       const Real omegaMax = std::sqrt(verdict.largestOmegaSquared);
       // Consistent mass (RK, RB collocation): the explicit integrators solve with it every step.
       LinearSecondOrderSystem system = periodicLatticeSystem(op);
+      const Index nonzeros = system.stiffness().nonZeros();
       for (const std::string& integrator : s.confirmIntegrators) {
         const IntegratorLimit limit = integratorLimit(integrator);
-        const Index nonzeros = system.stiffness().nonZeros();
-        if (namedIntegrator(integrator).name == "newmark" && nonzeros > s.implicitMaxNonzeros) {
+        const NamedIntegrator spec = namedIntegrator(integrator);
+        if (spec.name == "newmark" && nonzeros > s.implicitMaxNonzeros) {
           out.confirmations << D << ',' << method << ',' << integrator << ',' << lattice
                             << ",-,-,-,\"not run: an implicit step on an operator of " << nonzeros
                             << " nonzeros (confirm.implicit_max_nonzeros)\"\n";
@@ -368,7 +368,7 @@ void study(const Settings& s, Outputs& out) {
           continue;
         }
         for (Real fraction : s.fractions) {
-          const Confirmation c = confirm(system, op.components(), integrator, limit, omegaMax, fraction, s.confirmSteps);
+          const Confirmation c = confirm(system, op.components(), spec, limit, omegaMax, fraction, s.confirmSteps);
           const bool expected = fraction < 1 ? c.outcome == "bounded" : c.outcome == "stopped";
           ++(expected ? out.confirmed : out.contradicted);
           out.confirmations << D << ',' << method << ',' << integrator << ',' << lattice << ',' << fraction << ','

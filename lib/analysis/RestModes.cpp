@@ -24,64 +24,20 @@ void requireRows(const std::vector<Index>& rows, Index m) {
     if (r < 0 || r >= m) throw InputError("rows", "row " + std::to_string(r) + " is not in [0, " + std::to_string(m) + ")");
 }
 
-// A d for each direction d (m entries each): dQ/dv d exactly (Q being linear in v at rest), then
-// dP_v/dq times it by a central difference of step eps dq. `perturb(j, y)` adds direction j to the
-// velocity entries of y; `use(j, product)` receives A d_j (all m entries).
-template <typename Perturb, typename Use>
-void restOperatorProductsEach(SplitFirstOrderSystem& system, Real t, const Vector& restState,
-                              const std::vector<Index>& velocityEntries, Index directions,
-                              Real relativePerturbation, const Perturb& perturb, const Use& use) {
-  const Index n = system.size();
-  const Index nq = system.configurationSize();
-  if (restState.size() != n)
-    throw InputError("state", "has " + std::to_string(restState.size()) + " entries, the system " + std::to_string(n));
-  for (Index k : velocityEntries)
-    if (k < nq || k >= n) throw InputError("velocityEntries", "entry " + std::to_string(k) + " is not in p");
-  if (!(relativePerturbation > 0)) throw InputError("relativePerturbation", "must be positive");
-  const auto m = static_cast<Index>(velocityEntries.size());
-  const Real scale = std::max<Real>(1, restState.head(nq).cwiseAbs().maxCoeff());
-
-  Vector qdotRest(nq), qdot(nq), pPlus(n - nq), pMinus(n - nq), product(m);
-  system.configurationRate(t, restState, qdotRest);
-  Vector y = restState;
-  for (Index j = 0; j < directions; ++j) {
-    y = restState;
-    perturb(j, y);
-    system.configurationRate(t, y, qdot);
-    const Vector dq = qdot - qdotRest;
-    const Real size = dq.cwiseAbs().maxCoeff();
-    if (size == 0) {
-      product.setZero();
-      use(j, product);
-      continue;
-    }
-    const Real eps = relativePerturbation * scale / size;
-    y = restState;
-    y.head(nq) += eps * dq;
-    system.momentumRate(t, y, pPlus);
-    y.head(nq) = restState.head(nq) - eps * dq;
-    system.momentumRate(t, y, pMinus);
-    for (Index r = 0; r < m; ++r) {
-      const Index entry = velocityEntries[static_cast<std::size_t>(r)] - nq;
-      product[r] = (pPlus[entry] - pMinus[entry]) / (2 * eps);
-    }
-    use(j, product);
-  }
+// The unit directions e_k for k in `columns` (m x columns.size()).
+SparseMatrix unitDirections(const std::vector<Index>& columns, Index m) {
+  std::vector<Eigen::Triplet<Real>> ones;
+  for (std::size_t j = 0; j < columns.size(); ++j)
+    ones.emplace_back(static_cast<int>(columns[j]), static_cast<int>(j), 1.0);
+  SparseMatrix directions(static_cast<int>(m), static_cast<int>(columns.size()));
+  directions.setFromTriplets(ones.begin(), ones.end());
+  return directions;
 }
 
-// Column k of A for each k in `columns` (unit directions).
-template <typename Use>
-void restOperatorColumnsEach(SplitFirstOrderSystem& system, Real t, const Vector& restState,
-                             const std::vector<Index>& velocityEntries, const std::vector<Index>& columns,
-                             Real relativePerturbation, const Use& use) {
-  const auto m = static_cast<Index>(velocityEntries.size());
-  for (Index k : columns)
-    if (k < 0 || k >= m)
-      throw InputError("columns", "column " + std::to_string(k) + " is not in [0, " + std::to_string(m) + ")");
-  restOperatorProductsEach(
-      system, t, restState, velocityEntries, static_cast<Index>(columns.size()), relativePerturbation,
-      [&](Index j, Vector& y) { y[velocityEntries[static_cast<std::size_t>(columns[static_cast<std::size_t>(j)])]] += 1; },
-      [&](Index j, const Vector& column) { use(columns[static_cast<std::size_t>(j)], column); });
+std::vector<Index> allIndices(Index m) {
+  std::vector<Index> all(static_cast<std::size_t>(m));
+  for (Index k = 0; k < m; ++k) all[static_cast<std::size_t>(k)] = k;
+  return all;
 }
 
 }  // namespace
@@ -91,44 +47,63 @@ Eigen::MatrixXd restOperatorRows(SplitFirstOrderSystem& system, Real t, const Ve
                                  Real relativePerturbation) {
   const auto m = static_cast<Index>(velocityEntries.size());
   requireRows(rows, m);
-  std::vector<Index> all(static_cast<std::size_t>(m));
-  for (Index k = 0; k < m; ++k) all[static_cast<std::size_t>(k)] = k;
-  Eigen::MatrixXd A(static_cast<Index>(rows.size()), m);
-  restOperatorColumnsEach(system, t, restState, velocityEntries, all, relativePerturbation,
-                          [&](Index k, const Vector& column) {
-                            for (std::size_t r = 0; r < rows.size(); ++r) A(static_cast<Index>(r), k) = column[rows[r]];
-                          });
-  return A;
+  return restOperatorProducts(system, t, restState, velocityEntries, unitDirections(allIndices(m), m), rows,
+                              relativePerturbation);
 }
 
 Eigen::MatrixXd restOperatorColumns(SplitFirstOrderSystem& system, Real t, const Vector& restState,
                                     const std::vector<Index>& velocityEntries, const std::vector<Index>& columns,
                                     Real relativePerturbation) {
-  Eigen::MatrixXd A(static_cast<Index>(velocityEntries.size()), static_cast<Index>(columns.size()));
-  Index j = 0;
-  restOperatorColumnsEach(system, t, restState, velocityEntries, columns, relativePerturbation,
-                          [&](Index, const Vector& column) { A.col(j++) = column; });
-  return A;
+  const auto m = static_cast<Index>(velocityEntries.size());
+  for (Index k : columns)
+    if (k < 0 || k >= m)
+      throw InputError("columns", "column " + std::to_string(k) + " is not in [0, " + std::to_string(m) + ")");
+  return restOperatorProducts(system, t, restState, velocityEntries, unitDirections(columns, m), allIndices(m),
+                              relativePerturbation);
 }
 
+// A d_j for each direction d_j: dQ/dv d_j exactly (Q being linear in v at rest), then dP_v/dq
+// times it by a central difference of step eps dq.
 Eigen::MatrixXd restOperatorProducts(SplitFirstOrderSystem& system, Real t, const Vector& restState,
                                      const std::vector<Index>& velocityEntries, const SparseMatrix& directions,
                                      const std::vector<Index>& rows, Real relativePerturbation) {
+  const Index n = system.size();
+  const Index nq = system.configurationSize();
+  if (restState.size() != n)
+    throw InputError("state", "has " + std::to_string(restState.size()) + " entries, the system " + std::to_string(n));
+  for (Index k : velocityEntries)
+    if (k < nq || k >= n) throw InputError("velocityEntries", "entry " + std::to_string(k) + " is not in p");
+  if (!(relativePerturbation > 0)) throw InputError("relativePerturbation", "must be positive");
   const auto m = static_cast<Index>(velocityEntries.size());
   if (directions.rows() != m)
     throw InputError("directions", "has " + std::to_string(directions.rows()) + " rows, one per velocity entry (" +
                                        std::to_string(m) + ") needed");
   requireRows(rows, m);
-  Eigen::MatrixXd A(static_cast<Index>(rows.size()), directions.cols());
-  restOperatorProductsEach(
-      system, t, restState, velocityEntries, directions.cols(), relativePerturbation,
-      [&](Index j, Vector& y) {
-        for (SparseMatrix::InnerIterator it(directions, static_cast<int>(j)); it; ++it)
-          y[velocityEntries[static_cast<std::size_t>(it.row())]] += it.value();
-      },
-      [&](Index j, const Vector& product) {
-        for (std::size_t r = 0; r < rows.size(); ++r) A(static_cast<Index>(r), j) = product[rows[r]];
-      });
+  const Real scale = std::max<Real>(1, restState.head(nq).cwiseAbs().maxCoeff());
+
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(static_cast<Index>(rows.size()), directions.cols());
+  Vector qdotRest(nq), qdot(nq), pPlus(n - nq), pMinus(n - nq);
+  system.configurationRate(t, restState, qdotRest);
+  Vector y = restState;
+  for (Index j = 0; j < directions.cols(); ++j) {
+    y = restState;
+    for (SparseMatrix::InnerIterator it(directions, static_cast<int>(j)); it; ++it)
+      y[velocityEntries[static_cast<std::size_t>(it.row())]] += it.value();
+    system.configurationRate(t, y, qdot);
+    const Vector dq = qdot - qdotRest;
+    const Real size = dq.cwiseAbs().maxCoeff();
+    if (size == 0) continue;  // a zero column
+    const Real eps = relativePerturbation * scale / size;
+    y = restState;
+    y.head(nq) += eps * dq;
+    system.momentumRate(t, y, pPlus);
+    y.head(nq) = restState.head(nq) - eps * dq;
+    system.momentumRate(t, y, pMinus);
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      const Index entry = velocityEntries[static_cast<std::size_t>(rows[r])] - nq;
+      A(static_cast<Index>(r), j) = (pPlus[entry] - pMinus[entry]) / (2 * eps);
+    }
+  }
   return A;
 }
 

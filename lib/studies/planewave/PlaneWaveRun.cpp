@@ -5,11 +5,9 @@
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
 #include "integrators/IntegratorFactory.hpp"
-#include "integrators/IntegratorKind.hpp"
 #include "integrators/StabilityLimit.hpp"
 #include "io/scene/IntegratorSpec.hpp"
 #include "systems/LinearSecondOrderSystem.hpp"
-
 
 #include <cmath>
 #include <sstream>
