@@ -19,35 +19,35 @@ Real StableTimeStep::safe() const {
 
 namespace {
 
-Vector inverseLumpedMass(const LinearSecondOrderSystem& system) {
-  const Vector mass = system.mass().diagonal();
-  if (system.mass().nonZeros() != system.size() || !(mass.array() > 0).all())
+Vector inverseLumpedMass(const LinearOperatorSystem& system) {
+  Vector mass;
+  try {
+    mass = system.lumpedMass();
+  } catch (const InputError&) {
+    mass.resize(0);  // not diagonal: the message below says what the estimate needs
+  }
+  if (mass.size() != system.size() || !(mass.array() > 0).all())
     throw InputError("mass", "the stable-step estimate needs a diagonal mass matrix with positive entries");
   return mass.cwiseInverse();
 }
 
 // Gershgorin: every eigenvalue of M^{-1} K lies in a disc around a row's diagonal.
-Real gershgorinOmegaSquared(const LinearSecondOrderSystem& system, const Vector& inverseMass) {
-  const SparseMatrix& k = system.stiffness();
-  Vector rowSums = Vector::Zero(system.size());
-  for (int c = 0; c < k.outerSize(); ++c)
-    for (SparseMatrix::InnerIterator it(k, c); it; ++it) rowSums[it.row()] += std::abs(it.value());
-  return rowSums.cwiseProduct(inverseMass).maxCoeff();
+Real gershgorinOmegaSquared(const LinearOperatorSystem& system, const Vector& inverseMass) {
+  return system.stiffnessAbsoluteRowSums().cwiseProduct(inverseMass).maxCoeff();
 }
 
 }  // namespace
 
-Real centralDifferenceSafeStep(const LinearSecondOrderSystem& system) {
+Real centralDifferenceSafeStep(const LinearOperatorSystem& system) {
   StableTimeStep bound;
   bound.gershgorinOmegaSquared = gershgorinOmegaSquared(system, inverseLumpedMass(system));
   return bound.safe();
 }
 
-StableTimeStep centralDifferenceStableStep(const LinearSecondOrderSystem& system, Real relativeTolerance,
+StableTimeStep centralDifferenceStableStep(const LinearOperatorSystem& system, Real relativeTolerance,
                                            int maximumIterations) {
   const Index n = system.size();
   const Vector inverseMass = inverseLumpedMass(system);
-  const SparseMatrix& k = system.stiffness();
   StableTimeStep result;
   result.gershgorinOmegaSquared = gershgorinOmegaSquared(system, inverseMass);
 
@@ -60,8 +60,8 @@ StableTimeStep centralDifferenceStableStep(const LinearSecondOrderSystem& system
   x.normalize();
   Real previous = 0;
   for (int iteration = 1; iteration <= maximumIterations; ++iteration) {
-    y.noalias() = k * x;
-    y = inverseMass.cwiseProduct(y);
+    system.applyStiffness(x, y);
+    y.array() *= inverseMass.array();
     const Real quotient = x.dot(y);
     const Real norm = y.norm();
     result.iterations = iteration;

@@ -7,7 +7,7 @@
 //  - a Gershgorin bound, max_i sum_j |K_ij| / M_ii, which is never below omega_max^2 (its step is
 //    safe, but may be pessimistic for wide stencils).
 
-#include "systems/LinearSecondOrderSystem.hpp"
+#include "systems/LinearOperatorSystem.hpp"
 
 namespace mfwave {
 
@@ -25,12 +25,12 @@ struct StableTimeStep {
 
 // The Gershgorin step alone: cheap (one pass over K), never above the true limit; exact for the
 // finite-difference Laplacian.
-Real centralDifferenceSafeStep(const LinearSecondOrderSystem& system);
+Real centralDifferenceSafeStep(const LinearOperatorSystem& system);
 
 // Power iteration on M^{-1} K from a fixed pseudo-random start (reproducible), until the Rayleigh
 // quotient changes by less than `relativeTolerance` between iterations. Throws InputError if M is
 // not diagonal with positive entries.
-StableTimeStep centralDifferenceStableStep(const LinearSecondOrderSystem& system, Real relativeTolerance = 1e-6,
+StableTimeStep centralDifferenceStableStep(const LinearOperatorSystem& system, Real relativeTolerance = 1e-6,
                                            int maximumIterations = 20000);
 
 }  // namespace mfwave

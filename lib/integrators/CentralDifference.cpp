@@ -1,7 +1,7 @@
 #include "integrators/CentralDifference.hpp"
 
 #include "core/Error.hpp"
-#include "integrators/ImplicitDampingSolver.hpp"
+#include "systems/LinearOperatorSystem.hpp"
 #include "integrators/PrescribedDisplacement.hpp"
 
 namespace mfwave {
@@ -38,12 +38,10 @@ void CentralDifference::initialise(SecondOrderSystem& system, Real t0, const Vec
     checkInitialState(system, t0, u0, v0, dt);  // sizes first, so that the dofs can be checked
     prescribed_->bind(system.size(), t0, dt, start);
   }
-  const auto* linear = dynamic_cast<const LinearSecondOrderSystem*>(&system);
+  const auto* linear = dynamic_cast<const LinearOperatorSystem*>(&system);
   dampingSolver_.reset();
-  if (damping_ == Damping::implicit && linear && linear->hasDamping()) {
-    dampingSolver_ = std::make_unique<ImplicitDampingSolver>();
-    dampingSolver_->factorise(*linear, dt, prescribed_ ? prescribed_->dofs() : std::vector<Index>{});
-  }
+  if (damping_ == Damping::implicit && linear && linear->hasDamping())
+    dampingSolver_ = linear->centredDamping(dt, prescribed_ ? prescribed_->dofs() : std::vector<Index>{});
   bind(system, t0, start, v0, dt);
   // v0 is exact here: a_0 needs neither the predictor nor the solve (a_0 also satisfies
   // (M + dt/2 C) a_0 = f_0 - K u_0 - C v_{-1/2}, so both damping paths start alike).

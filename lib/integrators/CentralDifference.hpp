@@ -12,10 +12,11 @@
 // The reported (synchronous) velocity is v_n = v_{n-1/2} + dt/2 a_n, i.e. (v_{n-1/2} + v_{n+1/2}) / 2.
 //
 // Velocity-dependent accelerations (damping, dashpots), two treatments (Damping):
-// - implicit (default): for a LinearSecondOrderSystem with damping, Ding-Long-Wu eq. (32) with the
+// - implicit (default): for a LinearOperatorSystem with damping, Ding-Long-Wu eq. (32) with the
 //   centred velocity (32b): M a_n + C v_n = f(t_n) - K u_n, solved as
 //   (M + dt/2 C) a_n = f(t_n) - K u_n - C v_{n-1/2} with M + dt/2 C factorised once
-//   (ImplicitDampingSolver). Stable for any dashpot strength (still w dt < 2 for the stiffness);
+//   (LinearOperatorSystem::centredDamping: ImplicitDampingSolver for sparse matrices, per-type
+//   blocks on a lattice). Stable for any dashpot strength (still w dt < 2 for the stiffness);
 //   no acceleration() calls after the start. Other velocity-dependent systems use the predictor.
 // - predictor: a_n = a(t_n, u_n, v_n*) with v_n* = v_{n-1/2} + dt/2 a_{n-1}; second order, explicit,
 //   one evaluation per step, but unstable for strong dashpots (c dt / m of order 1 and more).
@@ -41,7 +42,7 @@
 
 namespace mfwave {
 
-class ImplicitDampingSolver;
+class CentredDampingSolve;
 class PrescribedDisplacement;
 
 class CentralDifference : public FixedStepSecondOrderIntegrator {
@@ -85,7 +86,7 @@ class CentralDifference : public FixedStepSecondOrderIntegrator {
   Damping damping_;
   VelocityFilter filter_;
   std::unique_ptr<PrescribedDisplacement> prescribed_;
-  std::unique_ptr<ImplicitDampingSolver> dampingSolver_;  // set when implicitDamping()
+  std::unique_ptr<CentredDampingSolve> dampingSolver_;  // set when implicitDamping()
   Vector vHalf_;      // v_{n-1/2}
   Vector vPredict_;   // v_n* (predictor path only)
   Vector noPrescribedAcceleration_;  // empty: the solver's argument when nothing is prescribed

@@ -1,6 +1,6 @@
 #include "observers/EnergyObserver.hpp"
 
-#include "systems/LinearSecondOrderSystem.hpp"
+#include "systems/LinearOperatorSystem.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@ namespace mfwave {
 EnergyObserver::EnergyObserver(EnergyFunction energy)
     : energy_(std::move(energy)), series_("time", {"kinetic", "strain", "total"}) {}
 
-EnergyObserver::EnergyFunction EnergyObserver::ofLinearSystem(const LinearSecondOrderSystem& system) {
+EnergyObserver::EnergyFunction EnergyObserver::ofLinearSystem(const LinearOperatorSystem& system) {
   return [&system](const StateView& state) {
     return EnergyTerms{system.kineticEnergy(state.velocity), system.strainEnergy(state.displacement)};
   };

@@ -8,7 +8,7 @@
 
 namespace mfwave {
 
-class LinearSecondOrderSystem;
+class LinearOperatorSystem;
 
 struct EnergyTerms {
   Real kinetic = 0;
@@ -21,7 +21,7 @@ class EnergyObserver : public Observer {
   using EnergyFunction = std::function<EnergyTerms(const StateView&)>;
   explicit EnergyObserver(EnergyFunction energy);
   // 1/2 v^T M v and 1/2 u^T K u of a linear system.
-  static EnergyFunction ofLinearSystem(const LinearSecondOrderSystem& system);
+  static EnergyFunction ofLinearSystem(const LinearOperatorSystem& system);
 
   void observe(const StateView& state) override;
 

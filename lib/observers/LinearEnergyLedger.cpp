@@ -1,7 +1,7 @@
 #include "observers/LinearEnergyLedger.hpp"
 
 #include "core/Error.hpp"
-#include "systems/LinearSecondOrderSystem.hpp"
+#include "systems/LinearOperatorSystem.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 namespace mfwave {
 
-LinearEnergyLedger::LinearEnergyLedger(const LinearSecondOrderSystem& system, LinearEnergyLedgerOptions options)
+LinearEnergyLedger::LinearEnergyLedger(const LinearOperatorSystem& system, LinearEnergyLedgerOptions options)
     : system_(system),
       options_(std::move(options)),
       series_("t [s]", {"kinetic [J]", "strain [J]", "load_work [J]", "dashpot_loss [J]", "filter_loss [J]",
@@ -35,7 +35,7 @@ void LinearEnergyLedger::begin(const StateView& state) {
   previousTime_ = state.time;
   previousDisplacement_ = state.displacement;
   system_.force(state.time, previousForce_);
-  previousDashpotPower_ = system_.hasDamping() ? state.velocity.dot(system_.damping() * state.velocity) : 0;
+  previousDashpotPower_ = system_.dampingPower(state.velocity);
   observations_ = 0;
   check(state);
 }
@@ -46,12 +46,12 @@ void LinearEnergyLedger::integrate(const StateView& state) {
   const bool quiet = previousTime_ > options_.quietAfter;
   if (!quiet) {
     system_.force(state.time, force_);
-    work_ = state.displacement - previousDisplacement_;
-    loadWork_ += 0.5 * (previousForce_ + force_).dot(work_);
+    // one lazy expression: no displacement-sized temporary
+    loadWork_ += 0.5 * (previousForce_ + force_).dot(state.displacement - previousDisplacement_);
     previousForce_.swap(force_);
   }
   if (system_.hasDamping()) {
-    const Real power = state.velocity.dot(system_.damping() * state.velocity);
+    const Real power = system_.dampingPower(state.velocity);
     dashpotLoss_ += 0.5 * dt * (previousDashpotPower_ + power);
     previousDashpotPower_ = power;
   }

@@ -31,7 +31,7 @@
 
 namespace mfwave {
 
-class LinearSecondOrderSystem;
+class LinearOperatorSystem;
 
 struct LinearEnergyLedgerOptions {
   // Every load is zero after this time (TimeFunction::quietAfter). Both stops are judged only
@@ -57,7 +57,7 @@ class LinearEnergyLedger : public Observer {
  public:
   enum Column : std::size_t { Kinetic, Strain, LoadWork, DashpotLoss, FilterLoss, Balance };
 
-  LinearEnergyLedger(const LinearSecondOrderSystem& system, LinearEnergyLedgerOptions options);
+  LinearEnergyLedger(const LinearOperatorSystem& system, LinearEnergyLedgerOptions options);
 
   void begin(const StateView& state) override;
   void observe(const StateView& state) override;
@@ -85,12 +85,12 @@ class LinearEnergyLedger : public Observer {
   // Throws InstabilityError, or records the message when options.stop is false.
   void stop(const StateView& state, const std::string& why);
 
-  const LinearSecondOrderSystem& system_;
+  const LinearOperatorSystem& system_;
   LinearEnergyLedgerOptions options_;
   TimeSeries series_;
   // previous observation: time, displacement, load, dashpot power v^T C v
   Real previousTime_ = 0;
-  Vector previousDisplacement_, previousForce_, force_, work_;
+  Vector previousDisplacement_, previousForce_, force_;
   Real previousDashpotPower_ = 0;
   Real loadWork_ = 0, dashpotLoss_ = 0, filterLoss_ = 0;
   Real initialBalance_ = 0;

@@ -1,6 +1,7 @@
 #include "study/VeryWeakSphScene.hpp"
 
 #include "core/Error.hpp"
+#include "methods/very_weak_sph/VeryWeakSphLattice.hpp"
 
 namespace mfwave {
 namespace {
@@ -59,6 +60,17 @@ VeryWeakSphProblemSettings<D> veryWeakSphProblemSettings(const Scene& scene, con
   s.smoothingRate = spec.smoothingRate;
   s.smoothingOrder = spec.smoothingOrder;
   s.deconvolution = spec.deconvolution;
+  s.ghostLayers = geometry.ghostLayers;
+  s.ghostFaces = geometry.ghostFaces;
+  // method.operator: "auto" takes the lattice stencils when they can run the scene (a box lattice,
+  // no periodic axis, nothing latticeStorageObstacle names), "lattice" insists (and the problem
+  // says why not), "sparse" assembles the matrices.
+  bool periodic = false;
+  for (bool p : geometry.periodic) periodic = periodic || p;
+  const bool latticeFits = !periodic && latticeStorageObstacle<D>(s).empty();
+  s.storage = spec.operatorStorage == "lattice" || (spec.operatorStorage == "auto" && latticeFits)
+                  ? OperatorStorage::Lattice
+                  : OperatorStorage::Sparse;
   return s;
 }
 

@@ -33,6 +33,9 @@ void addVeryWeakSphKeys(SceneSchema& schema) {
       .describedAs("1: eq. 33, v += alpha (S v - v); 2: v -= alpha (I - S)^2 v (spares resolved waves)");
   schema.add("method.smoothing_rate_scales_with_spacing", T::Boolean).defaultsTo("false").when(when)
       .describedAs("the rate is given at geometry.spacing and scales as 1 / dx in resolution studies");
+  schema.add("method.operator", T::String).defaultsTo("\"auto\"").oneOf({"auto", "lattice", "sparse"}).when(when)
+      .describedAs("operator storage: per-row-type stencils on the box lattice (nothing per particle), assembled "
+                   "sparse matrices (any particles; the reference), or auto (the stencils where they can run the scene)");
   schema.add("method.deconvolution", T::Boolean).defaultsTo("false").when(when)
       .describedAs("report probe values sharpened by the deconvolution of eq. 35 (the raw values are kept too)");
 }
@@ -57,6 +60,7 @@ VeryWeakSphSpec readVeryWeakSph(SceneReader& reader, const Material& material) {
   spec.smoothingOrder = static_cast<int>(method.integer("smoothing_order"));
   spec.smoothingScalesWithSpacing = method.boolean("smoothing_rate_scales_with_spacing");
   spec.deconvolution = method.boolean("deconvolution");
+  spec.operatorStorage = method.string("operator");
   return spec;
 }
 

@@ -23,6 +23,9 @@ struct VeryWeakSphSpec {
   int smoothingOrder = 1;                // 1: eq. (33); 2: v <- v - alpha (I - S)^2 v
   bool smoothingScalesWithSpacing = false;  // rate given at geometry.spacing, scaled as 1 / dx
   bool deconvolution = true;             // report probes sharpened by eq. (35)
+  // method.operator: "auto" (the lattice stencils where they can run the scene, else the sparse
+  // matrices), "lattice" or "sparse" (issue 18).
+  std::string operatorStorage = "auto";
 
   std::string variantName() const { return veryWeakSphVariantName(options.variant); }
 

@@ -2,7 +2,9 @@
 
 #include "core/Error.hpp"
 #include "solvers/FactorisedMatrix.hpp"
+#include "systems/ImplicitDampingSolver.hpp"
 
+#include <cmath>
 #include <string>
 
 namespace mfwave {
@@ -111,5 +113,29 @@ void LinearSecondOrderSystem::subtractStiffnessProduct(Eigen::Ref<const Vector> 
 }
 
 Real LinearSecondOrderSystem::strainEnergy(const Vector& u) const { return 0.5 * u.dot(stiffness_ * u); }
+
+Real LinearSecondOrderSystem::dampingPower(const Vector& v) const {
+  return hasDamping() ? v.dot(damping_ * v) : 0.0;
+}
+
+Vector LinearSecondOrderSystem::lumpedMass() const {
+  if (!diagonalMass_ || mass_.nonZeros() != size())
+    throw InputError("mass", "needs a diagonal (lumped) mass matrix");
+  return mass_.diagonal();
+}
+
+Vector LinearSecondOrderSystem::stiffnessAbsoluteRowSums() const {
+  Vector sums = Vector::Zero(size());
+  for (int c = 0; c < stiffness_.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(stiffness_, c); it; ++it) sums[it.row()] += std::abs(it.value());
+  return sums;
+}
+
+std::unique_ptr<CentredDampingSolve> LinearSecondOrderSystem::centredDamping(
+    Real dt, const std::vector<Index>& prescribedDofs) const {
+  auto solver = std::make_unique<ImplicitDampingSolver>();
+  solver->factorise(*this, dt, prescribedDofs);
+  return solver;
+}
 
 }  // namespace mfwave

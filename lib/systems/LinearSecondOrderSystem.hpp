@@ -6,7 +6,7 @@
 // explicit integrators run a consistent-mass operator (the stability atlas confirms the limits of
 // RK and RB collocation that way).
 
-#include "systems/SecondOrderSystem.hpp"
+#include "systems/LinearOperatorSystem.hpp"
 
 #include <functional>
 #include <memory>
@@ -15,7 +15,7 @@ namespace mfwave {
 
 class FactorisedMatrix;
 
-class LinearSecondOrderSystem : public SecondOrderSystem {
+class LinearSecondOrderSystem : public LinearOperatorSystem {
  public:
   using ForceFunction = std::function<void(Real t, Vector& f)>;
 
@@ -25,7 +25,6 @@ class LinearSecondOrderSystem : public SecondOrderSystem {
                           ForceFunction force = {});
 
   Index size() const override { return stiffness_.rows(); }
-  bool dependsOnVelocity() const override { return damping_.nonZeros() > 0; }
 
   // a = M^{-1} (f(t) - C v - K u). Throws InputError("mass") for a diagonal M with an entry <= 0,
   // mfwave::Error for a singular consistent M.
@@ -39,8 +38,8 @@ class LinearSecondOrderSystem : public SecondOrderSystem {
   const SparseMatrix& mass() const { return mass_; }
   const SparseMatrix& damping() const { return damping_; }  // 0 x 0 when undamped
   const SparseMatrix& stiffness() const { return stiffness_; }
-  bool hasDamping() const { return damping_.nonZeros() > 0; }
-  void force(Real t, Vector& f) const;
+  bool hasDamping() const override { return damping_.nonZeros() > 0; }
+  void force(Real t, Vector& f) const override;
   // Replaces f(t): loads are attached after a method has assembled M, C and K.
   void setForce(ForceFunction force) { force_ = std::move(force); }
   // Replaces C (empty for none): boundary dashpots are assembled after the method's M and K.
@@ -49,8 +48,16 @@ class LinearSecondOrderSystem : public SecondOrderSystem {
   void setDamping(SparseMatrix damping);
 
   // Total mechanical energy 1/2 v^T M v + 1/2 u^T K u (meaningful for symmetric K).
-  Real kineticEnergy(const Vector& v) const;
-  Real strainEnergy(const Vector& u) const;
+  Real kineticEnergy(const Vector& v) const override;
+  Real strainEnergy(const Vector& u) const override;
+
+  // LinearOperatorSystem
+  void applyStiffness(const Vector& x, Vector& y) const override { y.noalias() = stiffness_ * x; }
+  Real dampingPower(const Vector& v) const override;
+  Vector lumpedMass() const override;
+  Vector stiffnessAbsoluteRowSums() const override;
+  // ImplicitDampingSolver: M + dt/2 C factorised (FactorisedMatrix).
+  std::unique_ptr<CentredDampingSolve> centredDamping(Real dt, const std::vector<Index>& prescribedDofs) const override;
 
  private:
   // Checks a lumped M, or factorises a consistent one on first use.

@@ -1,4 +1,5 @@
 #include "analysis/StableTimeStep.hpp"
+#include "systems/LinearSecondOrderSystem.hpp"
 #include "core/Error.hpp"
 
 #include <gtest/gtest.h>

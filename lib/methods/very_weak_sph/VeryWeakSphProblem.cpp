@@ -4,6 +4,7 @@
 #include "kernels/KernelFactory.hpp"
 #include "methods/very_weak_sph/Deconvolution.hpp"
 #include "methods/very_weak_sph/PatchLoad.hpp"
+#include "methods/very_weak_sph/VeryWeakSphLattice.hpp"
 #include "neighbours/CellList.hpp"
 #include "particles/BoxFace.hpp"
 
@@ -24,6 +25,43 @@ std::unique_ptr<Kernel> checkedKernel(const VeryWeakSphProblemSettings<D>& setti
   return makeKernel(settings.kernel, D, settings.smoothingLength);
 }
 
+template <int D>
+bool onLattice(const VeryWeakSphProblemSettings<D>& settings) {
+  return settings.storage == OperatorStorage::Lattice;
+}
+
+// The sparse path's neighbours and assembly; nothing for the lattice storage.
+template <int D>
+NeighbourList neighboursFor(const ParticleSet<D>& particles, const Kernel& kernel,
+                            const VeryWeakSphProblemSettings<D>& settings) {
+  if (onLattice(settings)) return NeighbourList();
+  return buildNeighbourList(CellList<D>(particles, kernel.supportRadius()), particles.physicalCount());
+}
+
+template <int D>
+VeryWeakSph<D> assemblyFor(const ParticleSet<D>& particles, const NeighbourList& neighbours, const Kernel& kernel,
+                           const VeryWeakSphProblemSettings<D>& settings) {
+  if (onLattice(settings)) return {VeryWeakSphData<D>{}, LinearSecondOrderSystem(SparseMatrix(), SparseMatrix(), SparseMatrix())};
+  return assembleVeryWeakSph<D>(particles, neighbours, kernel, settings.options);
+}
+
+// Loads as their nonzero entries: what the lattice storage keeps of a nodal force.
+struct SparseLoad {
+  std::vector<Index> dofs;
+  std::vector<Real> values;
+  const TimeFunction* history;
+};
+
+void appendNonzeros(const Vector& force, const TimeFunction* history, std::vector<SparseLoad>& loads) {
+  SparseLoad load{{}, {}, history};
+  for (Index i = 0; i < force.size(); ++i)
+    if (force[i] != 0) {
+      load.dofs.push_back(i);
+      load.values.push_back(force[i]);
+    }
+  loads.push_back(std::move(load));
+}
+
 }  // namespace
 
 void checkVeryWeakSphCombination(VeryWeakSphVariant variant, bool deconvolution, Real smoothingRate) {
@@ -42,11 +80,15 @@ template <int D>
 VeryWeakSphProblem<D>::VeryWeakSphProblem(const ParticleSet<D>& particles,
                                           const VeryWeakSphProblemSettings<D>& settings)
     : kernel_(checkedKernel(settings)),
-      neighbours_(buildNeighbourList(CellList<D>(particles, kernel_->supportRadius()), particles.physicalCount())),
-      method_(assembleVeryWeakSph<D>(particles, neighbours_, *kernel_, settings.options)) {
+      neighbours_(neighboursFor<D>(particles, *kernel_, settings)),
+      method_(assemblyFor<D>(particles, neighbours_, *kernel_, settings)) {
+  prescribeFaces(particles, settings);
+  if (onLattice(settings)) {
+    buildLattice(particles, settings);
+    return;
+  }
   const bool galerkin = settings.options.variant == VeryWeakSphVariant::Galerkin;
   const bool consistent = settings.options.variant == VeryWeakSphVariant::Consistent;
-  const Index n = particles.physicalCount();
   if (!settings.keepOperatorMatrix) SparseMatrix().swap(method_.data.operatorMatrix);  // swap frees
   LinearSecondOrderSystem& system = method_.system;
   const VeryWeakSphData<D>& data = method_.data;
@@ -92,9 +134,20 @@ VeryWeakSphProblem<D>::VeryWeakSphProblem(const ParticleSet<D>& particles,
       }
     });
 
-  // prescribed displacements (eq. (30)), face by face, particle by particle, component by component
+  // the smoothing filter (eq. (33)) and the deconvolution (eq. (35))
+  if (settings.smoothingRate > 0)
+    smoothing_ = std::make_unique<ConservativeSmoothing>(
+        smoothingMatrix<D>(particles, neighbours_, *kernel_, data.volume), D, settings.smoothingRate,
+        settings.smoothingOrder);
+  if (settings.deconvolution) deconvolution_ = deconvolutionMatrix<D>(particles, neighbours_, *kernel_, data.volume);
+}
+
+// Prescribed displacements (eq. (30)), face by face, particle by particle, component by component.
+template <int D>
+void VeryWeakSphProblem<D>::prescribeFaces(const ParticleSet<D>& particles,
+                                           const VeryWeakSphProblemSettings<D>& settings) {
   for (const PrescribedFaces<D>& faces : settings.prescribed)
-    for (Index a = 0; a < n; ++a) {
+    for (Index a = 0; a < particles.physicalCount(); ++a) {
       if ((particles.faceMask[static_cast<std::size_t>(a)] & faces.faces) == 0) continue;
       for (int c = 0; c < D; ++c) {
         prescribedDofs_.push_back(D * a + c);
@@ -102,13 +155,76 @@ VeryWeakSphProblem<D>::VeryWeakSphProblem(const ParticleSet<D>& particles,
         prescribedHistory_.push_back(faces.history);
       }
     }
+}
 
-  // the smoothing filter (eq. (33)) and the deconvolution (eq. (35))
-  if (settings.smoothingRate > 0)
-    smoothing_ = std::make_unique<ConservativeSmoothing>(
-        smoothingMatrix<D>(particles, neighbours_, *kernel_, data.volume), D, settings.smoothingRate,
-        settings.smoothingOrder);
-  if (settings.deconvolution) deconvolution_ = deconvolutionMatrix<D>(particles, neighbours_, *kernel_, data.volume);
+template <int D>
+void VeryWeakSphProblem<D>::buildLattice(const ParticleSet<D>& particles,
+                                         const VeryWeakSphProblemSettings<D>& settings) {
+  const std::string obstacle = latticeStorageObstacle<D>(settings);
+  if (!obstacle.empty())
+    throw InputError("method.operator", "the lattice storage cannot run this scene: " + obstacle +
+                                            "; use method.operator = \"sparse\" (or \"auto\")");
+  const std::array<Index, D> nodes = checkedLatticeNodes<D>(particles, settings);
+  VeryWeakSphStencils<D> stencils = veryWeakSphStencils<D>(settings, nodes);
+  latticeDepth_ = stencils.stiffness.types().depth();
+  latticeMismatch_ = stencils.mismatch;
+
+  // loads (eq. (19)): whole faces from their per-type forces, then patches, as nonzeros
+  std::vector<SparseLoad> loads;
+  const LatticeRowTypes<D>& types = stencils.stiffness.types();
+  for (std::size_t i = 0; i < settings.faceTractions.size(); ++i) {
+    const std::vector<Real>& perType = stencils.faceLoads[i];
+    SparseLoad load{{}, {}, settings.faceTractions[i].history};
+    for (Index p = 0; p < types.nodeCount(); ++p) {
+      const Index type = types.typeOf(types.node(p));
+      for (int c = 0; c < D; ++c) {
+        const Real value = perType[static_cast<std::size_t>(D * type + c)];
+        if (value == 0) continue;
+        load.dofs.push_back(D * p + c);
+        load.values.push_back(value);
+      }
+    }
+    loads.push_back(std::move(load));
+  }
+  for (const PatchTraction<D>& patch : settings.patches) {  // galerkin: the exact int_patch W_a t
+    const std::vector<Real> weights = patchTentWeights<D>(particles, patch.face, patch.centre, patch.halfWidths,
+                                                          settings.spacing, settings.lower, settings.upper);
+    appendNonzeros(patchNodalForce<D>(weights, settings.spacing, patch.traction), patch.history, loads);
+  }
+  for (const SparseLoad& load : loads)
+    loadBytes_ += load.dofs.size() * (sizeof(Index) + sizeof(Real));
+  typename LatticeSecondOrderSystem<D>::ForceFunction force;
+  if (!loads.empty())
+    force = [loads = std::move(loads)](Real t, Eigen::Ref<Vector> f) {
+      for (const SparseLoad& load : loads) {
+        const Real scale = (*load.history)(t);
+        if (scale == 0) continue;
+        for (std::size_t k = 0; k < load.dofs.size(); ++k) f[load.dofs[k]] += scale * load.values[k];
+      }
+    };
+  lattice_ = std::make_unique<LatticeSecondOrderSystem<D>>(std::move(stencils.mass), std::move(stencils.damping),
+                                                           std::move(stencils.stiffness), std::move(force));
+}
+
+template <int D>
+LinearSecondOrderSystem& VeryWeakSphProblem<D>::sparseSystem() {
+  if (lattice_)
+    throw InputError("method.operator", "the problem is stored as lattice stencils; the assembled matrices need "
+                                        "method.operator = \"sparse\"");
+  return method_.system;
+}
+
+template <int D>
+Real VeryWeakSphProblem<D>::meanStencilSize() const {
+  if (!lattice_) return neighbours_.meanCount();
+  const LatticeStencils<D>& k = lattice_->stiffness();
+  return sumOverLatticeNodes<D>(k.types(), [&](Index, Index type) { return static_cast<Real>(k.end(type) - k.begin(type)); }) /
+         static_cast<Real>(k.types().nodeCount());
+}
+
+template <int D>
+Index VeryWeakSphProblem<D>::storedStiffnessEntries() const {
+  return lattice_ ? D * D * lattice_->stiffness().entryCount() : method_.system.stiffness().nonZeros();
 }
 
 template <int D>
@@ -119,7 +235,7 @@ void VeryWeakSphProblem<D>::prescribedValues(Real t, Vector& values) const {
 
 template <int D>
 Vector VeryWeakSphProblem<D>::initialDisplacement() const {
-  Vector u0 = Vector::Zero(method_.system.size());
+  Vector u0 = Vector::Zero(system().size());
   Vector g0(static_cast<Index>(prescribedDofs_.size()));
   prescribedValues(0, g0);
   for (std::size_t i = 0; i < prescribedDofs_.size(); ++i) u0[prescribedDofs_[i]] = g0[static_cast<Index>(i)];
@@ -128,6 +244,7 @@ Vector VeryWeakSphProblem<D>::initialDisplacement() const {
 
 template <int D>
 Real VeryWeakSphProblem<D>::operatorMiB() const {
+  if (lattice_) return static_cast<Real>(lattice_->bytes() + loadBytes_) / (1024.0 * 1024.0);
   const LinearSecondOrderSystem& s = method_.system;
   return compressedRowsMiB(s.stiffness()) + compressedRowsMiB(method_.data.tractionMatrix) +
          compressedRowsMiB(s.damping()) + compressedRowsMiB(s.mass());

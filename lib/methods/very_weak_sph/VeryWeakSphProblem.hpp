@@ -12,6 +12,7 @@
 #include "core/TimeFunction.hpp"
 #include "core/Types.hpp"
 #include "kernels/Kernel.hpp"
+#include "lattice/LatticeSecondOrderSystem.hpp"
 #include "methods/very_weak_sph/ConservativeSmoothing.hpp"
 #include "methods/very_weak_sph/TransmittingBoundary.hpp"
 #include "methods/very_weak_sph/VeryWeakSph.hpp"
@@ -53,6 +54,11 @@ struct PrescribedFaces {
   const TimeFunction* history = nullptr;
 };
 
+// How the step's operators are stored: as assembled sparse matrices (any particle set; the
+// reference) or as per-row-type stencils on the box lattice (VeryWeakSphLattice.hpp: nothing per
+// particle, the same rows).
+enum class OperatorStorage { Sparse, Lattice };
+
 template <int D>
 struct VeryWeakSphProblemSettings {
   VeryWeakSphOptions options;            // variant, material, the boundary corrections
@@ -61,6 +67,11 @@ struct VeryWeakSphProblemSettings {
   // The lattice box and spacing the particles were built on (patch weights are exact on it).
   Vec<D> lower = Vec<D>::Zero(), upper = Vec<D>::Zero();
   Real spacing = 0;
+  // The ghost layers the particles were built with (the lattice storage rebuilds them on its
+  // compact lattices).
+  int ghostLayers = 0;
+  std::uint8_t ghostFaces = 0;
+  OperatorStorage storage = OperatorStorage::Sparse;
   // Dashpots on these faces: lumped facet dashpots for the galerkin variant, through the corrected
   // traction matrix for the consistent one, eq. (32) with `dashpotLumping` for the published one.
   std::uint8_t transmittingFaces = 0;
@@ -87,11 +98,28 @@ class VeryWeakSphProblem {
   // what checkVeryWeakSphCombination and assembleVeryWeakSph throw.
   VeryWeakSphProblem(const ParticleSet<D>& particles, const VeryWeakSphProblemSettings<D>& settings);
 
-  LinearSecondOrderSystem& system() { return method_.system; }
-  const LinearSecondOrderSystem& system() const { return method_.system; }
+  // The system to step: the sparse one, or the lattice one with settings.storage = Lattice.
+  LinearOperatorSystem& system() { return lattice_ ? static_cast<LinearOperatorSystem&>(*lattice_) : method_.system; }
+  const LinearOperatorSystem& system() const {
+    return lattice_ ? static_cast<const LinearOperatorSystem&>(*lattice_) : method_.system;
+  }
+  bool latticeStorage() const { return static_cast<bool>(lattice_); }
+  // The assembled matrices; throws InputError("method.operator") with the lattice storage.
+  LinearSecondOrderSystem& sparseSystem();
+  const LatticeSecondOrderSystem<D>* latticeSystem() const { return lattice_.get(); }
+  // Method data (volumes, facets, T); empty with the lattice storage.
   const VeryWeakSphData<D>& data() const { return method_.data; }
   const Kernel& kernel() const { return *kernel_; }
+  // Empty with the lattice storage (it addresses neighbours by lattice arithmetic).
   const NeighbourList& neighbours() const { return neighbours_; }
+  // Mean number of stiffness blocks per row (neighbours coupled, itself included).
+  Real meanStencilSize() const;
+  // Stored stiffness entries: the sparse matrix's nonzeros, or the stencil table's.
+  Index storedStiffnessEntries() const;
+  // The row-type depth of the lattice storage (0 for sparse) and how far its stencils are from an
+  // assembly on a larger lattice (relative, 0 for sparse).
+  Index latticeDepth() const { return latticeDepth_; }
+  Real latticeMismatch() const { return latticeMismatch_; }
 
   // Eq. (30): the prescribed dofs (particle * D + component) and their values at time t, in that
   // order; the displacement at rest with the prescribed dofs at their values at t = 0.
@@ -105,7 +133,8 @@ class VeryWeakSphProblem {
   // Eq. (35) when settings.deconvolution, else null.
   const ParticleMatrix* deconvolution() const { return deconvolution_ ? &*deconvolution_ : nullptr; }
 
-  // Storage of the step's matrices (stiffness, traction, damping, mass) in compressed rows, MiB.
+  // Storage of the step's operators, MiB: the matrices (stiffness, traction, damping, mass) in
+  // compressed rows, or the stencil tables and the loads' nonzeros.
   Real operatorMiB() const;
 
  private:
@@ -114,9 +143,17 @@ class VeryWeakSphProblem {
     const TimeFunction* history;
   };
 
+  void prescribeFaces(const ParticleSet<D>& particles, const VeryWeakSphProblemSettings<D>& settings);
+  // The lattice storage: stencils from compact assemblies, loads as nonzeros.
+  void buildLattice(const ParticleSet<D>& particles, const VeryWeakSphProblemSettings<D>& settings);
+
   std::unique_ptr<Kernel> kernel_;
   NeighbourList neighbours_;
   VeryWeakSph<D> method_;
+  std::unique_ptr<LatticeSecondOrderSystem<D>> lattice_;
+  Index latticeDepth_ = 0;
+  Real latticeMismatch_ = 0;
+  std::size_t loadBytes_ = 0;
   std::vector<Index> prescribedDofs_;
   std::vector<Real> prescribedValue_;
   std::vector<const TimeFunction*> prescribedHistory_;

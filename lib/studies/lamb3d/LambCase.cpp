@@ -49,10 +49,10 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   const VeryWeakSphSpec& spec = settings.method;
   VeryWeakSphProblem<D> problem(
       particles, veryWeakSphProblemSettings<D>(scene, settings.geometry, spec, !settings.freeFaces));
-  LinearSecondOrderSystem& system = problem.system();
+  LinearOperatorSystem& system = problem.system();
   result.smoothingLength = problem.kernel().smoothingLength();
-  result.meanNeighbours = problem.neighbours().meanCount();
-  result.operatorNonZeros = system.stiffness().nonZeros();
+  result.meanNeighbours = problem.meanStencilSize();
+  result.operatorNonZeros = problem.storedStiffnessEntries();
   result.operatorMiB = problem.operatorMiB();
 
   // time step: a fraction of the operator's stable central-difference step

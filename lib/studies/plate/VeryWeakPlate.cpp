@@ -57,8 +57,8 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
   problemSettings.smoothingRate = study.veryWeakSmoothingRate;
   problemSettings.smoothingOrder = 2;
   VeryWeakSphProblem<D> problem(particles, problemSettings);
-  LinearSecondOrderSystem& system = problem.system();
-  result.meanNeighbours = problem.neighbours().meanCount();
+  LinearOperatorSystem& system = problem.system();
+  result.meanNeighbours = problem.meanStencilSize();
   result.fixedParticles = static_cast<Index>(problem.prescribedDofs().size()) / D;
 
   // central differences at a fraction of the operator's stable step

@@ -57,13 +57,13 @@ TEST(VeryWeakSphProblem, MatchesTheSetUpWiredByHand) {
       buildNeighbourList(CellList<2>(particles, kernel->supportRadius()), particles.physicalCount());
   VeryWeakSphOptions options = settings.options;
   VeryWeakSph<2> method = assembleVeryWeakSph<2>(particles, neighbours, *kernel, options);
-  EXPECT_EQ(difference(problem.system().stiffness(), method.system.stiffness()), 0.0);
-  EXPECT_EQ(difference(problem.system().mass(), method.system.mass()), 0.0);
+  EXPECT_EQ(difference(problem.sparseSystem().stiffness(), method.system.stiffness()), 0.0);
+  EXPECT_EQ(difference(problem.sparseSystem().mass(), method.system.mass()), 0.0);
   const SparseMatrix damping = assembleTransmittingDamping<2>(particles, neighbours, *kernel, method.data.facets,
                                                               kMaterial, faceBit(BoxFace::PlusX),
                                                               DashpotLumping::Consistent);
   EXPECT_GT(damping.norm(), 0.0);
-  EXPECT_EQ(difference(problem.system().damping(), damping), 0.0);
+  EXPECT_EQ(difference(problem.sparseSystem().damping(), damping), 0.0);
   const std::vector<Real> weights = patchLoadWeights<2>(particles, static_cast<int>(BoxFace::PlusY), Vec2(1, 1.5),
                                                         Vec2(0.5, 0), kDx, kLower, kUpper);
   const Vector expected =

@@ -1,4 +1,6 @@
-#include "integrators/ImplicitDampingSolver.hpp"
+#include "systems/ImplicitDampingSolver.hpp"
+
+#include "systems/LinearSecondOrderSystem.hpp"
 
 namespace mfwave {
 

@@ -15,13 +15,15 @@
 // couples to them.
 
 #include "solvers/FactorisedMatrix.hpp"
-#include "systems/LinearSecondOrderSystem.hpp"
+#include "systems/LinearOperatorSystem.hpp"
 
 #include <vector>
 
 namespace mfwave {
 
-class ImplicitDampingSolver {
+class LinearSecondOrderSystem;
+
+class ImplicitDampingSolver : public CentredDampingSolve {
  public:
   // Factorises M + dt/2 C with the rows and columns of prescribedDofs replaced by the identity.
   // The system must outlive the solver.
@@ -29,7 +31,8 @@ class ImplicitDampingSolver {
 
   // a_n from (M + dt/2 C) a_n = f(t) - K u - C vHalf, with a_n[prescribedDofs] = prescribedAcceleration
   // (size prescribedDofs.size(), ignored when there are none).
-  void acceleration(Real t, const Vector& u, const Vector& vHalf, const Vector& prescribedAcceleration, Vector& a);
+  void acceleration(Real t, const Vector& u, const Vector& vHalf, const Vector& prescribedAcceleration,
+                    Vector& a) override;
 
  private:
   const LinearSecondOrderSystem* system_ = nullptr;

@@ -1,0 +1,71 @@
+#pragma once
+// M u'' + C u' + K u = f(t) on a box lattice from per-row-type stencils (LatticeStencils): K any
+// stencil, M and C block-diagonal (lumped masses, dashpots on each particle's own dofs). Per
+// particle it stores nothing: the acceleration, the dashpot solve of central difference
+// (Ding-Long-Wu eq. (32)) and the energies are fused passes over the lattice, with the inverses of
+// M and of M + dt/2 C kept per type. Results are bitwise the same on any thread count.
+//
+// The matrix-free counterpart of LinearSecondOrderSystem on lattices (issue 18): the same rows, a
+// few hundred stencils instead of a sparse matrix of N x neighbours entries.
+
+#include "lattice/LatticeStencils.hpp"
+#include "systems/LinearOperatorSystem.hpp"
+
+#include <functional>
+
+namespace mfwave {
+
+template <int D>
+class LatticeSecondOrderSystem : public LinearOperatorSystem {
+ public:
+  // Adds f(t) into f (which the system has zeroed).
+  using ForceFunction = std::function<void(Real t, Eigen::Ref<Vector> f)>;
+
+  // All three on the same lattice; damping may be empty (no dashpots). Throws InputError("mass")
+  // for a mass that is not block-diagonal or has a singular block, InputError("damping") for
+  // dashpots that couple particles.
+  LatticeSecondOrderSystem(LatticeStencils<D> mass, LatticeStencils<D> damping, LatticeStencils<D> stiffness,
+                           ForceFunction force = {});
+
+  Index size() const override { return D * stiffness_.types().nodeCount(); }
+  bool hasDamping() const override { return hasDamping_; }
+  void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) override;
+
+  void force(Real t, Vector& f) const override;
+  void setForce(ForceFunction force) { force_ = std::move(force); }
+  void applyStiffness(const Vector& x, Vector& y) const override { stiffness_.multiply(x, y); }
+  Real kineticEnergy(const Vector& v) const override;
+  Real strainEnergy(const Vector& u) const override;
+  Real dampingPower(const Vector& v) const override;
+  Vector lumpedMass() const override;
+  Vector stiffnessAbsoluteRowSums() const override { return stiffness_.absoluteRowSums(); }
+  std::unique_ptr<CentredDampingSolve> centredDamping(Real dt, const std::vector<Index>& prescribedDofs) const override;
+
+  const LatticeStencils<D>& mass() const { return mass_; }
+  const LatticeStencils<D>& damping() const { return damping_; }
+  const LatticeStencils<D>& stiffness() const { return stiffness_; }
+  const LatticeRowTypes<D>& types() const { return stiffness_.types(); }
+  // Bytes of the stencil tables and per-type inverses (nothing per particle).
+  std::size_t bytes() const;
+
+  // a_p = B_type (a_p - (K u)_p - (C v)_p) for every node, in place over a (which holds f): the
+  // acceleration with B = M^-1, and the dashpot solve of eq. (32) with B = (M + dt/2 C)^-1.
+  void fusedSolve(const std::vector<Real>& inverseBlocks, const Real* u, const Real* v, Real* a) const;
+  // Per type, the inverse of M + s C (row-major D x D blocks).
+  std::vector<Real> inverseBlocks(Real s) const;
+
+ private:
+  // The type's block of a block-diagonal table (zero when the type has none).
+  void typeBlock(const LatticeStencils<D>& table, Index type, Real* out) const;
+
+  LatticeStencils<D> mass_, damping_, stiffness_;
+  ForceFunction force_;
+  bool hasDamping_ = false;
+  std::vector<Real> inverseMass_;  // per type
+};
+
+extern template class LatticeSecondOrderSystem<1>;
+extern template class LatticeSecondOrderSystem<2>;
+extern template class LatticeSecondOrderSystem<3>;
+
+}  // namespace mfwave

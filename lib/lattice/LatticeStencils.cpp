@@ -1,0 +1,141 @@
+#include "lattice/LatticeStencils.hpp"
+
+#include "core/Error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace mfwave {
+
+template <int D>
+LatticeStencils<D>::LatticeStencils(const LatticeRowTypes<D>& types, const SparseMatrix& compact) : types_(types) {
+  const LatticeRowTypes<D> compactTypes(types.compactNodes(), types.depth());
+  const Index nodes = compactTypes.nodeCount();
+  if (compact.rows() != D * nodes || compact.cols() != D * nodes)
+    throw InputError("lattice", "the compact operator is " + std::to_string(compact.rows()) + " x " +
+                                    std::to_string(compact.cols()) + ", the compact lattice has " +
+                                    std::to_string(D * nodes) + " unknowns");
+  // Per compact node (= type): offset -> block, offsets ordered like node indices (z, y, x).
+  using Offset = std::array<Index, D>;
+  auto before = [](const Offset& a, const Offset& b) {
+    for (int k = D - 1; k >= 0; --k)
+      if (a[static_cast<std::size_t>(k)] != b[static_cast<std::size_t>(k)])
+        return a[static_cast<std::size_t>(k)] < b[static_cast<std::size_t>(k)];
+    return false;
+  };
+  std::vector<std::map<Offset, std::array<Real, D * D>, decltype(before)>> rows(
+      static_cast<std::size_t>(nodes), std::map<Offset, std::array<Real, D * D>, decltype(before)>(before));
+  for (int k = 0; k < compact.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(compact, k); it; ++it) {
+      if (it.value() == 0) continue;
+      const Index rowNode = it.row() / D, colNode = it.col() / D;
+      const std::array<Index, D> r = compactTypes.node(rowNode), c = compactTypes.node(colNode);
+      Offset o{};
+      for (int a = 0; a < D; ++a) o[static_cast<std::size_t>(a)] = c[static_cast<std::size_t>(a)] - r[static_cast<std::size_t>(a)];
+      auto [entry, fresh] = rows[static_cast<std::size_t>(rowNode)].try_emplace(o);
+      if (fresh) entry->second.fill(0);
+      entry->second[static_cast<std::size_t>(D * (it.row() % D) + it.col() % D)] = it.value();
+    }
+  start_.assign(1, 0);
+  for (const auto& row : rows) {
+    for (const auto& [o, b] : row) {
+      offset_.push_back(o);
+      block_.insert(block_.end(), b.begin(), b.end());
+    }
+    start_.push_back(static_cast<Index>(offset_.size()));
+  }
+  bind();
+}
+
+template <int D>
+void LatticeStencils<D>::bind() {
+  flat_.resize(offset_.size());
+  for (std::size_t e = 0; e < offset_.size(); ++e) {
+    Index flat = 0;
+    for (int a = D - 1; a >= 0; --a) flat = flat * types_.nodes()[static_cast<std::size_t>(a)] + offset_[e][static_cast<std::size_t>(a)];
+    flat_[e] = flat;
+  }
+}
+
+template <int D>
+LatticeStencils<D> LatticeStencils<D>::on(const LatticeRowTypes<D>& types) const {
+  if (types.depth() != types_.depth() || types.typeCount() != types_.typeCount())
+    throw InputError("lattice", "stencils of depth " + std::to_string(types_.depth()) + " and " +
+                                    std::to_string(types_.typeCount()) + " types moved to a lattice with " +
+                                    std::to_string(types.typeCount()) + " types at depth " + std::to_string(types.depth()));
+  LatticeStencils<D> moved = *this;
+  moved.types_ = types;
+  moved.bind();
+  return moved;
+}
+
+template <int D>
+bool LatticeStencils<D>::blockDiagonal() const {
+  for (const auto& o : offset_)
+    for (Index v : o)
+      if (v != 0) return false;
+  return true;
+}
+
+template <int D>
+std::size_t LatticeStencils<D>::bytes() const {
+  return start_.size() * sizeof(Index) + offset_.size() * (sizeof(std::array<Index, D>) + sizeof(Index)) +
+         block_.size() * sizeof(Real);
+}
+
+template <int D>
+void LatticeStencils<D>::multiply(const Vector& x, Vector& y) const {
+  y.resize(D * types_.nodeCount());
+  const Real* in = x.data();
+  Real* out = y.data();
+  forEachLatticeNode<D>(types_, [&](Index p, Index type) { rowProduct(type, p, in, out + D * p); });
+}
+
+template <int D>
+Vector LatticeStencils<D>::absoluteRowSums() const {
+  Vector sums(D * types_.nodeCount());
+  forEachLatticeNode<D>(types_, [&](Index p, Index type) {
+    for (int c = 0; c < D; ++c) {
+      Real s = 0;
+      for (Index e = begin(type); e < end(type); ++e)
+        for (int d = 0; d < D; ++d) s += std::abs(block(e)[D * c + d]);
+      sums[D * p + c] = s;
+    }
+  });
+  return sums;
+}
+
+template <int D>
+SparseMatrix LatticeStencils<D>::toSparse() const {
+  const Index n = types_.nodeCount();
+  std::vector<Triplet> entries;
+  for (Index p = 0; p < n; ++p) {
+    const Index type = types_.typeOf(types_.node(p));
+    for (Index e = begin(type); e < end(type); ++e)
+      for (int c = 0; c < D; ++c)
+        for (int d = 0; d < D; ++d)
+          if (block(e)[D * c + d] != 0)
+            entries.emplace_back(static_cast<int>(D * p + c), static_cast<int>(D * (p + flat_[static_cast<std::size_t>(e)]) + d),
+                                 block(e)[D * c + d]);
+  }
+  SparseMatrix m(D * n, D * n);
+  m.setFromTriplets(entries.begin(), entries.end());
+  return m;
+}
+
+template <int D>
+Real LatticeStencils<D>::mismatch(const SparseMatrix& matrix) const {
+  const Real scale = matrix.nonZeros() > 0 ? matrix.coeffs().cwiseAbs().maxCoeff() : 0;
+  if (matrix.rows() != D * types_.nodeCount()) return std::numeric_limits<Real>::infinity();
+  const SparseMatrix difference = toSparse() - matrix;
+  const Real largest = difference.nonZeros() > 0 ? difference.coeffs().cwiseAbs().maxCoeff() : 0;
+  return scale > 0 ? largest / scale : largest;
+}
+
+template class LatticeStencils<1>;
+template class LatticeStencils<2>;
+template class LatticeStencils<3>;
+
+}  // namespace mfwave

@@ -1,0 +1,118 @@
+#pragma once
+// An operator on a box lattice stored as one stencil per row type (LatticeRowTypes) instead of one
+// row per node: each stencil is a list of (lattice offset, D x D block), the block coupling the
+// node's D components to those of the node at the offset. A node's row is its type's stencil,
+// addressed by lattice arithmetic: no neighbour list, no per-row storage. On a 3-D block the
+// whole table is a few hundred stencils whatever the lattice size.
+//
+// The table is read off an operator assembled on the compact lattice of the row types (the same
+// method, the same faces, 2 depth + 1 nodes per axis), so the method's own assembly stays the one
+// definition of every row; mismatch() checks it against an assembly on a larger lattice.
+//
+// Products are OpenMP-parallel over lattice lines; every row is summed in the same order whatever
+// the thread count, so results are bitwise the same on any number of threads.
+
+#include "core/Types.hpp"
+#include "lattice/LatticeRowTypes.hpp"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace mfwave {
+
+template <int D>
+class LatticeStencils {
+ public:
+  LatticeStencils() = default;
+  // The stencils of `compact`, assembled on the compact lattice of `types` (rows and columns
+  // node * D + component), addressed on the lattice of `types`. Throws InputError("lattice") when
+  // the matrix has the wrong size.
+  LatticeStencils(const LatticeRowTypes<D>& types, const SparseMatrix& compact);
+
+  const LatticeRowTypes<D>& types() const { return types_; }
+  bool empty() const { return offset_.empty(); }
+  Index typeCount() const { return static_cast<Index>(start_.size()) - 1; }
+  Index entryCount() const { return static_cast<Index>(offset_.size()); }
+  Index begin(Index type) const { return start_[static_cast<std::size_t>(type)]; }
+  Index end(Index type) const { return start_[static_cast<std::size_t>(type) + 1]; }
+  const std::array<Index, D>& offset(Index entry) const { return offset_[static_cast<std::size_t>(entry)]; }
+  // The D x D block of an entry, row-major.
+  const Real* block(Index entry) const { return &block_[static_cast<std::size_t>(D * D * entry)]; }
+  // True when every entry sits at offset zero (a block-diagonal operator: mass, lumped dashpots).
+  bool blockDiagonal() const;
+  // The same stencils addressed on the lattice of `types` (same depth, any size).
+  LatticeStencils<D> on(const LatticeRowTypes<D>& types) const;
+  // Bytes of the table.
+  std::size_t bytes() const;
+
+  // y = A x and the row sums of |A|, over the whole lattice.
+  void multiply(const Vector& x, Vector& y) const;
+  Vector absoluteRowSums() const;
+  // The operator as a sparse matrix (for checks on small lattices).
+  SparseMatrix toSparse() const;
+  // max |A_stencil - matrix| / max |matrix| for `matrix` assembled on the lattice of types() by the
+  // same method: 0 (up to round-off) when the stencils give every row of it.
+  Real mismatch(const SparseMatrix& matrix) const;
+
+  // The row of node p (of type `type`) applied to x: out[c] = sum_e sum_d B_e[c][d] x[D (p + o_e) + d].
+  void rowProduct(Index type, Index p, const Real* x, Real* out) const {
+    Real acc[D] = {};
+    for (Index e = start_[static_cast<std::size_t>(type)]; e < start_[static_cast<std::size_t>(type) + 1]; ++e) {
+      const Real* b = &block_[static_cast<std::size_t>(D * D * e)];
+      const Real* xe = x + D * (p + flat_[static_cast<std::size_t>(e)]);
+      for (int c = 0; c < D; ++c)
+        for (int d = 0; d < D; ++d) acc[c] += b[D * c + d] * xe[d];
+    }
+    for (int c = 0; c < D; ++c) out[c] = acc[c];
+  }
+
+ private:
+  void bind();  // flat offsets on types_'s lattice
+
+  LatticeRowTypes<D> types_;
+  std::vector<Index> start_;                  // typeCount + 1
+  std::vector<std::array<Index, D>> offset_;  // per entry
+  std::vector<Real> block_;                   // D * D per entry
+  std::vector<Index> flat_;                   // per entry: the offset as a node-index difference
+};
+
+// Calls f(p, type) for every node p of the lattice (x fastest), OpenMP-parallel over lines along x;
+// f must only write what belongs to node p. Lines are visited in a fixed partition, so per-line
+// results are the same on any thread count.
+template <int D, class Function>
+void forEachLatticeNode(const LatticeRowTypes<D>& types, Function&& f) {
+  const Index nx = types.nodes()[0];
+  const long lines = static_cast<long>(types.nodeCount() / nx);
+#pragma omp parallel for schedule(static) if (lines > 16 && types.nodeCount() > 20000)
+  for (long line = 0; line < lines; ++line) {
+    // the type of the line's first node without its x part
+    Index rest = line, base = 0, stride = types.compactNodes()[0];
+    for (int a = 1; a < D; ++a) {
+      const auto s = static_cast<std::size_t>(a);
+      base += stride * types.compactIndex(a, rest % types.nodes()[s]);
+      rest /= types.nodes()[s];
+      stride *= types.compactNodes()[s];
+    }
+    const Index p0 = static_cast<Index>(line) * nx;
+    for (Index i = 0; i < nx; ++i) f(p0 + i, base + types.compactIndex(0, i));
+  }
+}
+
+// sum over nodes of g(p, type), summed per line and then over lines in order: bitwise the same on
+// any thread count.
+template <int D, class Function>
+Real sumOverLatticeNodes(const LatticeRowTypes<D>& types, Function&& g) {
+  const Index nx = types.nodes()[0];
+  std::vector<Real> lineSums(static_cast<std::size_t>(types.nodeCount() / nx), 0.0);
+  forEachLatticeNode<D>(types, [&](Index p, Index type) { lineSums[static_cast<std::size_t>(p / nx)] += g(p, type); });
+  Real sum = 0;
+  for (Real s : lineSums) sum += s;
+  return sum;
+}
+
+extern template class LatticeStencils<1>;
+extern template class LatticeStencils<2>;
+extern template class LatticeStencils<3>;
+
+}  // namespace mfwave

@@ -1,0 +1,153 @@
+#include "methods/very_weak_sph/VeryWeakSphLattice.hpp"
+
+#include "core/Error.hpp"
+#include "core/TimeFunction.hpp"
+#include "particles/GhostLayers.hpp"
+#include "particles/Lattice.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace mfwave {
+namespace {
+
+constexpr Real kTolerance = 1e-12;
+
+// The settings on the box of `nodes` from the same lower corner, without what is not per row
+// type (patches, prescribed faces, filters) and with `tractions` as the face loads.
+template <int D>
+VeryWeakSphProblemSettings<D> onBox(const VeryWeakSphProblemSettings<D>& settings, const std::array<Index, D>& nodes,
+                                    std::vector<FaceTraction<D>> tractions) {
+  VeryWeakSphProblemSettings<D> s = settings;
+  s.storage = OperatorStorage::Sparse;
+  for (int a = 0; a < D; ++a)
+    s.upper[a] = settings.lower[a] + static_cast<Real>(nodes[static_cast<std::size_t>(a)] - 1) * settings.spacing;
+  s.faceTractions = std::move(tractions);
+  s.patches.clear();
+  s.prescribed.clear();
+  s.smoothingRate = 0;
+  s.deconvolution = false;
+  s.keepOperatorMatrix = false;
+  return s;
+}
+
+template <int D>
+ParticleSet<D> particlesOf(const VeryWeakSphProblemSettings<D>& s) {
+  ParticleSet<D> particles = makeLattice<D>(s.lower, s.upper, s.spacing);
+  if (s.ghostLayers > 0 && s.ghostFaces != 0)
+    addGhostLayers<D>(particles, s.lower, s.upper, s.spacing, s.ghostLayers, s.ghostFaces);
+  return particles;
+}
+
+}  // namespace
+
+template <int D>
+std::string latticeStorageObstacle(const VeryWeakSphProblemSettings<D>& settings) {
+  const VeryWeakSphVariant variant = settings.options.variant;
+  if (settings.smoothingRate > 0) return "it has no smoothing filter (method.smoothing_rate > 0)";
+  if (settings.deconvolution) return "it has no deconvolution (method.deconvolution = true)";
+  if (!settings.patches.empty() && variant != VeryWeakSphVariant::Galerkin)
+    return "it applies surface-patch loads for the galerkin variant only";
+  if (settings.transmittingFaces != 0 &&
+      (variant == VeryWeakSphVariant::Consistent ||
+       (variant == VeryWeakSphVariant::Published && settings.dashpotLumping == DashpotLumping::Consistent)))
+    return "its dashpot solve is per particle, and these dashpots couple particles";
+  return "";
+}
+
+template <int D>
+std::array<Index, D> checkedLatticeNodes(const ParticleSet<D>& particles, const VeryWeakSphProblemSettings<D>& settings) {
+  const Real dx = settings.spacing;
+  const std::array<Index, D> intervals = latticeIntervals<D>(settings.lower, settings.upper, dx);
+  std::array<Index, D> nodes{};
+  Index count = 1;
+  for (int a = 0; a < D; ++a) {
+    nodes[static_cast<std::size_t>(a)] = intervals[static_cast<std::size_t>(a)] + 1;
+    count *= nodes[static_cast<std::size_t>(a)];
+  }
+  if (particles.physicalCount() != count)
+    throw InputError("method.operator", "the lattice storage needs the particles of the box lattice (" +
+                                            std::to_string(count) + " nodes), got " +
+                                            std::to_string(particles.physicalCount()) + " physical particles");
+  const Real tolerance = 1e-6 * dx;
+  for (Index p = 0; p < count; ++p) {
+    Index rest = p;
+    for (int a = 0; a < D; ++a) {
+      const Index i = rest % nodes[static_cast<std::size_t>(a)];
+      rest /= nodes[static_cast<std::size_t>(a)];
+      const Real expected = settings.lower[a] + static_cast<Real>(i) * dx;
+      if (std::abs(particles.coordinate(a)[static_cast<std::size_t>(p)] - expected) > tolerance)
+        throw InputError("method.operator", "the lattice storage needs lattice particles in lattice order; particle " +
+                                                std::to_string(p) + " is not at its node (axis " + std::to_string(a) + ")");
+    }
+  }
+  return nodes;
+}
+
+template <int D>
+VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& settings,
+                                           const std::array<Index, D>& nodes, Index maxDepth) {
+  Real closest = std::numeric_limits<Real>::infinity();
+  for (Index depth = 1; depth <= maxDepth; ++depth) {
+    const LatticeRowTypes<D> types(nodes, depth);
+    const VeryWeakSphProblemSettings<D> compactSettings = onBox<D>(settings, types.compactNodes(), {});
+    VeryWeakSphProblem<D> compact(particlesOf<D>(compactSettings), compactSettings);
+    LinearSecondOrderSystem& system = compact.sparseSystem();
+    VeryWeakSphStencils<D> result;
+    result.mass = LatticeStencils<D>(types, system.mass());
+    result.stiffness = LatticeStencils<D>(types, system.stiffness());
+    if (system.hasDamping()) result.damping = LatticeStencils<D>(types, system.damping());
+
+    // The check: an assembly two nodes longer per axis (as far as the lattice goes) must be the
+    // stencils' rows. When the compact box is the whole box there is nothing to check.
+    if (types.compactNodes() != nodes) {
+      std::array<Index, D> checkNodes{};
+      for (int a = 0; a < D; ++a) {
+        const auto s = static_cast<std::size_t>(a);
+        checkNodes[s] = std::min(nodes[s], types.compactNodes()[s] + 2);
+      }
+      const LatticeRowTypes<D> checkTypes = types.on(checkNodes);
+      const VeryWeakSphProblemSettings<D> checkSettings = onBox<D>(settings, checkNodes, {});
+      VeryWeakSphProblem<D> check(particlesOf<D>(checkSettings), checkSettings);
+      LinearSecondOrderSystem& checked = check.sparseSystem();
+      result.mismatch = std::max(result.stiffness.on(checkTypes).mismatch(checked.stiffness()),
+                                 result.mass.on(checkTypes).mismatch(checked.mass()));
+      if (checked.hasDamping() != system.hasDamping()) result.mismatch = std::numeric_limits<Real>::infinity();
+      else if (system.hasDamping())
+        result.mismatch = std::max(result.mismatch, result.damping.on(checkTypes).mismatch(checked.damping()));
+      if (!(result.mismatch <= kTolerance)) {
+        closest = std::min(closest, result.mismatch);
+        continue;
+      }
+    }
+
+    // Face tractions at unit history, one compact assembly each.
+    const TimeFunction one = TimeFunction::constant(1);
+    for (const FaceTraction<D>& traction : settings.faceTractions) {
+      FaceTraction<D> unit = traction;
+      unit.history = &one;
+      const VeryWeakSphProblemSettings<D> loadSettings = onBox<D>(settings, types.compactNodes(), {unit});
+      VeryWeakSphProblem<D> loaded(particlesOf<D>(loadSettings), loadSettings);
+      Vector f;
+      loaded.system().force(0, f);
+      result.faceLoads.emplace_back(f.data(), f.data() + f.size());
+    }
+    return result;
+  }
+  throw InputError("method.operator", "the very weak SPH rows still change " + std::to_string(maxDepth) +
+                                          " nodes from a face (closest mismatch " + std::to_string(closest) +
+                                          "); use method.operator = \"sparse\"");
+}
+
+template std::string latticeStorageObstacle<1>(const VeryWeakSphProblemSettings<1>&);
+template std::string latticeStorageObstacle<2>(const VeryWeakSphProblemSettings<2>&);
+template std::string latticeStorageObstacle<3>(const VeryWeakSphProblemSettings<3>&);
+template std::array<Index, 1> checkedLatticeNodes<1>(const ParticleSet<1>&, const VeryWeakSphProblemSettings<1>&);
+template std::array<Index, 2> checkedLatticeNodes<2>(const ParticleSet<2>&, const VeryWeakSphProblemSettings<2>&);
+template std::array<Index, 3> checkedLatticeNodes<3>(const ParticleSet<3>&, const VeryWeakSphProblemSettings<3>&);
+template VeryWeakSphStencils<1> veryWeakSphStencils<1>(const VeryWeakSphProblemSettings<1>&, const std::array<Index, 1>&, Index);
+template VeryWeakSphStencils<2> veryWeakSphStencils<2>(const VeryWeakSphProblemSettings<2>&, const std::array<Index, 2>&, Index);
+template VeryWeakSphStencils<3> veryWeakSphStencils<3>(const VeryWeakSphProblemSettings<3>&, const std::array<Index, 3>&, Index);
+
+}  // namespace mfwave

@@ -1,0 +1,49 @@
+#pragma once
+// The very weak SPH on a box lattice stored as stencils per row type (issue 18).
+//
+// Every variant's rows depend only on where a particle sits relative to the box faces (the
+// lattice is uniform and the boundary terms are per face), so the operator of a large box is the
+// operator of a compact box of 2 depth + 1 nodes per axis with its middle row repeated. The
+// compact box is assembled by the method itself (VeryWeakSphProblem with sparse storage: same
+// variant, kernel, ghosts, faces, dashpots), its rows become the stencil table (LatticeStencils),
+// and the depth is the smallest for which an assembly two nodes longer per axis is reproduced to
+// round-off (1e-12 relative). No formula is written twice, and no step holds N x neighbours.
+
+#include "lattice/LatticeStencils.hpp"
+#include "methods/very_weak_sph/VeryWeakSphProblem.hpp"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace mfwave {
+
+template <int D>
+struct VeryWeakSphStencils {
+  LatticeStencils<D> mass, damping, stiffness;  // damping empty without transmitting faces
+  // Per entry of settings.faceTractions: the nodal force of its traction at unit history, D
+  // values per row type.
+  std::vector<std::vector<Real>> faceLoads;
+  Real mismatch = 0;  // against the check assembly (0 when the compact box is the whole box)
+};
+
+// Why the lattice storage cannot run these settings ("" when it can): the smoothing filter and
+// the deconvolution are not stencils yet, surface patches are exact for the galerkin variant only,
+// and the consistent and consistently lumped dashpots couple particles (the lattice system's
+// dashpot solve is per particle).
+template <int D>
+std::string latticeStorageObstacle(const VeryWeakSphProblemSettings<D>& settings);
+
+// The nodes per axis of the lattice of settings.lower, settings.upper, settings.spacing, after
+// checking that the physical particles are that lattice in makeLattice's order (x fastest). Throws
+// InputError("method.operator") naming the first particle that is not.
+template <int D>
+std::array<Index, D> checkedLatticeNodes(const ParticleSet<D>& particles, const VeryWeakSphProblemSettings<D>& settings);
+
+// The stencils of `settings` on a lattice of `nodes` per axis. Throws InputError("method.operator")
+// when no depth up to maxDepth reproduces the check assembly.
+template <int D>
+VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& settings,
+                                           const std::array<Index, D>& nodes, Index maxDepth = 8);
+
+}  // namespace mfwave
