@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "systems/LinearOperatorSystem.hpp"
+#include "systems/ParallelVector.hpp"
 #include "integrators/PrescribedDisplacement.hpp"
 
 namespace mfwave {
@@ -54,7 +55,7 @@ void CentralDifference::initialise(SecondOrderSystem& system, Real t0, const Vec
 void CentralDifference::step() {
   requireInitialised();
   const Index n = vHalf_.size();
-  vHalf_.noalias() += dt_ * a_;  // v_{n+1/2} = v_{n-1/2} + dt a_n (Ding-Long-Wu eq. 23 / 32)
+  addScaled(vHalf_, dt_, a_);  // v_{n+1/2} = v_{n-1/2} + dt a_n (Ding-Long-Wu eq. 23 / 32)
   if (filter_) {
     filter_(dt_, vHalf_);  // conservative smoothing, Ding-Long-Wu eq. (33)
     if (vHalf_.size() != n)
@@ -62,7 +63,7 @@ void CentralDifference::step() {
                                               std::to_string(vHalf_.size()));
   }
   if (prescribed_) prescribed_->imposeHalfStepVelocity(u_, dt_, vHalf_);  // Ding-Long-Wu eq. (30)
-  u_.noalias() += dt_ * vHalf_;  // u_{n+1} = u_n + dt v_{n+1/2}
+  addScaled(u_, dt_, vHalf_);  // u_{n+1} = u_n + dt v_{n+1/2}
   if (prescribed_) prescribed_->imposeDisplacement(u_);  // exactly g_{n+1}, not g_{n+1} + round-off
   advanceClock();
   closeStep();
@@ -75,7 +76,7 @@ void CentralDifference::closeStep() {
     // Ding-Long-Wu eq. (32): (M + dt/2 C) a_{n+1} = f_{n+1} - K u_{n+1} - C v_{n+1/2}
     dampingSolver_->acceleration(time_, u_, vHalf_, prescribed_ ? prescribed_->acceleration() : noPrescribedAcceleration_,
                                  a_);
-    v_ = vHalf_ + 0.5 * dt_ * a_;
+    assignSum(v_, vHalf_, 0.5 * dt_, a_);
   } else {
     closeHalfStep(vHalf_, vPredict_);  // predictor (if needed), a_{n+1}, v_{n+1}
   }

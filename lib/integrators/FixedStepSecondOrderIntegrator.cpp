@@ -1,6 +1,7 @@
 #include "integrators/FixedStepSecondOrderIntegrator.hpp"
 
 #include "core/Error.hpp"
+#include "systems/ParallelVector.hpp"
 
 namespace mfwave {
 
@@ -19,12 +20,12 @@ void FixedStepSecondOrderIntegrator::bind(SecondOrderSystem& system, Real t0, co
 
 void FixedStepSecondOrderIntegrator::closeHalfStep(const Vector& vHalf, Vector& vPredict) {
   if (system_->dependsOnVelocity()) {
-    vPredict = vHalf + 0.5 * dt_ * a_;
+    assignSum(vPredict, vHalf, 0.5 * dt_, a_);
     system_->acceleration(time_, u_, vPredict, a_);
   } else {
     system_->acceleration(time_, u_, vHalf, a_);  // v is ignored by the system
   }
-  v_ = vHalf + 0.5 * dt_ * a_;
+  assignSum(v_, vHalf, 0.5 * dt_, a_);
 }
 
 void FixedStepSecondOrderIntegrator::requireInitialised() const {

@@ -134,21 +134,25 @@ template <int D>
 void LatticeSecondOrderSystem<D>::fusedSolve(const std::vector<Real>& inverseBlocks, const Real* u, const Real* v,
                                              Real* a) const {
   const bool damped = hasDamping_ && v != nullptr;
-  forEachLatticeNode<D>(types(), [&](Index p, Index type) {
-    Real product[D], r[D];
-    stiffness_.rowProduct(type, p, u, product);
-    for (int c = 0; c < D; ++c) r[c] = a[D * p + c] - product[c];
-    if (damped && damping_.begin(type) != damping_.end(type)) {
-      damping_.rowProduct(type, p, v, product);
-      for (int c = 0; c < D; ++c) r[c] -= product[c];
-    }
-    const Real* b = &inverseBlocks[static_cast<std::size_t>(D * D * type)];
-    for (int c = 0; c < D; ++c) {
-      Real s = 0;
-      for (int d = 0; d < D; ++d) s += b[D * c + d] * r[d];
-      a[D * p + c] = s;
-    }
-  });
+  auto hasDashpot = [&](Index type) { return damped && damping_.begin(type) != damping_.end(type); };
+  stiffness_.forEachProduct(
+      u,
+      [&](Index p, Index type, const Real* ku, Index stride) {
+        Real r[D];
+        for (int c = 0; c < D; ++c) r[c] = a[D * p + c] - ku[c * stride];
+        if (hasDashpot(type)) {
+          Real cv[D];
+          damping_.rowProduct(type, p, v, cv);
+          for (int c = 0; c < D; ++c) r[c] -= cv[c];
+        }
+        const Real* b = &inverseBlocks[static_cast<std::size_t>(D * D * type)];
+        for (int c = 0; c < D; ++c) {
+          Real s = 0;
+          for (int d = 0; d < D; ++d) s += b[D * c + d] * r[d];
+          a[D * p + c] = s;
+        }
+      },
+      hasDashpot);
 }
 
 template <int D>
@@ -179,14 +183,18 @@ Real LatticeSecondOrderSystem<D>::kineticEnergy(const Vector& v) const {
 
 template <int D>
 Real LatticeSecondOrderSystem<D>::strainEnergy(const Vector& u) const {
+  // per-line sums, then over lines in order: the same on any thread count
   const Real* x = u.data();
-  return 0.5 * sumOverLatticeNodes<D>(types(), [&](Index p, Index type) {
-    Real ku[D];
-    stiffness_.rowProduct(type, p, x, ku);
+  const Index nx = types().nodes()[0];
+  std::vector<Real> lineSums(static_cast<std::size_t>(types().nodeCount() / nx), 0.0);
+  stiffness_.forEachProduct(x, [&](Index p, Index, const Real* ku, Index stride) {
     Real s = 0;
-    for (int c = 0; c < D; ++c) s += x[D * p + c] * ku[c];
-    return s;
+    for (int c = 0; c < D; ++c) s += x[D * p + c] * ku[c * stride];
+    lineSums[static_cast<std::size_t>(p / nx)] += s;
   });
+  Real sum = 0;
+  for (Real s : lineSums) sum += s;
+  return 0.5 * sum;
 }
 
 template <int D>

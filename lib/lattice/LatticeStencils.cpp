@@ -52,7 +52,9 @@ LatticeStencils<D>::LatticeStencils(const LatticeRowTypes<D>& types, const Spars
 template <int D>
 void LatticeStencils<D>::bind() {
   flat_.resize(offset_.size());
+  dx_.resize(offset_.size());
   for (std::size_t e = 0; e < offset_.size(); ++e) {
+    dx_[e] = offset_[e][0];
     Index flat = 0;
     for (int a = D - 1; a >= 0; --a) flat = flat * types_.nodes()[static_cast<std::size_t>(a)] + offset_[e][static_cast<std::size_t>(a)];
     flat_[e] = flat;
@@ -81,16 +83,17 @@ bool LatticeStencils<D>::blockDiagonal() const {
 
 template <int D>
 std::size_t LatticeStencils<D>::bytes() const {
-  return start_.size() * sizeof(Index) + offset_.size() * (sizeof(std::array<Index, D>) + sizeof(Index)) +
+  return start_.size() * sizeof(Index) + offset_.size() * (sizeof(std::array<Index, D>) + 2 * sizeof(Index)) +
          block_.size() * sizeof(Real);
 }
 
 template <int D>
 void LatticeStencils<D>::multiply(const Vector& x, Vector& y) const {
   y.resize(D * types_.nodeCount());
-  const Real* in = x.data();
   Real* out = y.data();
-  forEachLatticeNode<D>(types_, [&](Index p, Index type) { rowProduct(type, p, in, out + D * p); });
+  forEachProduct(x.data(), [&](Index p, Index, const Real* product, Index stride) {
+    for (int c = 0; c < D; ++c) out[D * p + c] = product[c * stride];
+  });
 }
 
 template <int D>

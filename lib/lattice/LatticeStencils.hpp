@@ -14,9 +14,11 @@
 
 #include "core/Types.hpp"
 #include "lattice/LatticeRowTypes.hpp"
+#include "lattice/StencilRun.hpp"
 
 #include <array>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace mfwave {
@@ -55,6 +57,23 @@ class LatticeStencils {
   // same method: 0 (up to round-off) when the stencils give every row of it.
   Real mismatch(const SparseMatrix& matrix) const;
 
+  // The stencil of a type, for stencilRun.
+  StencilView view(Index type) const {
+    const auto b = static_cast<std::size_t>(begin(type));
+    return {block_.data() + D * D * b, flat_.data() + b, dx_.data() + b, end(type) - begin(type)};
+  }
+
+  // Calls f(p, type, product, stride) for every node p with the row applied to x: component c of
+  // (A x)_p is product[c * stride]. Lines along x run in parallel (forEachLatticeLine); the middle
+  // of each line, where the type is the same, goes through stencilRun. `direct(type)` true keeps a
+  // run's nodes on the per-node path (the caller's choice, e.g. where it adds a second stencil).
+  template <class Function, class Direct>
+  void forEachProduct(const Real* x, Function&& f, Direct&& direct) const;
+  template <class Function>
+  void forEachProduct(const Real* x, Function&& f) const {
+    forEachProduct(x, std::forward<Function>(f), [](Index) { return false; });
+  }
+
   // The row of node p (of type `type`) applied to x: out[c] = sum_e sum_d B_e[c][d] x[D (p + o_e) + d].
   void rowProduct(Index type, Index p, const Real* x, Real* out) const {
     Real acc[D] = {};
@@ -75,7 +94,60 @@ class LatticeStencils {
   std::vector<std::array<Index, D>> offset_;  // per entry
   std::vector<Real> block_;                   // D * D per entry
   std::vector<Index> flat_;                   // per entry: the offset as a node-index difference
+  std::vector<Index> dx_;                     // per entry: the offset's x part
 };
+
+// Calls f(first, base) for every line of nodes along x: first is its first node, base the type of
+// its nodes without the x part (type = base + compactIndex(0, i)). OpenMP-parallel over lines in a
+// fixed static partition.
+template <int D, class Function>
+void forEachLatticeLine(const LatticeRowTypes<D>& types, Function&& f) {
+  const Index nx = types.nodes()[0];
+  const long lines = static_cast<long>(types.nodeCount() / nx);
+#pragma omp parallel for schedule(static) if (lines > 16 && types.nodeCount() > 20000)
+  for (long line = 0; line < lines; ++line) {
+    Index rest = line, base = 0, stride = types.compactNodes()[0];
+    for (int a = 1; a < D; ++a) {
+      const auto s = static_cast<std::size_t>(a);
+      base += stride * types.compactIndex(a, rest % types.nodes()[s]);
+      rest /= types.nodes()[s];
+      stride *= types.compactNodes()[s];
+    }
+    f(static_cast<Index>(line) * nx, base);
+  }
+}
+
+template <int D>
+template <class Function, class Direct>
+void LatticeStencils<D>::forEachProduct(const Real* x, Function&& f, Direct&& direct) const {
+  const Index nx = types_.nodes()[0], depth = types_.depth();
+  const bool runs = types_.compactNodes()[0] < nx;  // else every x position is its own type
+  const std::uint64_t pass = nextStencilProduct();
+  forEachLatticeLine<D>(types_, [&](Index first, Index base) {
+    Real product[D];
+    auto single = [&](Index i) {
+      const Index type = base + types_.compactIndex(0, i);
+      rowProduct(type, first + i, x, product);
+      f(first + i, type, product, Index{1});
+    };
+    if (!runs) {
+      for (Index i = 0; i < nx; ++i) single(i);
+      return;
+    }
+    for (Index i = 0; i < depth; ++i) single(i);
+    const Index type = base + depth, length = nx - 2 * depth;
+    if (direct(type)) {
+      for (Index i = depth; i < nx - depth; ++i) single(i);
+    } else {
+      thread_local StencilRunCache cache;
+      thread_local std::vector<Real> run;
+      if (run.size() < static_cast<std::size_t>(D * length)) run.resize(static_cast<std::size_t>(D * length));
+      stencilRun<D>(view(type), x, first + depth, length, run.data(), cache, pass);
+      for (Index l = 0; l < length; ++l) f(first + depth + l, type, run.data() + l, length);
+    }
+    for (Index i = nx - depth; i < nx; ++i) single(i);
+  });
+}
 
 // Calls f(p, type) for every node p of the lattice (x fastest), OpenMP-parallel over lines along x;
 // f must only write what belongs to node p. Lines are visited in a fixed partition, so per-line
