@@ -129,19 +129,6 @@ Plan readPlan(SceneReader& reader) {
     }
   }
   std::sort(grids.begin() + 1, grids.end(), [](const GeometrySpec& a, const GeometrySpec& b) { return a.spacing > b.spacing; });
-  // A whole run holds about 6.7 KiB per particle (docs/performance.md); with the ghosts and a
-  // margin, 8 KiB. A spacing that needs more than the machine has is refused before any case.
-  const double machine = physicalMemoryMiB();
-  for (const GeometrySpec& grid : grids) {
-    const double need = 8.0 / 1024.0 * static_cast<double>(grid.particleCount());
-    if (need > machine)
-      reader.fail(grid.spacing == g.spacing ? "geometry.spacing" : "study.spacings",
-                  "dx = " + scene::formatNumber(grid.spacing) + " needs about " +
-                      scene::formatNumber(std::round(need / 1024.0)) + " GiB (" +
-                      std::to_string(grid.particleCount()) + " particles at about 8 KiB each); this machine has " +
-                      scene::formatNumber(std::round(machine / 1024.0)) + " GiB");
-  }
-
   // At the scene's spacing: the main variant (with frames), the published figure cases, the free
   // block; then every other spacing, for each variant, cheapest first.
   plan.cases.push_back({caseName(main.variantName(), g.spacing), g, false, atSpacing(main, g.spacing, g.spacing), true});
@@ -171,6 +158,23 @@ Plan readPlan(SceneReader& reader) {
   }
   // Every case's combination of variant, filter, deconvolution, faces and integrator, before any work.
   for (const CaseSettings& c : plan.cases) checkVeryWeakSphScene(reader, scene, c.method, kProgram);
+  // A case that needs more memory than the machine has is refused before any case runs: a whole
+  // run holds about 6.7 KiB per particle with the sparse matrices, 8 KiB with the ghosts and a
+  // margin, and about 200 bytes with the lattice stencils, 320 with a margin (docs/performance.md).
+  const double machine = physicalMemoryMiB();
+  for (const CaseSettings& c : plan.cases) {
+    const bool lattice =
+        veryWeakSphProblemSettings<3>(scene, c.geometry, c.method, !c.freeFaces).storage == OperatorStorage::Lattice;
+    const double bytes = lattice ? 320.0 : 8192.0;
+    const double need = bytes / (1024.0 * 1024.0) * static_cast<double>(c.geometry.particleCount());
+    if (need > machine)
+      reader.fail(c.geometry.spacing == g.spacing ? "geometry.spacing" : "study.spacings",
+                  "case " + c.name + " (dx = " + scene::formatNumber(c.geometry.spacing) + ") needs about " +
+                      scene::formatNumber(std::round(need / 1024.0)) + " GiB (" +
+                      std::to_string(c.geometry.particleCount()) + " particles at about " +
+                      scene::formatNumber(bytes) + " bytes each, " + (lattice ? "lattice stencils" : "sparse matrices") +
+                      "); this machine has " + scene::formatNumber(std::round(machine / 1024.0)) + " GiB");
+  }
   return plan;
 }
 

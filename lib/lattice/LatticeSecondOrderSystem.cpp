@@ -1,10 +1,12 @@
 #include "lattice/LatticeSecondOrderSystem.hpp"
 
 #include "core/Error.hpp"
+#include "solvers/FactorisedMatrix.hpp"
 
 #include <Eigen/LU>
 
 #include <cmath>
+#include <algorithm>
 #include <map>
 #include <string>
 
@@ -83,6 +85,121 @@ class LatticeCentredDamping : public CentredDampingSolve {
   std::map<Index, Prescribed> particles_;
 };
 
+// Eq. (32) with dashpots that couple particles (the consistent variant's, through the corrected
+// traction rows): M + dt/2 C is assembled and factorised on the nodes the dashpots reach only (a
+// few layers under the transmitting faces); every other node divides by its mass block. Prescribed
+// dofs among them get identity rows, so the solve imposes their accelerations.
+template <int D>
+class LatticeCoupledCentredDamping : public CentredDampingSolve {
+ public:
+  LatticeCoupledCentredDamping(const LatticeSecondOrderSystem<D>& system, Real dt, const std::vector<Index>& prescribedDofs)
+      : system_(system), inverseMass_(system.inverseBlocks(0)) {
+    const LatticeRowTypes<D>& types = system.types();
+    const LatticeStencils<D>& c = system.damping();
+    const Index n = types.nodeCount();
+    // the nodes with dashpot rows, and the nodes their columns reach
+    for (Index p = 0; p < n; ++p) {
+      const Index type = types.typeOf(types.node(p));
+      if (c.begin(type) == c.end(type)) continue;
+      nodes_.push_back(p);
+      for (Index e = c.begin(type); e < c.end(type); ++e) nodes_.push_back(p + flatOffset(types, c.offset(e)));
+    }
+    std::sort(nodes_.begin(), nodes_.end());
+    nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
+    const auto local = [&](Index p) {
+      return static_cast<Index>(std::lower_bound(nodes_.begin(), nodes_.end(), p) - nodes_.begin());
+    };
+    std::vector<char> prescribed(static_cast<std::size_t>(D) * nodes_.size(), 0);
+    for (std::size_t i = 0; i < prescribedDofs.size(); ++i) {
+      const Index dof = prescribedDofs[i];
+      if (dof < 0 || dof >= system.size())
+        throw InputError("prescribed_displacement", "dof " + std::to_string(dof) + " is outside the system's " +
+                                                        std::to_string(system.size()) + " unknowns");
+      const Index node = dof / D;
+      const Index at = local(node);
+      if (at < static_cast<Index>(nodes_.size()) && nodes_[static_cast<std::size_t>(at)] == node) {
+        prescribed[static_cast<std::size_t>(D * at + dof % D)] = 1;
+        inside_.emplace_back(D * at + dof % D, static_cast<Index>(i));
+      } else {
+        outside_.emplace_back(dof, static_cast<Index>(i));
+      }
+    }
+    std::vector<Triplet> entries;
+    const LatticeStencils<D>& m = system.mass();
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+      const Index p = nodes_[k];
+      const Index type = types.typeOf(types.node(p));
+      auto add = [&](const LatticeStencils<D>& table, Index e, Real scale) {
+        const Index q = local(p + flatOffset(types, table.offset(e)));
+        for (int a = 0; a < D; ++a) {
+          const std::size_t row = static_cast<std::size_t>(D) * k + static_cast<std::size_t>(a);
+          if (prescribed[row]) continue;
+          for (int b = 0; b < D; ++b) {
+            const Real value = scale * table.block(e)[D * a + b];
+            if (value != 0) entries.emplace_back(static_cast<int>(row), static_cast<int>(D * q + b), value);
+          }
+        }
+      };
+      for (Index e = m.begin(type); e < m.end(type); ++e) add(m, e, 1.0);
+      for (Index e = c.begin(type); e < c.end(type); ++e) add(c, e, 0.5 * dt);
+      for (int a = 0; a < D; ++a)
+        if (prescribed[static_cast<std::size_t>(D) * k + static_cast<std::size_t>(a)])
+          entries.emplace_back(static_cast<int>(D * static_cast<Index>(k) + a), static_cast<int>(D * static_cast<Index>(k) + a), 1.0);
+    }
+    const Index size = D * static_cast<Index>(nodes_.size());
+    SparseMatrix matrix(size, size);
+    matrix.setFromTriplets(entries.begin(), entries.end());
+    solver_.factorise(matrix, "the dashpot rows of M + dt/2 C on the lattice");
+    rhs_.resize(size);
+    solution_.resize(size);
+  }
+
+  void acceleration(Real t, const Vector& u, const Vector& vHalf, const Vector& prescribedAcceleration,
+                    Vector& a) override {
+    system_.force(t, a);
+    // M^-1 (f - K u - C vHalf) everywhere; on the dashpot nodes M times it is the right-hand side
+    system_.fusedSolve(inverseMass_, u.data(), vHalf.data(), a.data());
+    const LatticeRowTypes<D>& types = system_.types();
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+      const Index p = nodes_[k];
+      Real block[D * D];
+      massBlock(types.typeOf(types.node(p)), block);
+      for (int c = 0; c < D; ++c) {
+        Real s = 0;
+        for (int d = 0; d < D; ++d) s += block[D * c + d] * a[D * p + d];
+        rhs_[D * static_cast<Index>(k) + c] = s;
+      }
+    }
+    for (const auto& [row, i] : inside_) rhs_[row] = prescribedAcceleration[i];
+    solver_.solve(rhs_, solution_);
+    for (std::size_t k = 0; k < nodes_.size(); ++k)
+      for (int c = 0; c < D; ++c) a[D * nodes_[k] + c] = solution_[D * static_cast<Index>(k) + c];
+    // prescribed dofs away from the dashpots: a lumped mass does not couple them
+    for (const auto& [dof, i] : outside_) a[dof] = prescribedAcceleration[i];
+  }
+
+ private:
+  static Index flatOffset(const LatticeRowTypes<D>& types, const std::array<Index, D>& offset) {
+    Index flat = 0;
+    for (int k = D - 1; k >= 0; --k) flat = flat * types.nodes()[static_cast<std::size_t>(k)] + offset[static_cast<std::size_t>(k)];
+    return flat;
+  }
+  void massBlock(Index type, Real* out) const {
+    const LatticeStencils<D>& m = system_.mass();
+    for (int k = 0; k < D * D; ++k) out[k] = 0;
+    for (Index e = m.begin(type); e < m.end(type); ++e)
+      for (int k = 0; k < D * D; ++k) out[k] += m.block(e)[k];
+  }
+
+  const LatticeSecondOrderSystem<D>& system_;
+  std::vector<Real> inverseMass_;
+  std::vector<Index> nodes_;                     // sorted: the nodes of the factorised block
+  std::vector<std::pair<Index, Index>> inside_;  // (row of the block, position in the prescribed list)
+  std::vector<std::pair<Index, Index>> outside_; // (dof, position in the prescribed list)
+  FactorisedMatrix solver_;
+  Vector rhs_, solution_;
+};
+
 }  // namespace
 
 template <int D>
@@ -96,8 +213,6 @@ LatticeSecondOrderSystem<D>::LatticeSecondOrderSystem(LatticeStencils<D> mass, L
   if (!damping_.empty()) {
     if (damping_.typeCount() != typeCount || damping_.types().nodeCount() != stiffness_.types().nodeCount())
       throw InputError("damping", "the dashpot stencils are not on the stiffness's lattice");
-    if (!damping_.blockDiagonal())
-      throw InputError("damping", "the lattice system needs dashpots on each particle's own dofs (block-diagonal)");
     hasDamping_ = damping_.entryCount() > 0;
   }
   inverseMass_ = inverseBlocks(0);
@@ -200,15 +315,37 @@ Real LatticeSecondOrderSystem<D>::strainEnergy(const Vector& u) const {
 template <int D>
 Real LatticeSecondOrderSystem<D>::dampingPower(const Vector& v) const {
   if (!hasDamping_) return 0;
+  // Line by line, visiting only the nodes whose type has dashpots (the surface): per-line sums,
+  // then over lines in order, the same on any thread count.
   const Real* x = v.data();
-  return sumOverLatticeNodes<D>(types(), [&](Index p, Index type) {
-    if (damping_.begin(type) == damping_.end(type)) return 0.0;
-    Real cv[D];
-    damping_.rowProduct(type, p, x, cv);
-    Real s = 0;
-    for (int c = 0; c < D; ++c) s += x[D * p + c] * cv[c];
-    return s;
+  const LatticeRowTypes<D>& t = types();
+  const Index nx = t.nodes()[0];
+  std::vector<Real> lineSums(static_cast<std::size_t>(t.nodeCount() / nx), 0.0);
+  forEachLatticeLine<D>(t, [&](Index first, Index base) {
+    Real sum = 0;
+    auto node = [&](Index i) {
+      const Index type = base + t.compactIndex(0, i);
+      if (damping_.begin(type) == damping_.end(type)) return;
+      Real cv[D];
+      damping_.rowProduct(type, first + i, x, cv);
+      for (int c = 0; c < D; ++c) sum += x[D * (first + i) + c] * cv[c];
+    };
+    const Index depth = t.depth();
+    const bool middle = t.compactNodes()[0] < nx;
+    if (!middle) {
+      for (Index i = 0; i < nx; ++i) node(i);
+    } else {
+      for (Index i = 0; i < depth; ++i) node(i);
+      const Index type = base + depth;
+      if (damping_.begin(type) != damping_.end(type))
+        for (Index i = depth; i < nx - depth; ++i) node(i);
+      for (Index i = nx - depth; i < nx; ++i) node(i);
+    }
+    lineSums[static_cast<std::size_t>(first / nx)] = sum;
   });
+  Real total = 0;
+  for (Real s : lineSums) total += s;
+  return total;
 }
 
 template <int D>
@@ -233,6 +370,8 @@ Vector LatticeSecondOrderSystem<D>::lumpedMass() const {
 template <int D>
 std::unique_ptr<CentredDampingSolve> LatticeSecondOrderSystem<D>::centredDamping(
     Real dt, const std::vector<Index>& prescribedDofs) const {
+  if (!damping_.empty() && !damping_.blockDiagonal())
+    return std::make_unique<LatticeCoupledCentredDamping<D>>(*this, dt, prescribedDofs);
   return std::make_unique<LatticeCentredDamping<D>>(*this, dt, prescribedDofs);
 }
 

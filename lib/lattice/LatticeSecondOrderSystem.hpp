@@ -1,9 +1,11 @@
 #pragma once
-// M u'' + C u' + K u = f(t) on a box lattice from per-row-type stencils (LatticeStencils): K any
-// stencil, M and C block-diagonal (lumped masses, dashpots on each particle's own dofs). Per
-// particle it stores nothing: the acceleration, the dashpot solve of central difference
-// (Ding-Long-Wu eq. (32)) and the energies are fused passes over the lattice, with the inverses of
-// M and of M + dt/2 C kept per type. Results are bitwise the same on any thread count.
+// M u'' + C u' + K u = f(t) on a box lattice from per-row-type stencils (LatticeStencils): K and C
+// any stencils, M block-diagonal (lumped). Per particle it stores nothing: the acceleration, the
+// dashpot solve of central difference (Ding-Long-Wu eq. (32)) and the energies are fused passes
+// over the lattice, with the inverses of M and, for dashpots on each particle's own dofs, of
+// M + dt/2 C kept per type. Dashpots that couple particles get M + dt/2 C factorised on the nodes
+// they reach (a few layers under the faces), so the solve stays proportional to the surface.
+// Results are bitwise the same on any thread count.
 //
 // The matrix-free counterpart of LinearSecondOrderSystem on lattices (issue 18): the same rows, a
 // few hundred stencils instead of a sparse matrix of N x neighbours entries.
@@ -23,7 +25,7 @@ class LatticeSecondOrderSystem : public LinearOperatorSystem {
 
   // All three on the same lattice; damping may be empty (no dashpots). Throws InputError("mass")
   // for a mass that is not block-diagonal or has a singular block, InputError("damping") for
-  // dashpots that couple particles.
+  // dashpots on another lattice.
   LatticeSecondOrderSystem(LatticeStencils<D> mass, LatticeStencils<D> damping, LatticeStencils<D> stiffness,
                            ForceFunction force = {});
 

@@ -7,11 +7,11 @@
 // entries on the same neighbouring line (same offset apart from x) are consecutive; each such line
 // is copied once into a component-major scratch (the deinterleave), and every coefficient then
 // updates the whole run with unit-stride loads, which the compiler vectorises. Each node's sum runs
-// over the entries, rows and columns in the same order as LatticeStencils::rowProduct, so a
-// node's result does not depend on the run it sits in, on the thread count or on the instruction
-// set: the AVX2 and AVX-512 builds of the loop (chosen at run time) add the same terms in the same
-// order as the portable one (no fused multiply-add: the compiler does not contract across
-// statements under -std=c++17), and the results are bitwise the same.
+// over the entries, rows and columns in the same order as LatticeStencils::rowProduct. The AVX-512
+// and AVX2 builds of the loop (chosen at run time by the processor) fuse multiply and add, the
+// portable one does not, so the last bit of a result depends on the processor; on one machine a
+// node always takes the same path (the middle of its line, or its own row at the ends), so the
+// results are bitwise the same on any thread count.
 
 #include "core/Types.hpp"
 

@@ -84,12 +84,26 @@ void checkStep(Real dt) {
 }  // namespace
 
 ConservativeSmoothing::ConservativeSmoothing(ParticleMatrix matrix, int dimension, Real rate, int order)
-    : matrix_(std::move(matrix)), dimension_(dimension), rate_(rate), order_(order) {
+    : matrix_(std::move(matrix)), particles_(matrix_.rows()), dimension_(dimension), rate_(rate), order_(order) {
   checkRate(rate);
   if (order != 1 && order != 2) throw InputError("smoothing.order", "must be 1 (eq. 33) or 2, got " + std::to_string(order));
   if (dimension < 1 || dimension > 3) throw InputError("dimension", "must be 1, 2 or 3");
   if (matrix_.rows() != matrix_.cols()) throw InputError("smoothing.matrix", "must be square (N x N)");
   matrix_.makeCompressed();
+}
+
+ConservativeSmoothing::ConservativeSmoothing(ComponentProduct product, Index particles, int dimension, Real rate,
+                                             int order)
+    : product_(std::move(product)), particles_(particles), dimension_(dimension), rate_(rate), order_(order) {
+  checkRate(rate);
+  if (order != 1 && order != 2) throw InputError("smoothing.order", "must be 1 (eq. 33) or 2, got " + std::to_string(order));
+  if (dimension < 1 || dimension > 3) throw InputError("dimension", "must be 1, 2 or 3");
+  if (!product_) throw InputError("smoothing.matrix", "the product of S is empty");
+}
+
+void ConservativeSmoothing::multiply(const Vector& in, Vector& out) const {
+  if (product_) product_(in, out);
+  else multiplyComponents(matrix_, in, dimension_, out);
 }
 
 Real ConservativeSmoothing::stepFraction(Real rate, Real dt) {
@@ -107,11 +121,11 @@ Real ConservativeSmoothing::rateFromStepFraction(Real alpha, Real dt) {
 
 void ConservativeSmoothing::apply(Real dt, Vector& velocity) const {
   checkStep(dt);
-  if (velocity.size() != dimension_ * static_cast<Index>(matrix_.rows()))
+  if (velocity.size() != dimension_ * particles_)
     throw InputError("velocity", "need " + std::to_string(dimension_) + " components per particle");
   if (rate_ == 0) return;
   const Real alpha = stepFraction(rate_, dt);
-  multiplyComponents(matrix_, velocity, dimension_, work_);
+  multiply(velocity, work_);
   if (order_ == 1) {
     // Ding-Long-Wu eq. (33) with alpha = 1 - exp(-rate dt).
     velocity += alpha * (work_ - velocity);
@@ -119,7 +133,7 @@ void ConservativeSmoothing::apply(Real dt, Vector& velocity) const {
   }
   // Order 2: d = (I - S) v, v <- v - alpha (I - S) d.
   difference_ = velocity - work_;
-  multiplyComponents(matrix_, difference_, dimension_, work_);
+  multiply(difference_, work_);
   velocity -= alpha * (difference_ - work_);
 }
 

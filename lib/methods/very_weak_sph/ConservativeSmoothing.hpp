@@ -24,6 +24,7 @@
 #include "neighbours/NeighbourList.hpp"
 #include "particles/ParticleSet.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace mfwave {
@@ -51,6 +52,10 @@ class ConservativeSmoothing {
   // unless 1 <= dimension <= 3, InputError("smoothing.matrix") unless the matrix is square,
   // InputError("smoothing.order") unless order is 1 (eq. 33) or 2.
   ConservativeSmoothing(ParticleMatrix matrix, int dimension, Real rate, int order = 1);
+  // The same filter with S given by its product on interleaved fields, out = (S x I) in (the
+  // lattice storage's stencils), over `particles` particles. Throws as above.
+  using ComponentProduct = std::function<void(const Vector& in, Vector& out)>;
+  ConservativeSmoothing(ComponentProduct product, Index particles, int dimension, Real rate, int order = 1);
 
   // alpha_step = 1 - exp(-rate dt). Throws InputError("smoothing.rate") / InputError("time_step").
   static Real stepFraction(Real rate, Real dt);
@@ -66,13 +71,18 @@ class ConservativeSmoothing {
   // Throws InputError("velocity") for a wrong length and InputError("time_step") for dt <= 0.
   void apply(Real dt, Vector& velocity) const;
 
+  // Empty when S was given by its product.
   const ParticleMatrix& matrix() const { return matrix_; }
   int dimension() const { return dimension_; }
   Real rate() const { return rate_; }
   int order() const { return order_; }
 
  private:
+  void multiply(const Vector& in, Vector& out) const;
+
   ParticleMatrix matrix_;
+  ComponentProduct product_;
+  Index particles_;
   int dimension_;
   Real rate_;
   int order_;

@@ -15,7 +15,7 @@ namespace {
 constexpr Real kTolerance = 1e-12;
 
 // The settings on the box of `nodes` from the same lower corner, without what is not per row
-// type (patches, prescribed faces, filters) and with `tractions` as the face loads.
+// type (patches, prescribed faces, deconvolution) and with `tractions` as the face loads.
 template <int D>
 VeryWeakSphProblemSettings<D> onBox(const VeryWeakSphProblemSettings<D>& settings, const std::array<Index, D>& nodes,
                                     std::vector<FaceTraction<D>> tractions) {
@@ -26,7 +26,6 @@ VeryWeakSphProblemSettings<D> onBox(const VeryWeakSphProblemSettings<D>& setting
   s.faceTractions = std::move(tractions);
   s.patches.clear();
   s.prescribed.clear();
-  s.smoothingRate = 0;
   s.deconvolution = false;
   s.keepOperatorMatrix = false;
   return s;
@@ -40,19 +39,28 @@ ParticleSet<D> particlesOf(const VeryWeakSphProblemSettings<D>& s) {
   return particles;
 }
 
+// S of eq. (33) acting on every component of an interleaved field: S x I.
+template <int D>
+SparseMatrix onEveryComponent(const ParticleMatrix& s) {
+  std::vector<Triplet> entries;
+  entries.reserve(static_cast<std::size_t>(D * s.nonZeros()));
+  for (int row = 0; row < s.outerSize(); ++row)
+    for (ParticleMatrix::InnerIterator it(s, row); it; ++it)
+      for (int c = 0; c < D; ++c)
+        entries.emplace_back(static_cast<int>(D * it.row() + c), static_cast<int>(D * it.col() + c), it.value());
+  SparseMatrix m(D * s.rows(), D * s.cols());
+  m.setFromTriplets(entries.begin(), entries.end());
+  return m;
+}
+
 }  // namespace
 
 template <int D>
 std::string latticeStorageObstacle(const VeryWeakSphProblemSettings<D>& settings) {
   const VeryWeakSphVariant variant = settings.options.variant;
-  if (settings.smoothingRate > 0) return "it has no smoothing filter (method.smoothing_rate > 0)";
   if (settings.deconvolution) return "it has no deconvolution (method.deconvolution = true)";
   if (!settings.patches.empty() && variant != VeryWeakSphVariant::Galerkin)
     return "it applies surface-patch loads for the galerkin variant only";
-  if (settings.transmittingFaces != 0 &&
-      (variant == VeryWeakSphVariant::Consistent ||
-       (variant == VeryWeakSphVariant::Published && settings.dashpotLumping == DashpotLumping::Consistent)))
-    return "its dashpot solve is per particle, and these dashpots couple particles";
   return "";
 }
 
@@ -98,6 +106,7 @@ VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& 
     result.mass = LatticeStencils<D>(types, system.mass());
     result.stiffness = LatticeStencils<D>(types, system.stiffness());
     if (system.hasDamping()) result.damping = LatticeStencils<D>(types, system.damping());
+    if (compact.smoothing()) result.smoothing = LatticeStencils<D>(types, onEveryComponent<D>(compact.smoothing()->matrix()));
 
     // The check: an assembly two nodes longer per axis (as far as the lattice goes) must be the
     // stencils' rows. When the compact box is the whole box there is nothing to check.
@@ -113,6 +122,9 @@ VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& 
       LinearSecondOrderSystem& checked = check.sparseSystem();
       result.mismatch = std::max(result.stiffness.on(checkTypes).mismatch(checked.stiffness()),
                                  result.mass.on(checkTypes).mismatch(checked.mass()));
+      if (compact.smoothing())
+        result.mismatch = std::max(result.mismatch, result.smoothing.on(checkTypes).mismatch(
+                                                        onEveryComponent<D>(check.smoothing()->matrix())));
       if (checked.hasDamping() != system.hasDamping()) result.mismatch = std::numeric_limits<Real>::infinity();
       else if (system.hasDamping())
         result.mismatch = std::max(result.mismatch, result.damping.on(checkTypes).mismatch(checked.damping()));

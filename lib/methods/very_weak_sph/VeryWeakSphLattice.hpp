@@ -21,16 +21,15 @@ namespace mfwave {
 template <int D>
 struct VeryWeakSphStencils {
   LatticeStencils<D> mass, damping, stiffness;  // damping empty without transmitting faces
+  LatticeStencils<D> smoothing;                 // S of eq. (33) on every component; empty without the filter
   // Per entry of settings.faceTractions: the nodal force of its traction at unit history, D
   // values per row type.
   std::vector<std::vector<Real>> faceLoads;
   Real mismatch = 0;  // against the check assembly (0 when the compact box is the whole box)
 };
 
-// Why the lattice storage cannot run these settings ("" when it can): the smoothing filter and
-// the deconvolution are not stencils yet, surface patches are exact for the galerkin variant only,
-// and the consistent and consistently lumped dashpots couple particles (the lattice system's
-// dashpot solve is per particle).
+// Why the lattice storage cannot run these settings ("" when it can): the deconvolution is not a
+// stencil yet, and surface patches are exact for the galerkin variant only.
 template <int D>
 std::string latticeStorageObstacle(const VeryWeakSphProblemSettings<D>& settings);
 

@@ -204,6 +204,14 @@ void VeryWeakSphProblem<D>::buildLattice(const ParticleSet<D>& particles,
     };
   lattice_ = std::make_unique<LatticeSecondOrderSystem<D>>(std::move(stencils.mass), std::move(stencils.damping),
                                                            std::move(stencils.stiffness), std::move(force));
+  // the smoothing filter (eq. (33)) from its stencils
+  if (settings.smoothingRate > 0) {
+    auto s = std::make_shared<const LatticeStencils<D>>(std::move(stencils.smoothing));
+    smoothingBytes_ = s->bytes();
+    smoothing_ = std::make_unique<ConservativeSmoothing>([s](const Vector& in, Vector& out) { s->multiply(in, out); },
+                                                         particles.physicalCount(), D, settings.smoothingRate,
+                                                         settings.smoothingOrder);
+  }
 }
 
 template <int D>
@@ -244,7 +252,7 @@ Vector VeryWeakSphProblem<D>::initialDisplacement() const {
 
 template <int D>
 Real VeryWeakSphProblem<D>::operatorMiB() const {
-  if (lattice_) return static_cast<Real>(lattice_->bytes() + loadBytes_) / (1024.0 * 1024.0);
+  if (lattice_) return static_cast<Real>(lattice_->bytes() + loadBytes_ + smoothingBytes_) / (1024.0 * 1024.0);
   const LinearSecondOrderSystem& s = method_.system;
   return compressedRowsMiB(s.stiffness()) + compressedRowsMiB(method_.data.tractionMatrix) +
          compressedRowsMiB(s.damping()) + compressedRowsMiB(s.mass());

@@ -154,6 +154,7 @@ class VeryWeakSphProblem {
   Index latticeDepth_ = 0;
   Real latticeMismatch_ = 0;
   std::size_t loadBytes_ = 0;
+  std::size_t smoothingBytes_ = 0;
   std::vector<Index> prescribedDofs_;
   std::vector<Real> prescribedValue_;
   std::vector<const TimeFunction*> prescribedHistory_;

@@ -56,6 +56,10 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
   problemSettings.prescribed.push_back({faceBit(BoxFace::MinusX), Vec2::Zero(), nullptr});
   problemSettings.smoothingRate = study.veryWeakSmoothingRate;
   problemSettings.smoothingOrder = 2;
+  problemSettings.ghostLayers = static_cast<int>(study.veryWeakGhostLayers);
+  problemSettings.ghostFaces = allFaces(D);
+  // the lattice stencils (issue 18): the same rows without a matrix per particle
+  problemSettings.storage = OperatorStorage::Lattice;
   VeryWeakSphProblem<D> problem(particles, problemSettings);
   LinearOperatorSystem& system = problem.system();
   result.meanNeighbours = problem.meanStencilSize();

@@ -1,8 +1,8 @@
 // The lattice storage of the very weak SPH (VeryWeakSphLattice, LatticeSecondOrderSystem) against
 // the assembled sparse matrices it replaces: on the same lattice both give the same acceleration,
 // the same dashpot solve of central difference (eq. (32), with prescribed dofs), the same loads and
-// energies to 1e-12 relative, in 1-, 2- and 3-D, for every variant and every boundary kind the
-// lattice storage runs; what it cannot run is refused by name.
+// energies and the same smoothing filter to 1e-12 relative, in 1-, 2- and 3-D, for every variant and
+// every boundary kind the lattice storage runs; what it cannot run is refused by name.
 
 #include "core/Error.hpp"
 #include "core/TimeFunction.hpp"
@@ -126,6 +126,15 @@ void expectSameSystem(const Box<D>& box, VeryWeakSphProblemSettings<D> settings,
   solveA->acceleration(0.7, u, v, known, stepA);
   solveB->acceleration(0.7, u, v, known, stepB);
   EXPECT_LE(relative(stepB, stepA), 1e-12) << "(M + dt/2 C) a = f - K u - C v";
+
+  // the smoothing filter (eq. (33))
+  ASSERT_EQ(static_cast<bool>(sparse.smoothing()), static_cast<bool>(lattice.smoothing()));
+  if (sparse.smoothing()) {
+    Vector filteredA = v, filteredB = v;
+    sparse.smoothing()->apply(0.05, filteredA);
+    lattice.smoothing()->apply(0.05, filteredB);
+    EXPECT_LE(relative(filteredB, filteredA), 1e-12) << "smoothing";
+  }
 }
 
 template <int D>
@@ -147,7 +156,7 @@ void expectEveryBoundaryKind(VeryWeakSphVariant variant) {
   clamped.prescribed.push_back({faceBit(BoxFace::MinusX), Vec<D>::Zero(), nullptr});
   expectSameSystem<D>(box, clamped, "a fixed face");
 
-  if (variant != VeryWeakSphVariant::Consistent) {
+  {
     VeryWeakSphProblemSettings<D> absorbing = loaded;
     std::uint8_t faces = 0;
     for (int f = 0; f < 2 * D - 1; ++f) faces |= faceBit(static_cast<BoxFace>(f));
@@ -157,6 +166,17 @@ void expectEveryBoundaryKind(VeryWeakSphVariant variant) {
     VeryWeakSphProblemSettings<D> moving = absorbing;
     moving.prescribed.push_back({faceBit(BoxFace::MinusX), Vec<D>::Constant(0.1), &ramp});
     expectSameSystem<D>(box, moving, "a moving face beside dashpots");
+    if (variant == VeryWeakSphVariant::Published) {  // the dashpots through the traction sum couple particles
+      absorbing.dashpotLumping = DashpotLumping::Consistent;
+      expectSameSystem<D>(box, absorbing, "dashpots through the traction sum");
+    }
+  }
+  if (variant != VeryWeakSphVariant::Galerkin) {  // the galerkin variant refuses filters
+    VeryWeakSphProblemSettings<D> filtered = clamped;
+    filtered.smoothingRate = 2.0;
+    expectSameSystem<D>(box, filtered, "the smoothing filter");
+    filtered.smoothingOrder = 2;
+    expectSameSystem<D>(box, filtered, "the second-order smoothing filter");
   }
   if (variant == VeryWeakSphVariant::Galerkin) {
     VeryWeakSphProblemSettings<D> patch = plain;
@@ -211,18 +231,19 @@ TEST(VeryWeakSphLattice, RefusesWhatItCannotRunByName) {
   const Box<2> box = boxFor<2>(VeryWeakSphVariant::Consistent);
   VeryWeakSphProblemSettings<2> s = settingsOn<2>(box, VeryWeakSphVariant::Consistent);
   s.storage = OperatorStorage::Lattice;
-  s.transmittingFaces = faceBit(BoxFace::MinusX);
+  const TimeFunction once = TimeFunction::triangle(0, 1, 1);
+  s.patches.push_back({static_cast<int>(BoxFace::PlusY), Vec2(1, box.upper[1]), Vec2(0.5, 0), Vec2(0, 1), &once});
   try {
     VeryWeakSphProblem<2> problem(particlesOn<2>(box), s);
-    FAIL() << "coupled dashpots accepted";
+    FAIL() << "a consistent patch load accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "method.operator");
-    EXPECT_NE(std::string(e.what()).find("couple particles"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("galerkin variant only"), std::string::npos) << e.what();
   }
   VeryWeakSphProblemSettings<2> filtered = settingsOn<2>(box, VeryWeakSphVariant::Published);
   filtered.storage = OperatorStorage::Lattice;
-  filtered.smoothingRate = 0.5;
-  EXPECT_NE(latticeStorageObstacle<2>(filtered).find("smoothing"), std::string::npos);
+  filtered.deconvolution = true;
+  EXPECT_NE(latticeStorageObstacle<2>(filtered).find("deconvolution"), std::string::npos);
   EXPECT_THROW(VeryWeakSphProblem<2>(particlesOn<2>(box), filtered), InputError);
   // particles that are not the settings' lattice
   VeryWeakSphProblemSettings<2> shifted = settingsOn<2>(box, VeryWeakSphVariant::Galerkin);
