@@ -53,14 +53,45 @@ SparseMatrix onEveryComponent(const ParticleMatrix& s) {
   return m;
 }
 
+// G_ab = T(a, facet of b on `face`): the traction matrix's columns of one face's facets, as a
+// square node-to-node operator (zero columns for nodes off the face).
+template <int D>
+SparseMatrix faceTractionGather(const VeryWeakSphData<D>& data, int face, Index nodes) {
+  std::vector<Index> facetOf(static_cast<std::size_t>(nodes), -1);  // node -> its facet on the face
+  for (Index f = 0; f < data.facets.count(); ++f)
+    if (data.facets.face[static_cast<std::size_t>(f)] == face)
+      facetOf[static_cast<std::size_t>(data.facets.particle[static_cast<std::size_t>(f)])] = f;
+  std::vector<Index> nodeOf(static_cast<std::size_t>(data.facets.count()), -1);
+  for (Index b = 0; b < nodes; ++b)
+    if (facetOf[static_cast<std::size_t>(b)] >= 0) nodeOf[static_cast<std::size_t>(facetOf[static_cast<std::size_t>(b)])] = b;
+  std::vector<Triplet> entries;
+  const SparseMatrix& t = data.tractionMatrix;
+  for (int column = 0; column < t.outerSize(); ++column) {
+    const Index b = nodeOf[static_cast<std::size_t>(column / D)];
+    if (b < 0) continue;
+    for (SparseMatrix::InnerIterator it(t, column); it; ++it)
+      entries.emplace_back(it.row(), static_cast<int>(D * b + column % D), it.value());
+  }
+  SparseMatrix g(D * nodes, D * nodes);
+  g.setFromTriplets(entries.begin(), entries.end());
+  return g;
+}
+
+template <int D>
+bool needsPatchFace(const VeryWeakSphProblemSettings<D>& settings, int face) {
+  if (settings.options.variant == VeryWeakSphVariant::Galerkin) return false;  // its patch load is exact per node
+  for (const PatchTraction<D>& patch : settings.patches)
+    if (patch.face == face) return true;
+  return false;
+}
+
 }  // namespace
 
 template <int D>
 std::string latticeStorageObstacle(const VeryWeakSphProblemSettings<D>& settings) {
   const VeryWeakSphVariant variant = settings.options.variant;
   if (settings.deconvolution) return "it has no deconvolution (method.deconvolution = true)";
-  if (!settings.patches.empty() && variant != VeryWeakSphVariant::Galerkin)
-    return "it applies surface-patch loads for the galerkin variant only";
+  (void)variant;
   return "";
 }
 
@@ -107,6 +138,11 @@ VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& 
     result.stiffness = LatticeStencils<D>(types, system.stiffness());
     if (system.hasDamping()) result.damping = LatticeStencils<D>(types, system.damping());
     if (compact.smoothing()) result.smoothing = LatticeStencils<D>(types, onEveryComponent<D>(compact.smoothing()->matrix()));
+    result.patchFaces.resize(2 * D);
+    for (int face = 0; face < 2 * D; ++face)
+      if (needsPatchFace<D>(settings, face))
+        result.patchFaces[static_cast<std::size_t>(face)] =
+            LatticeStencils<D>(types, faceTractionGather<D>(compact.data(), face, types.typeCount()));
 
     // The check: an assembly two nodes longer per axis (as far as the lattice goes) must be the
     // stencils' rows. When the compact box is the whole box there is nothing to check.
@@ -125,6 +161,11 @@ VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& 
       if (compact.smoothing())
         result.mismatch = std::max(result.mismatch, result.smoothing.on(checkTypes).mismatch(
                                                         onEveryComponent<D>(check.smoothing()->matrix())));
+      for (int face = 0; face < 2 * D; ++face)
+        if (needsPatchFace<D>(settings, face))
+          result.mismatch = std::max(result.mismatch,
+                                     result.patchFaces[static_cast<std::size_t>(face)].on(checkTypes).mismatch(
+                                         faceTractionGather<D>(check.data(), face, checkTypes.nodeCount())));
       if (checked.hasDamping() != system.hasDamping()) result.mismatch = std::numeric_limits<Real>::infinity();
       else if (system.hasDamping())
         result.mismatch = std::max(result.mismatch, result.damping.on(checkTypes).mismatch(checked.damping()));

@@ -25,11 +25,15 @@ struct VeryWeakSphStencils {
   // Per entry of settings.faceTractions: the nodal force of its traction at unit history, D
   // values per row type.
   std::vector<std::vector<Real>> faceLoads;
+  // Per face carrying a surface patch of a kernel variant (index: BoxFace; empty for the others):
+  // the force on every node from a unit traction on the face's facet of each node, G_ab =
+  // T(a, facet of b on the face), so that a patch load is G (weight_b t).
+  std::vector<LatticeStencils<D>> patchFaces;
   Real mismatch = 0;  // against the check assembly (0 when the compact box is the whole box)
 };
 
-// Why the lattice storage cannot run these settings ("" when it can): the deconvolution is not a
-// stencil yet, and surface patches are exact for the galerkin variant only.
+// Why the lattice storage cannot run these settings ("" when it can): the deconvolution (eq. (35))
+// is not a stencil yet.
 template <int D>
 std::string latticeStorageObstacle(const VeryWeakSphProblemSettings<D>& settings);
 

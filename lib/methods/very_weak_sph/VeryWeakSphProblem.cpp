@@ -164,6 +164,7 @@ void VeryWeakSphProblem<D>::buildLattice(const ParticleSet<D>& particles,
   if (!obstacle.empty())
     throw InputError("method.operator", "the lattice storage cannot run this scene: " + obstacle +
                                             "; use method.operator = \"sparse\" (or \"auto\")");
+  const VeryWeakSphVariant variant = settings.options.variant;
   const std::array<Index, D> nodes = checkedLatticeNodes<D>(particles, settings);
   VeryWeakSphStencils<D> stencils = veryWeakSphStencils<D>(settings, nodes);
   latticeDepth_ = stencils.stiffness.types().depth();
@@ -186,10 +187,22 @@ void VeryWeakSphProblem<D>::buildLattice(const ParticleSet<D>& particles,
     }
     loads.push_back(std::move(load));
   }
-  for (const PatchTraction<D>& patch : settings.patches) {  // galerkin: the exact int_patch W_a t
-    const std::vector<Real> weights = patchTentWeights<D>(particles, patch.face, patch.centre, patch.halfWidths,
+  for (const PatchTraction<D>& patch : settings.patches) {
+    if (variant == VeryWeakSphVariant::Galerkin) {  // the exact int_patch W_a t
+      const std::vector<Real> weights = patchTentWeights<D>(particles, patch.face, patch.centre, patch.halfWidths,
+                                                            settings.spacing, settings.lower, settings.upper);
+      appendNonzeros(patchNodalForce<D>(weights, settings.spacing, patch.traction), patch.history, loads);
+      continue;
+    }
+    // the kernel variants: T t with t = weight_b traction on the face's facets, as G (weight_b traction)
+    const std::vector<Real> weights = patchLoadWeights<D>(particles, patch.face, patch.centre, patch.halfWidths,
                                                           settings.spacing, settings.lower, settings.upper);
-    appendNonzeros(patchNodalForce<D>(weights, settings.spacing, patch.traction), patch.history, loads);
+    Vector nodal = Vector::Zero(D * particles.physicalCount());
+    for (Index b = 0; b < particles.physicalCount(); ++b)
+      if (weights[static_cast<std::size_t>(b)] != 0) nodal.template segment<D>(D * b) = weights[static_cast<std::size_t>(b)] * patch.traction;
+    Vector force;
+    stencils.patchFaces[static_cast<std::size_t>(patch.face)].multiply(nodal, force);
+    appendNonzeros(force, patch.history, loads);
   }
   for (const SparseLoad& load : loads)
     loadBytes_ += load.dofs.size() * (sizeof(Index) + sizeof(Real));
