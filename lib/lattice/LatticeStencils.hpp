@@ -57,6 +57,8 @@ class LatticeStencils {
   // same method: 0 (up to round-off) when the stencils give every row of it.
   Real mismatch(const SparseMatrix& matrix) const;
 
+  // The node an entry of node p's row reads.
+  Index column(Index entry, Index p) const { return p + flat_[static_cast<std::size_t>(entry)]; }
   // The stencil of a type, for stencilRun.
   StencilView view(Index type) const {
     const auto b = static_cast<std::size_t>(begin(type));

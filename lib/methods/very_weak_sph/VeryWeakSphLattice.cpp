@@ -15,7 +15,7 @@ namespace {
 constexpr Real kTolerance = 1e-12;
 
 // The settings on the box of `nodes` from the same lower corner, without what is not per row
-// type (patches, prescribed faces, deconvolution) and with `tractions` as the face loads.
+// type (patches, prescribed faces) and with `tractions` as the face loads.
 template <int D>
 VeryWeakSphProblemSettings<D> onBox(const VeryWeakSphProblemSettings<D>& settings, const std::array<Index, D>& nodes,
                                     std::vector<FaceTraction<D>> tractions) {
@@ -26,7 +26,6 @@ VeryWeakSphProblemSettings<D> onBox(const VeryWeakSphProblemSettings<D>& setting
   s.faceTractions = std::move(tractions);
   s.patches.clear();
   s.prescribed.clear();
-  s.deconvolution = false;
   s.keepOperatorMatrix = false;
   return s;
 }
@@ -89,9 +88,7 @@ bool needsPatchFace(const VeryWeakSphProblemSettings<D>& settings, int face) {
 
 template <int D>
 std::string latticeStorageObstacle(const VeryWeakSphProblemSettings<D>& settings) {
-  const VeryWeakSphVariant variant = settings.options.variant;
-  if (settings.deconvolution) return "it has no deconvolution (method.deconvolution = true)";
-  (void)variant;
+  (void)settings;
   return "";
 }
 
@@ -138,6 +135,8 @@ VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& 
     result.stiffness = LatticeStencils<D>(types, system.stiffness());
     if (system.hasDamping()) result.damping = LatticeStencils<D>(types, system.damping());
     if (compact.smoothing()) result.smoothing = LatticeStencils<D>(types, onEveryComponent<D>(compact.smoothing()->matrix()));
+    if (compact.deconvolution())
+      result.deconvolution = LatticeStencils<D>(types, onEveryComponent<D>(*compact.deconvolution()));
     result.patchFaces.resize(2 * D);
     for (int face = 0; face < 2 * D; ++face)
       if (needsPatchFace<D>(settings, face))
@@ -161,6 +160,9 @@ VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& 
       if (compact.smoothing())
         result.mismatch = std::max(result.mismatch, result.smoothing.on(checkTypes).mismatch(
                                                         onEveryComponent<D>(check.smoothing()->matrix())));
+      if (compact.deconvolution())
+        result.mismatch = std::max(result.mismatch, result.deconvolution.on(checkTypes).mismatch(
+                                                        onEveryComponent<D>(*check.deconvolution())));
       for (int face = 0; face < 2 * D; ++face)
         if (needsPatchFace<D>(settings, face))
           result.mismatch = std::max(result.mismatch,

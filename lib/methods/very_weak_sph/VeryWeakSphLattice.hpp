@@ -22,6 +22,7 @@ template <int D>
 struct VeryWeakSphStencils {
   LatticeStencils<D> mass, damping, stiffness;  // damping empty without transmitting faces
   LatticeStencils<D> smoothing;                 // S of eq. (33) on every component; empty without the filter
+  LatticeStencils<D> deconvolution;             // eq. (35) on every component; empty without it
   // Per entry of settings.faceTractions: the nodal force of its traction at unit history, D
   // values per row type.
   std::vector<std::vector<Real>> faceLoads;
@@ -32,8 +33,9 @@ struct VeryWeakSphStencils {
   Real mismatch = 0;  // against the check assembly (0 when the compact box is the whole box)
 };
 
-// Why the lattice storage cannot run these settings ("" when it can): the deconvolution (eq. (35))
-// is not a stencil yet.
+// Why the lattice storage cannot run these settings ("" when it can). Every variant, boundary kind,
+// filter and the deconvolution are stencils now; kept for what may not be (a reason is a sentence
+// naming the setting).
 template <int D>
 std::string latticeStorageObstacle(const VeryWeakSphProblemSettings<D>& settings);
 

@@ -217,6 +217,8 @@ void VeryWeakSphProblem<D>::buildLattice(const ParticleSet<D>& particles,
     };
   lattice_ = std::make_unique<LatticeSecondOrderSystem<D>>(std::move(stencils.mass), std::move(stencils.damping),
                                                            std::move(stencils.stiffness), std::move(force));
+  if (settings.deconvolution)
+    deconvolutionStencils_ = std::make_unique<LatticeStencils<D>>(std::move(stencils.deconvolution));
   // the smoothing filter (eq. (33)) from its stencils
   if (settings.smoothingRate > 0) {
     auto s = std::make_shared<const LatticeStencils<D>>(std::move(stencils.smoothing));
@@ -225,6 +227,27 @@ void VeryWeakSphProblem<D>::buildLattice(const ParticleSet<D>& particles,
                                                          particles.physicalCount(), D, settings.smoothingRate,
                                                          settings.smoothingOrder);
   }
+}
+
+template <int D>
+ParticleMatrix VeryWeakSphProblem<D>::deconvolutionRows(const std::vector<Index>& particles) const {
+  const Index n = system().size() / D;
+  std::vector<Eigen::Triplet<Real, int>> entries;
+  for (Index p : particles) {
+    if (p < 0 || p >= n) throw InputError("particle", "particle " + std::to_string(p) + " is not a physical particle");
+    if (deconvolution_) {
+      for (ParticleMatrix::InnerIterator it(*deconvolution_, p); it; ++it)
+        entries.emplace_back(static_cast<int>(p), static_cast<int>(it.col()), it.value());
+    } else if (deconvolutionStencils_) {  // the same operator on every component: one diagonal entry per block
+      const LatticeStencils<D>& s = *deconvolutionStencils_;
+      const Index type = s.types().typeOf(s.types().node(p));
+      for (Index e = s.begin(type); e < s.end(type); ++e)
+        entries.emplace_back(static_cast<int>(p), static_cast<int>(s.column(e, p)), s.block(e)[0]);
+    }
+  }
+  ParticleMatrix rows(n, n);
+  rows.setFromTriplets(entries.begin(), entries.end(), [](Real, Real b) { return b; });
+  return rows;
 }
 
 template <int D>
@@ -265,7 +288,10 @@ Vector VeryWeakSphProblem<D>::initialDisplacement() const {
 
 template <int D>
 Real VeryWeakSphProblem<D>::operatorMiB() const {
-  if (lattice_) return static_cast<Real>(lattice_->bytes() + loadBytes_ + smoothingBytes_) / (1024.0 * 1024.0);
+  if (lattice_)
+    return static_cast<Real>(lattice_->bytes() + loadBytes_ + smoothingBytes_ +
+                             (deconvolutionStencils_ ? deconvolutionStencils_->bytes() : 0)) /
+           (1024.0 * 1024.0);
   const LinearSecondOrderSystem& s = method_.system;
   return compressedRowsMiB(s.stiffness()) + compressedRowsMiB(method_.data.tractionMatrix) +
          compressedRowsMiB(s.damping()) + compressedRowsMiB(s.mass());

@@ -130,8 +130,12 @@ class VeryWeakSphProblem {
   // Eq. (33) when settings.smoothingRate > 0, else null. The caller applies it as the
   // integrator's velocity filter.
   ConservativeSmoothing* smoothing() { return smoothing_.get(); }
-  // Eq. (35) when settings.deconvolution, else null.
+  // Eq. (35) when settings.deconvolution with the sparse storage, else null.
   const ParticleMatrix* deconvolution() const { return deconvolution_ ? &*deconvolution_ : nullptr; }
+  // Whether eq. (35) is on (either storage), and its rows at `particles` (an N x N matrix with only
+  // those rows: what probes read; empty rows when it is off).
+  bool deconvolves() const { return deconvolution_.has_value() || deconvolutionStencils_ != nullptr; }
+  ParticleMatrix deconvolutionRows(const std::vector<Index>& particles) const;
 
   // Storage of the step's operators, MiB: the matrices (stiffness, traction, damping, mass) in
   // compressed rows, or the stencil tables and the loads' nonzeros.
@@ -160,6 +164,7 @@ class VeryWeakSphProblem {
   std::vector<const TimeFunction*> prescribedHistory_;
   std::unique_ptr<ConservativeSmoothing> smoothing_;
   std::optional<ParticleMatrix> deconvolution_;
+  std::unique_ptr<LatticeStencils<D>> deconvolutionStencils_;  // lattice storage with eq. (35)
 };
 
 extern template class VeryWeakSphProblem<1>;

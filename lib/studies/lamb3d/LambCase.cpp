@@ -104,7 +104,11 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
 
   // observers: stability, probes (raw and deconvolved), frames
   const std::vector<Probe> probes = resolveProbes(scene.probes, particles);
-  VeryWeakSphProbes recorder(probes, D, problem.deconvolution());
+  // the deconvolution's rows at the probes (eq. (35) of what is reported), from either storage
+  std::vector<Index> probeParticles;
+  for (const Probe& p : probes) probeParticles.push_back(p.particle);
+  const ParticleMatrix deconvolutionRows = problem.deconvolutionRows(probeParticles);
+  VeryWeakSphProbes recorder(probes, D, problem.deconvolves() ? &deconvolutionRows : nullptr);
   record.setupSeconds = assemblyClock.seconds();
 
   StabilityMonitor monitor(scene.stability.options(D, ledgerOptions.quietAfter));
