@@ -114,35 +114,53 @@ void stencilRun(const StencilView& s, const Real* x, Index first, Index length, 
     cache.used[slot] = run;
     slotOf[g] = static_cast<Index>(slot);
   }
-  // the terms, row by row, in rowProduct's order
-  // (the nonzero coefficients in the order rowProduct sums them, entry then column, row by row, and
-  // where in the scratch each one reads)
-  thread_local std::vector<Real> coefficients;
-  thread_local std::vector<Index> sources;
-  coefficients.clear();
-  sources.clear();
-  Index rowEnd[D];
-  for (int c = 0; c < D; ++c) {
-    Index g = -1;
-    for (Index e = 0; e < s.entries; ++e) {
-      if (e == 0 || s.flat[e] - s.dx[e] != s.flat[e - 1] - s.dx[e - 1]) ++g;
-      for (int d = 0; d < D; ++d) {
-        const Real coefficient = s.blocks[D * D * e + D * c + d];
-        if (coefficient == 0) continue;
-        coefficients.push_back(coefficient);
-        sources.push_back(slotOf[static_cast<std::size_t>(g)] * D * width + d * width + reach + s.dx[e]);
+  // The terms: the nonzero coefficients in the order rowProduct sums them (entry, then column), row
+  // by row, each with its line and its place in that line's scratch. They depend on the stencil
+  // and the run's width only, so a thread keeps the last stencil's and resolves the lines per run.
+  struct Terms {
+    const Real* blocks = nullptr;
+    Index entries = -1, width = -1;
+    std::vector<Real> coefficients;
+    std::vector<Index> line, place, sources;
+    Index rowEnd[3] = {};
+  };
+  thread_local Terms terms;
+  if (terms.blocks != s.blocks || terms.entries != s.entries || terms.width != width) {
+    terms.blocks = s.blocks;
+    terms.entries = s.entries;
+    terms.width = width;
+    terms.coefficients.clear();
+    terms.line.clear();
+    terms.place.clear();
+    for (int c = 0; c < D; ++c) {
+      Index g = -1;
+      for (Index e = 0; e < s.entries; ++e) {
+        if (e == 0 || s.flat[e] - s.dx[e] != s.flat[e - 1] - s.dx[e - 1]) ++g;
+        for (int d = 0; d < D; ++d) {
+          const Real coefficient = s.blocks[D * D * e + D * c + d];
+          if (coefficient == 0) continue;
+          terms.coefficients.push_back(coefficient);
+          terms.line.push_back(g);
+          terms.place.push_back(d * width + reach + s.dx[e]);
+        }
       }
+      terms.rowEnd[c] = static_cast<Index>(terms.coefficients.size());
     }
-    rowEnd[c] = static_cast<Index>(coefficients.size());
+    terms.sources.resize(terms.coefficients.size());
   }
+  for (std::size_t t = 0; t < terms.sources.size(); ++t)
+    terms.sources[t] = slotOf[static_cast<std::size_t>(terms.line[t])] * D * width + terms.place[t];
+  const Real* coefficients = terms.coefficients.data();
+  const Index* sources = terms.sources.data();
+  const Index* rowEnd = terms.rowEnd;
 #if defined(__x86_64__) && defined(__GNUC__)
   switch (detectedIsa()) {
-    case Isa::Avx512: return runAvx512<D>(coefficients.data(), sources.data(), rowEnd, length, cache.lines.data(), out);
-    case Isa::Avx2: return runAvx2<D>(coefficients.data(), sources.data(), rowEnd, length, cache.lines.data(), out);
+    case Isa::Avx512: return runAvx512<D>(coefficients, sources, rowEnd, length, cache.lines.data(), out);
+    case Isa::Avx2: return runAvx2<D>(coefficients, sources, rowEnd, length, cache.lines.data(), out);
     case Isa::Portable: break;
   }
 #endif
-  runPortable<D>(coefficients.data(), sources.data(), rowEnd, length, cache.lines.data(), out);
+  runPortable<D>(coefficients, sources, rowEnd, length, cache.lines.data(), out);
 }
 
 template void stencilRun<1>(const StencilView&, const Real*, Index, Index, Real*, StencilRunCache&, std::uint64_t);
