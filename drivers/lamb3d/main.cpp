@@ -201,6 +201,10 @@ CaseTable<CaseResult> casesTable(const std::vector<ProbeResult>& probes) {
       .column("run [s]", [](R r) { return r.record.loopSeconds; })
       .column("wall [s]", [](R r) { return r.record.setupSeconds + r.record.loopSeconds; }, TerminalColumn("wall[s]", 9).precision(3))
       .column("peak_memory [MiB]", [](R r) { return r.record.peakMemoryMiB; }, TerminalColumn("MiB", 9))
+      // the whole process's peak over the physical particles (issue 18's measure; includes the
+      // exact reference and everything earlier cases left)
+      .column("peak_memory_bytes_per_particle",
+              [](R r) { return r.record.peakMemoryMiB * 1048576.0 / static_cast<Real>(r.record.particles); })
       .column("particle_steps_per_second", [](R r) { return r.record.particleStepsPerSecond(); })
       .column("energy_final_fraction", [](R r) { return r.energyFinalFraction; })
       .column("energy_balance_drift", [](R r) { return r.energyBalanceDrift; });

@@ -119,6 +119,17 @@ void forEachLatticeLine(const LatticeRowTypes<D>& types, Function&& f) {
   }
 }
 
+// Calls f(p, type) for every node p of the lattice (x fastest), OpenMP-parallel over lines along x;
+// f must only write what belongs to node p. Lines are visited in a fixed partition, so per-line
+// results are the same on any thread count.
+template <int D, class Function>
+void forEachLatticeNode(const LatticeRowTypes<D>& types, Function&& f) {
+  const Index nx = types.nodes()[0];
+  forEachLatticeLine<D>(types, [&](Index first, Index base) {
+    for (Index i = 0; i < nx; ++i) f(first + i, base + types.compactIndex(0, i));
+  });
+}
+
 template <int D>
 template <class Function, class Direct>
 void LatticeStencils<D>::forEachProduct(const Real* x, Function&& f, Direct&& direct) const {
@@ -149,28 +160,6 @@ void LatticeStencils<D>::forEachProduct(const Real* x, Function&& f, Direct&& di
     }
     for (Index i = nx - depth; i < nx; ++i) single(i);
   });
-}
-
-// Calls f(p, type) for every node p of the lattice (x fastest), OpenMP-parallel over lines along x;
-// f must only write what belongs to node p. Lines are visited in a fixed partition, so per-line
-// results are the same on any thread count.
-template <int D, class Function>
-void forEachLatticeNode(const LatticeRowTypes<D>& types, Function&& f) {
-  const Index nx = types.nodes()[0];
-  const long lines = static_cast<long>(types.nodeCount() / nx);
-#pragma omp parallel for schedule(static) if (lines > 16 && types.nodeCount() > 20000)
-  for (long line = 0; line < lines; ++line) {
-    // the type of the line's first node without its x part
-    Index rest = line, base = 0, stride = types.compactNodes()[0];
-    for (int a = 1; a < D; ++a) {
-      const auto s = static_cast<std::size_t>(a);
-      base += stride * types.compactIndex(a, rest % types.nodes()[s]);
-      rest /= types.nodes()[s];
-      stride *= types.compactNodes()[s];
-    }
-    const Index p0 = static_cast<Index>(line) * nx;
-    for (Index i = 0; i < nx; ++i) f(p0 + i, base + types.compactIndex(0, i));
-  }
 }
 
 // sum over nodes of g(p, type), summed per line and then over lines in order: bitwise the same on

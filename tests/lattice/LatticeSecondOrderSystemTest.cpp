@@ -5,6 +5,8 @@
 #include "lattice/LatticeSecondOrderSystem.hpp"
 #include "systems/LinearSecondOrderSystem.hpp"
 
+#include "support/RandomVector.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -64,13 +66,7 @@ SparseMatrix dashpots(Index n) {
   return m;
 }
 
-Vector randomVector(Index n, unsigned seed) {
-  std::mt19937_64 random(seed);
-  std::uniform_real_distribution<Real> uniform(-1, 1);
-  Vector x(n);
-  for (Index i = 0; i < n; ++i) x[i] = uniform(random);
-  return x;
-}
+using test::randomVector;
 
 struct Pair {
   LinearSecondOrderSystem sparse;

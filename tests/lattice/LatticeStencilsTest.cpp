@@ -4,6 +4,8 @@
 #include "core/Error.hpp"
 #include "lattice/LatticeStencils.hpp"
 
+#include "support/RandomVector.hpp"
+
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -35,13 +37,7 @@ SparseMatrix faceOperator(Index nx, Index ny) {
   return m;
 }
 
-Vector randomVector(Index n) {
-  std::mt19937_64 random(7);
-  std::uniform_real_distribution<Real> uniform(-1, 1);
-  Vector x(n);
-  for (Index i = 0; i < n; ++i) x[i] = uniform(random);
-  return x;
-}
+Vector randomVector(Index n) { return test::randomVector(n, 7); }
 
 TEST(LatticeStencils, ReproduceTheBigLatticeFromTheCompactOneAtTheRightDepth) {
   const std::array<Index, 2> nodes{41, 23};

@@ -12,6 +12,8 @@
 #include "particles/GhostLayers.hpp"
 #include "particles/Lattice.hpp"
 
+#include "support/RandomVector.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -66,13 +68,7 @@ VeryWeakSphProblemSettings<D> settingsOn(const Box<D>& box, VeryWeakSphVariant v
   return s;
 }
 
-Vector randomVector(Index n, unsigned seed) {
-  std::mt19937_64 random(seed);
-  std::uniform_real_distribution<Real> uniform(-1, 1);
-  Vector x(n);
-  for (Index i = 0; i < n; ++i) x[i] = uniform(random);
-  return x;
-}
+using test::randomVector;
 
 Real relative(const Vector& a, const Vector& b) {
   const Real scale = b.cwiseAbs().maxCoeff();
