@@ -40,7 +40,10 @@ class LatticeCentredDamping : public CentredDampingSolve {
     system_.fusedSolve(inverse_, u.data(), vHalf.data(), a.data());
     for (const auto& [particle, prescribed] : particles_) {
       const Index type = system_.types().typeOf(system_.types().node(particle));
-      Block<D> matrix = blockOf(system_.mass(), type) + halfStep_ * blockOf(system_.damping(), type);
+      Block<D> mass, damping;
+      system_.mass().typeSum(type, mass.data());
+      system_.damping().typeSum(type, damping.data());
+      const Block<D> matrix = mass + halfStep_ * damping;
       Eigen::Matrix<Real, D, 1> solution = Eigen::Map<const Eigen::Matrix<Real, D, 1>>(a.data() + D * particle);
       const Eigen::Matrix<Real, D, 1> rhs = matrix * solution;  // the row's right-hand side, recovered
       std::vector<int> free;
@@ -72,13 +75,6 @@ class LatticeCentredDamping : public CentredDampingSolve {
     std::array<Index, D> index;  // position in the prescribed list, -1 for a free component
   };
 
-  static Block<D> blockOf(const LatticeStencils<D>& table, Index type) {
-    Block<D> b = Block<D>::Zero();
-    if (!table.empty())
-      for (Index e = table.begin(type); e < table.end(type); ++e) b += Eigen::Map<const Block<D>>(table.block(e));
-    return b;
-  }
-
   const LatticeSecondOrderSystem<D>& system_;
   Real halfStep_;
   std::vector<Real> inverse_;
@@ -102,7 +98,7 @@ class LatticeCoupledCentredDamping : public CentredDampingSolve {
       const Index type = types.typeOf(types.node(p));
       if (c.begin(type) == c.end(type)) continue;
       nodes_.push_back(p);
-      for (Index e = c.begin(type); e < c.end(type); ++e) nodes_.push_back(p + flatOffset(types, c.offset(e)));
+      for (Index e = c.begin(type); e < c.end(type); ++e) nodes_.push_back(c.column(e, p));
     }
     std::sort(nodes_.begin(), nodes_.end());
     nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
@@ -130,7 +126,7 @@ class LatticeCoupledCentredDamping : public CentredDampingSolve {
       const Index p = nodes_[k];
       const Index type = types.typeOf(types.node(p));
       auto add = [&](const LatticeStencils<D>& table, Index e, Real scale) {
-        const Index q = local(p + flatOffset(types, table.offset(e)));
+        const Index q = local(table.column(e, p));
         for (int a = 0; a < D; ++a) {
           const std::size_t row = static_cast<std::size_t>(D) * k + static_cast<std::size_t>(a);
           if (prescribed[row]) continue;
@@ -163,7 +159,7 @@ class LatticeCoupledCentredDamping : public CentredDampingSolve {
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
       const Index p = nodes_[k];
       Real block[D * D];
-      massBlock(types.typeOf(types.node(p)), block);
+      system_.mass().typeSum(types.typeOf(types.node(p)), block);
       for (int c = 0; c < D; ++c) {
         Real s = 0;
         for (int d = 0; d < D; ++d) s += block[D * c + d] * a[D * p + d];
@@ -179,18 +175,6 @@ class LatticeCoupledCentredDamping : public CentredDampingSolve {
   }
 
  private:
-  static Index flatOffset(const LatticeRowTypes<D>& types, const std::array<Index, D>& offset) {
-    Index flat = 0;
-    for (int k = D - 1; k >= 0; --k) flat = flat * types.nodes()[static_cast<std::size_t>(k)] + offset[static_cast<std::size_t>(k)];
-    return flat;
-  }
-  void massBlock(Index type, Real* out) const {
-    const LatticeStencils<D>& m = system_.mass();
-    for (int k = 0; k < D * D; ++k) out[k] = 0;
-    for (Index e = m.begin(type); e < m.end(type); ++e)
-      for (int k = 0; k < D * D; ++k) out[k] += m.block(e)[k];
-  }
-
   const LatticeSecondOrderSystem<D>& system_;
   std::vector<Real> inverseMass_;
   std::vector<Index> nodes_;                     // sorted: the nodes of the factorised block
@@ -219,21 +203,13 @@ LatticeSecondOrderSystem<D>::LatticeSecondOrderSystem(LatticeStencils<D> mass, L
 }
 
 template <int D>
-void LatticeSecondOrderSystem<D>::typeBlock(const LatticeStencils<D>& table, Index type, Real* out) const {
-  for (int k = 0; k < D * D; ++k) out[k] = 0;
-  if (table.empty()) return;
-  for (Index e = table.begin(type); e < table.end(type); ++e)
-    for (int k = 0; k < D * D; ++k) out[k] += table.block(e)[k];
-}
-
-template <int D>
 std::vector<Real> LatticeSecondOrderSystem<D>::inverseBlocks(Real s) const {
   const Index typeCount = stiffness_.typeCount();
   std::vector<Real> inverse(static_cast<std::size_t>(D * D * typeCount));
   for (Index type = 0; type < typeCount; ++type) {
     Block<D> m, c;
-    typeBlock(mass_, type, m.data());
-    typeBlock(damping_, type, c.data());
+    mass_.typeSum(type, m.data());
+    damping_.typeSum(type, c.data());
     const Block<D> matrix = m + s * c;
     const Real determinant = matrix.determinant();
     if (!(std::abs(determinant) > 0) || !std::isfinite(determinant))
@@ -354,7 +330,7 @@ Vector LatticeSecondOrderSystem<D>::lumpedMass() const {
   std::vector<Real> diagonal(static_cast<std::size_t>(D * typeCount));
   for (Index type = 0; type < typeCount; ++type) {
     Real b[D * D];
-    typeBlock(mass_, type, b);
+    mass_.typeSum(type, b);
     for (int c = 0; c < D; ++c)
       for (int d = 0; d < D; ++d)
         if (c != d && b[D * c + d] != 0) throw InputError("mass", "needs a diagonal (lumped) mass matrix");

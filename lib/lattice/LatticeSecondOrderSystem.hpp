@@ -57,9 +57,6 @@ class LatticeSecondOrderSystem : public LinearOperatorSystem {
   std::vector<Real> inverseBlocks(Real s) const;
 
  private:
-  // The type's block of a block-diagonal table (zero when the type has none).
-  void typeBlock(const LatticeStencils<D>& table, Index type, Real* out) const;
-
   LatticeStencils<D> mass_, damping_, stiffness_;
   ForceFunction force_;
   bool hasDamping_ = false;

@@ -74,6 +74,14 @@ LatticeStencils<D> LatticeStencils<D>::on(const LatticeRowTypes<D>& types) const
 }
 
 template <int D>
+void LatticeStencils<D>::typeSum(Index type, Real* out) const {
+  for (int k = 0; k < D * D; ++k) out[k] = 0;
+  if (empty()) return;
+  for (Index e = begin(type); e < end(type); ++e)
+    for (int k = 0; k < D * D; ++k) out[k] += block(e)[k];
+}
+
+template <int D>
 bool LatticeStencils<D>::blockDiagonal() const {
   for (const auto& o : offset_)
     for (Index v : o)

@@ -41,6 +41,9 @@ class LatticeStencils {
   const std::array<Index, D>& offset(Index entry) const { return offset_[static_cast<std::size_t>(entry)]; }
   // The D x D block of an entry, row-major.
   const Real* block(Index entry) const { return &block_[static_cast<std::size_t>(D * D * entry)]; }
+  // The sum of a type's blocks, row-major D x D (zero for an empty table): for a block-diagonal
+  // operator (mass, lumped dashpots), its block at that type.
+  void typeSum(Index type, Real* out) const;
   // True when every entry sits at offset zero (a block-diagonal operator: mass, lumped dashpots).
   bool blockDiagonal() const;
   // The same stencils addressed on the lattice of `types` (same depth, any size).

@@ -1,7 +1,6 @@
 #include "study/VeryWeakSphScene.hpp"
 
 #include "core/Error.hpp"
-#include "methods/very_weak_sph/VeryWeakSphLattice.hpp"
 
 namespace mfwave {
 namespace {
@@ -62,13 +61,12 @@ VeryWeakSphProblemSettings<D> veryWeakSphProblemSettings(const Scene& scene, con
   s.deconvolution = spec.deconvolution;
   s.ghostLayers = geometry.ghostLayers;
   s.ghostFaces = geometry.ghostFaces;
-  // method.operator: "auto" takes the lattice stencils when they can run the scene (a box lattice,
-  // no periodic axis, nothing latticeStorageObstacle names), "lattice" insists (and the problem
-  // says why not), "sparse" assembles the matrices.
+  // method.operator: "auto" takes the lattice stencils on a box lattice without periodic axes
+  // (they run every variant, boundary, filter and the deconvolution), "lattice" insists (and the
+  // problem says why not), "sparse" assembles the matrices.
   bool periodic = false;
   for (bool p : geometry.periodic) periodic = periodic || p;
-  const bool latticeFits = !periodic && latticeStorageObstacle<D>(s).empty();
-  s.storage = spec.operatorStorage == "lattice" || (spec.operatorStorage == "auto" && latticeFits)
+  s.storage = spec.operatorStorage == "lattice" || (spec.operatorStorage == "auto" && !periodic)
                   ? OperatorStorage::Lattice
                   : OperatorStorage::Sparse;
   return s;

@@ -1,7 +1,6 @@
 #include "methods/very_weak_sph/VeryWeakSphLattice.hpp"
 
 #include "core/Error.hpp"
-#include "core/TimeFunction.hpp"
 #include "particles/GhostLayers.hpp"
 #include "particles/Lattice.hpp"
 
@@ -14,16 +13,15 @@ namespace {
 
 constexpr Real kTolerance = 1e-12;
 
-// The settings on the box of `nodes` from the same lower corner, without what is not per row
-// type (patches, prescribed faces) and with `tractions` as the face loads.
+// The settings on the box of `nodes` from the same lower corner, without the loads (the face
+// tractions are read off its traction matrix, patches are not per row type) and prescribed faces.
 template <int D>
-VeryWeakSphProblemSettings<D> onBox(const VeryWeakSphProblemSettings<D>& settings, const std::array<Index, D>& nodes,
-                                    std::vector<FaceTraction<D>> tractions) {
+VeryWeakSphProblemSettings<D> onBox(const VeryWeakSphProblemSettings<D>& settings, const std::array<Index, D>& nodes) {
   VeryWeakSphProblemSettings<D> s = settings;
   s.storage = OperatorStorage::Sparse;
   for (int a = 0; a < D; ++a)
     s.upper[a] = settings.lower[a] + static_cast<Real>(nodes[static_cast<std::size_t>(a)] - 1) * settings.spacing;
-  s.faceTractions = std::move(tractions);
+  s.faceTractions.clear();
   s.patches.clear();
   s.prescribed.clear();
   s.keepOperatorMatrix = false;
@@ -87,12 +85,6 @@ bool needsPatchFace(const VeryWeakSphProblemSettings<D>& settings, int face) {
 }  // namespace
 
 template <int D>
-std::string latticeStorageObstacle(const VeryWeakSphProblemSettings<D>& settings) {
-  (void)settings;
-  return "";
-}
-
-template <int D>
 std::array<Index, D> checkedLatticeNodes(const ParticleSet<D>& particles, const VeryWeakSphProblemSettings<D>& settings) {
   const Real dx = settings.spacing;
   const std::array<Index, D> intervals = latticeIntervals<D>(settings.lower, settings.upper, dx);
@@ -127,7 +119,7 @@ VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& 
   Real closest = std::numeric_limits<Real>::infinity();
   for (Index depth = 1; depth <= maxDepth; ++depth) {
     const LatticeRowTypes<D> types(nodes, depth);
-    const VeryWeakSphProblemSettings<D> compactSettings = onBox<D>(settings, types.compactNodes(), {});
+    const VeryWeakSphProblemSettings<D> compactSettings = onBox<D>(settings, types.compactNodes());
     VeryWeakSphProblem<D> compact(particlesOf<D>(compactSettings), compactSettings);
     LinearSecondOrderSystem& system = compact.sparseSystem();
     VeryWeakSphStencils<D> result;
@@ -152,7 +144,7 @@ VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& 
         checkNodes[s] = std::min(nodes[s], types.compactNodes()[s] + 2);
       }
       const LatticeRowTypes<D> checkTypes = types.on(checkNodes);
-      const VeryWeakSphProblemSettings<D> checkSettings = onBox<D>(settings, checkNodes, {});
+      const VeryWeakSphProblemSettings<D> checkSettings = onBox<D>(settings, checkNodes);
       VeryWeakSphProblem<D> check(particlesOf<D>(checkSettings), checkSettings);
       LinearSecondOrderSystem& checked = check.sparseSystem();
       result.mismatch = std::max(result.stiffness.on(checkTypes).mismatch(checked.stiffness()),
@@ -177,15 +169,9 @@ VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& 
       }
     }
 
-    // Face tractions at unit history, one compact assembly each.
-    const TimeFunction one = TimeFunction::constant(1);
+    // Face tractions at unit history, from the compact assembly's traction matrix.
     for (const FaceTraction<D>& traction : settings.faceTractions) {
-      FaceTraction<D> unit = traction;
-      unit.history = &one;
-      const VeryWeakSphProblemSettings<D> loadSettings = onBox<D>(settings, types.compactNodes(), {unit});
-      VeryWeakSphProblem<D> loaded(particlesOf<D>(loadSettings), loadSettings);
-      Vector f;
-      loaded.system().force(0, f);
+      const Vector f = faceTractionLoad<D>(compact.data(), traction.faces, traction.traction);
       result.faceLoads.emplace_back(f.data(), f.data() + f.size());
     }
     return result;
@@ -195,9 +181,6 @@ VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& 
                                           "); use method.operator = \"sparse\"");
 }
 
-template std::string latticeStorageObstacle<1>(const VeryWeakSphProblemSettings<1>&);
-template std::string latticeStorageObstacle<2>(const VeryWeakSphProblemSettings<2>&);
-template std::string latticeStorageObstacle<3>(const VeryWeakSphProblemSettings<3>&);
 template std::array<Index, 1> checkedLatticeNodes<1>(const ParticleSet<1>&, const VeryWeakSphProblemSettings<1>&);
 template std::array<Index, 2> checkedLatticeNodes<2>(const ParticleSet<2>&, const VeryWeakSphProblemSettings<2>&);
 template std::array<Index, 3> checkedLatticeNodes<3>(const ParticleSet<3>&, const VeryWeakSphProblemSettings<3>&);

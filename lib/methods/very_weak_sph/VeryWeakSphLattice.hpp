@@ -33,12 +33,6 @@ struct VeryWeakSphStencils {
   Real mismatch = 0;  // against the check assembly (0 when the compact box is the whole box)
 };
 
-// Why the lattice storage cannot run these settings ("" when it can). Every variant, boundary kind,
-// filter and the deconvolution are stencils now; kept for what may not be (a reason is a sentence
-// naming the setting).
-template <int D>
-std::string latticeStorageObstacle(const VeryWeakSphProblemSettings<D>& settings);
-
 // The nodes per axis of the lattice of settings.lower, settings.upper, settings.spacing, after
 // checking that the physical particles are that lattice in makeLattice's order (x fastest). Throws
 // InputError("method.operator") naming the first particle that is not.

@@ -64,6 +64,18 @@ void appendNonzeros(const Vector& force, const TimeFunction* history, std::vecto
 
 }  // namespace
 
+template <int D>
+Vector faceTractionLoad(const VeryWeakSphData<D>& data, std::uint8_t faces, const Vec<D>& traction) {
+  Vector t = Vector::Zero(D * data.facets.count());
+  for (Index f = 0; f < data.facets.count(); ++f)
+    if (faces & faceBit(data.facets.face[static_cast<std::size_t>(f)])) t.template segment<D>(D * f) = traction;
+  return data.tractionMatrix * t;
+}
+
+template Vector faceTractionLoad<1>(const VeryWeakSphData<1>&, std::uint8_t, const Vec<1>&);
+template Vector faceTractionLoad<2>(const VeryWeakSphData<2>&, std::uint8_t, const Vec<2>&);
+template Vector faceTractionLoad<3>(const VeryWeakSphData<3>&, std::uint8_t, const Vec<3>&);
+
 void checkVeryWeakSphCombination(VeryWeakSphVariant variant, bool deconvolution, Real smoothingRate) {
   if (variant != VeryWeakSphVariant::Galerkin) return;
   if (deconvolution)
@@ -108,12 +120,8 @@ VeryWeakSphProblem<D>::VeryWeakSphProblem(const ParticleSet<D>& particles,
 
   // loads (eq. (19)): fixed vectors T t scaled by their time functions, whole faces first
   std::vector<Load> loads;
-  for (const FaceTraction<D>& face : settings.faceTractions) {
-    Vector t = Vector::Zero(D * data.facets.count());
-    for (Index f = 0; f < data.facets.count(); ++f)
-      if (face.faces & faceBit(data.facets.face[static_cast<std::size_t>(f)])) t.template segment<D>(D * f) = face.traction;
-    loads.push_back({data.tractionMatrix * t, face.history});
-  }
+  for (const FaceTraction<D>& face : settings.faceTractions)
+    loads.push_back({faceTractionLoad<D>(data, face.faces, face.traction), face.history});
   for (const PatchTraction<D>& patch : settings.patches) {
     if (galerkin) {  // the exact int_patch W_a t of the tent kernel (GalerkinLattice.hpp)
       const std::vector<Real> weights = patchTentWeights<D>(particles, patch.face, patch.centre, patch.halfWidths,
@@ -160,10 +168,6 @@ void VeryWeakSphProblem<D>::prescribeFaces(const ParticleSet<D>& particles,
 template <int D>
 void VeryWeakSphProblem<D>::buildLattice(const ParticleSet<D>& particles,
                                          const VeryWeakSphProblemSettings<D>& settings) {
-  const std::string obstacle = latticeStorageObstacle<D>(settings);
-  if (!obstacle.empty())
-    throw InputError("method.operator", "the lattice storage cannot run this scene: " + obstacle +
-                                            "; use method.operator = \"sparse\" (or \"auto\")");
   const VeryWeakSphVariant variant = settings.options.variant;
   const std::array<Index, D> nodes = checkedLatticeNodes<D>(particles, settings);
   VeryWeakSphStencils<D> stencils = veryWeakSphStencils<D>(settings, nodes);

@@ -86,6 +86,11 @@ struct VeryWeakSphProblemSettings {
   bool keepOperatorMatrix = false;
 };
 
+// Eq. (19) for a traction on whole faces: the nodal force T t with t = traction on every facet of
+// the faces in `faces` (a faceBit mask).
+template <int D>
+Vector faceTractionLoad(const VeryWeakSphData<D>& data, std::uint8_t faces, const Vec<D>& traction);
+
 // Throws InputError for what the method cannot combine: deconvolution ("method.deconvolution") or
 // the smoothing filter ("method.smoothing_rate") with the galerkin variant, whose state is nodal and
 // stable without a filter. Drivers call it when the scene is read; the problem calls it again.
