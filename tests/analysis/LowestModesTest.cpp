@@ -15,7 +15,7 @@ namespace {
 
 // Free-free chain of n unit springs between n masses: K = tridiag(-1, 2, -1) with 1 at both ends,
 // `copies` uncoupled copies one after another.
-SparseMatrix chain(Index n, int copies) {
+SparseMatrix springChain(Index n, int copies) {
   std::vector<Eigen::Triplet<Real>> entries;
   for (int c = 0; c < copies; ++c) {
     const Index o = c * n;
@@ -34,7 +34,7 @@ SparseMatrix chain(Index n, int copies) {
 TEST(LowestModes, FreeChainGivesItsRigidModeAndTheClosedFormFrequencies) {
   const Index n = 200;
   const Real m = 0.5;
-  const LowestModes modes = lowestModes(chain(n, 1), Vector::Constant(n, m), 5, 1e-10);
+  const LowestModes modes = lowestModes(springChain(n, 1), Vector::Constant(n, m), 5, 1e-10);
   ASSERT_TRUE(modes.shiftedMatrixPositiveDefinite);
   ASSERT_TRUE(modes.converged);
   for (int k = 0; k < 5; ++k) {
@@ -46,7 +46,7 @@ TEST(LowestModes, FreeChainGivesItsRigidModeAndTheClosedFormFrequencies) {
 
 TEST(LowestModes, KeepsTheMultiplicityOfRepeatedEigenvalues) {
   const Index n = 50;
-  const LowestModes modes = lowestModes(chain(n, 3), Vector::Ones(3 * n), 6, 1e-10);
+  const LowestModes modes = lowestModes(springChain(n, 3), Vector::Ones(3 * n), 6, 1e-10);
   ASSERT_TRUE(modes.converged);
   const Real first = 2 - 2 * std::cos(M_PI / n);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(modes.eigenvalues[static_cast<std::size_t>(k)], 0.0, 1e-9) << k;
@@ -55,7 +55,7 @@ TEST(LowestModes, KeepsTheMultiplicityOfRepeatedEigenvalues) {
 
 TEST(LowestModes, ANegativeEigenvalueBelowTheShiftFailsTheFactorisation) {
   const Index n = 40;
-  SparseMatrix k = chain(n, 1);
+  SparseMatrix k = springChain(n, 1);
   k.coeffRef(7, 7) = -1.0;  // e_7^T K e_7 < 0: K is indefinite
   const LowestModes modes = lowestModes(k, Vector::Ones(n), 3, 1e-6);
   EXPECT_FALSE(modes.shiftedMatrixPositiveDefinite);

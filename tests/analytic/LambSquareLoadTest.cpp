@@ -12,7 +12,7 @@
 using namespace mfwave;
 
 namespace {
-const double kS3 = std::sqrt(3.0);
+const double kRoot3 = std::sqrt(3.0);
 
 // int_{x1}^{x2} int_{y1}^{y2} dx dy / sqrt(x^2 + y^2) from the corner antiderivative
 // G(x, y) = x asinh(y / |x|) + y asinh(x / |y|) (odd in x and in y, 0 on the axes).
@@ -40,7 +40,7 @@ double adaptiveSimpson(const std::function<double(double)>& f, double a, double 
   return adaptiveSimpson(f, a, m, fa, flm, fm, left, tol / 2, depth - 1) +
          adaptiveSimpson(f, m, b, fm, frm, fb, right, tol / 2, depth - 1);
 }
-double integrate(const std::function<double(double)>& f, double a, double b, double tol) {
+double integrateToTolerance(const std::function<double(double)>& f, double a, double b, double tol) {
   const double fa = f(a), fb = f(b), fm = f(0.5 * (a + b));
   return adaptiveSimpson(f, a, b, fa, fm, fb, (b - a) / 6 * (fa + 4 * fm + fb), tol, 40);
 }
@@ -79,12 +79,12 @@ TEST(LambSquareLoad, PlaneWaveBeforeTheEdgesAreFelt) {
   // under a uniform pressure on the whole surface: u = p t / (rho c_p) for a step.
   const LambSquareLoad load(1, 1, 0.5, {0, 1}, {0, 1});
   for (double t : {0.05, 0.2, 0.28}) {
-    EXPECT_NEAR(load.stepDisplacement(0, 0, t), t / kS3, 1e-13) << t;
-    EXPECT_NEAR(load.rampDisplacement(0, 0, t), t * t / (2 * kS3), 1e-13) << t;
+    EXPECT_NEAR(load.stepDisplacement(0, 0, t), t / kRoot3, 1e-13) << t;
+    EXPECT_NEAR(load.rampDisplacement(0, 0, t), t * t / (2 * kRoot3), 1e-13) << t;
   }
   // mu = 4, rho = 1 (c_s = 2), p = 3: u = p t / (rho c_p) = 3 t / (2 sqrt3).
   const LambSquareLoad other(4, 2, 0.5, {0, 1}, {0, 1}, 3);
-  EXPECT_NEAR(other.stepDisplacement(0, 0, 0.1), 3 * 0.1 / (2 * kS3), 1e-13);
+  EXPECT_NEAR(other.stepDisplacement(0, 0, 0.1), 3 * 0.1 / (2 * kRoot3), 1e-13);
 }
 
 TEST(LambSquareLoad, QuadratureConverges) {
@@ -102,7 +102,7 @@ TEST(LambSquareLoad, ArrivalsAndConsistencyOfVelocityAndDisplacement) {
   const TimeFunction f = TimeFunction::triangle(0, 1, 1, 1);  // Ding-Long-Wu eq. (36)
   for (double t : {-1.0, 0.0, 0.3, 1.0, 1.7, 2.0, 3.0}) EXPECT_NEAR(load.loadHistory(t), f(t), 1e-15);
   // Zero before the P wave from the nearest loaded point (1.5 away from (2, 0)).
-  const double tp = 1.5 / kS3;
+  const double tp = 1.5 / kRoot3;
   for (double t : {0.0, 0.5, 0.8, tp}) {
     EXPECT_EQ(load.velocity(2, 0, t), 0) << t;
     EXPECT_EQ(load.displacement(2, 0, t), 0) << t;
@@ -120,7 +120,7 @@ TEST(LambSquareLoad, ArrivalsAndConsistencyOfVelocityAndDisplacement) {
     // int_0^t v = u (the velocity is continuous; adaptive Simpson).
     double integral = 0, previous = 0;
     for (double t : {1.0, 2.0, 3.0, 4.5, 6.0}) {
-      integral += integrate([&](double s) { return load.velocity(x, y, s); }, previous, t, 1e-10);
+      integral += integrateToTolerance([&](double s) { return load.velocity(x, y, s); }, previous, t, 1e-10);
       previous = t;
       EXPECT_NEAR(integral, load.displacement(x, y, t), 1e-6) << x << " " << t;
     }

@@ -14,11 +14,11 @@ using namespace mfwave;
 
 namespace {
 
-constexpr Real kOmega = 2 * M_PI;
+constexpr Real kArkodeOmega = 2 * M_PI;
 constexpr Real kZeta = 0.1;
 
 TEST(ArkodeSecondOrder, AdaptiveDormandPrinceMeetsItsTolerance) {
-  auto system = test::oscillator(kOmega, kZeta);
+  auto system = test::oscillator(kArkodeOmega, kZeta);
   ArkodeOptions options;
   options.table = "dormand_prince_7_4_5";
   options.adaptive = true;
@@ -30,9 +30,9 @@ TEST(ArkodeSecondOrder, AdaptiveDormandPrinceMeetsItsTolerance) {
   for (Real t : {0.3, 0.7, 1.25, 2.0}) {
     integrator.advanceTo(t);
     EXPECT_EQ(integrator.time(), t);  // lands exactly
-    const auto exact = test::oscillatorExact(kOmega, kZeta, t);
+    const auto exact = test::oscillatorExact(kArkodeOmega, kZeta, t);
     maxError = std::max(maxError, std::abs(integrator.state().displacement[0] - exact.u));
-    maxError = std::max(maxError, std::abs(integrator.state().velocity[0] - exact.v) / kOmega);
+    maxError = std::max(maxError, std::abs(integrator.state().velocity[0] - exact.v) / kArkodeOmega);
   }
   const auto stats = integrator.arkode().statistics();
   std::printf("dormand_prince rtol 1e-8: max error %.3e, %ld steps, %ld rhs, %ld failed\n", maxError, stats.steps,
@@ -50,12 +50,12 @@ TEST(ArkodeSecondOrder, AdaptiveDormandPrinceMeetsItsTolerance) {
   loose.initialise(*system, 0, Vector::Ones(1), Vector::Zero(1), 1e-3);
   loose.advanceTo(2.0);
   EXPECT_LT(loose.arkode().statistics().steps, stats.steps);
-  const auto exact = test::oscillatorExact(kOmega, kZeta, 2.0);
+  const auto exact = test::oscillatorExact(kArkodeOmega, kZeta, 2.0);
   EXPECT_GT(std::abs(loose.state().displacement[0] - exact.u), 1e-9);
 }
 
 TEST(ArkodeSecondOrder, AdaptiveStepsAdvanceByTheChosenStep) {
-  auto system = test::oscillator(kOmega, kZeta);
+  auto system = test::oscillator(kArkodeOmega, kZeta);
   ArkodeOptions options;
   options.table = "bogacki_shampine_4_2_3";
   options.adaptive = true;
@@ -78,12 +78,12 @@ TEST(ArkodeSecondOrder, AdaptiveStepsAdvanceByTheChosenStep) {
 }
 
 TEST(ArkodeSecondOrder, FixedStepLandsOffGridAndContinuesOnTheGrid) {
-  auto system = test::oscillator(kOmega, 0);
+  auto system = test::oscillator(kArkodeOmega, 0);
   ArkodeSecondOrder integrator;  // classic_rk4
   integrator.initialise(*system, 0, Vector::Ones(1), Vector::Zero(1), 0.01);
   integrator.advanceTo(0.255);
   EXPECT_EQ(integrator.time(), 0.255);
-  const auto exact = test::oscillatorExact(kOmega, 0, 0.255);
+  const auto exact = test::oscillatorExact(kArkodeOmega, 0, 0.255);
   EXPECT_NEAR(integrator.state().displacement[0], exact.u, 1e-6);
   integrator.step();
   EXPECT_NEAR(integrator.time(), 0.265, 1e-12);
@@ -103,7 +103,7 @@ TEST(ArkodeSecondOrder, FixedStepLandsOffGridAndContinuesOnTheGrid) {
 TEST(ArkodeSecondOrder, ClassicRk4IsTheTextbookMethod) {
   // Against RK4 written out by hand. Guards the workaround for SUNDIALS 6.4.1 reusing the last
   // stage as the next first stage when c_s = 1 (without it the two differ by 1e-2 after 10 steps).
-  const Real w = kOmega, dt = 0.05;
+  const Real w = kArkodeOmega, dt = 0.05;
   auto system = test::oscillator(w, kZeta);
   ArkodeSecondOrder integrator;
   integrator.initialise(*system, 0, Vector::Ones(1), Vector::Zero(1), dt);
@@ -203,7 +203,7 @@ TEST(ArkodeSecondOrder, ExceptionsFromTheSystemCrossSundialsIntact) {
 
 TEST(ArkodeExplicit, SundialsFailuresBecomeErrorsNamingTheFunction) {
   // An adaptive run that may take only 5 steps per advance: ARK_TOO_MUCH_WORK.
-  auto system = test::oscillator(kOmega, kZeta);
+  auto system = test::oscillator(kArkodeOmega, kZeta);
   ArkodeOptions options;
   options.table = "heun_euler_2_1_2";
   options.adaptive = true;

@@ -21,7 +21,7 @@ using namespace mfwave;
 
 namespace {
 
-using Damping = CentralDifference::Damping;
+using DashpotOperator = CentralDifference::Damping;
 
 // M u'' + C u' + K u = 0 from (u0, v0), exactly: y = [u; v] solves y' = A y with
 // A = [0 I; -M^-1 K  -M^-1 C], and y(t) = V exp(Lambda t) V^-1 y0 from A's eigen-decomposition.
@@ -79,7 +79,7 @@ Errors trajectoryErrors(LinearSecondOrderSystem& system, const ExactLinearMotion
 }
 
 // Observed orders of the last halving (of five grids) for u and v.
-Errors observedOrders(LinearSecondOrderSystem& system, const ExactLinearMotion& exact, const Vector& u0,
+Errors dampedObservedOrders(LinearSecondOrderSystem& system, const ExactLinearMotion& exact, const Vector& u0,
                       const Vector& v0, Real endTime, int coarsestSteps, const char* label) {
   std::vector<Errors> errors;
   for (int level = 0; level < 5; ++level)
@@ -99,7 +99,7 @@ TEST(CentralDifferenceImplicitDamping, ScalarDampedOscillatorIsSecondOrderInDisp
   auto system = test::oscillator(w, zeta);
   const Vector u0 = Vector::Constant(1, 1.0), v0 = Vector::Constant(1, -0.5);
   const ExactLinearMotion exact(dense(system->mass()), dense(system->damping()), dense(system->stiffness()), u0, v0);
-  const Errors orders = observedOrders(*system, exact, u0, v0, 2.0, 40, "scalar damped oscillator");
+  const Errors orders = dampedObservedOrders(*system, exact, u0, v0, 2.0, 40, "scalar damped oscillator");
   EXPECT_NEAR(orders.u, 2.0, 0.05);
   EXPECT_NEAR(orders.v, 2.0, 0.05);
 }
@@ -120,7 +120,7 @@ TEST(CentralDifferenceImplicitDamping, CoupledPairWithNonDiagonalDampingIsSecond
   u0 << 1, -0.5;
   v0 << 0.3, 2;
   const ExactLinearMotion exact(dense(system->mass()), dense(system->damping()), dense(system->stiffness()), u0, v0);
-  const Errors orders = observedOrders(*system, exact, u0, v0, 3.0, 60, "coupled pair, non-diagonal C");
+  const Errors orders = dampedObservedOrders(*system, exact, u0, v0, 3.0, 60, "coupled pair, non-diagonal C");
   EXPECT_NEAR(orders.u, 2.0, 0.05);
   EXPECT_NEAR(orders.v, 2.0, 0.05);
 }
@@ -132,12 +132,12 @@ struct StrongDashpotRun {
 };
 
 // m u'' + c u' + k u = 0 with m = 1, w = 1, c dt / m = 10 and w dt = 1.5, from u0 = 1, v0 = 1.
-StrongDashpotRun strongDashpotRun(Damping damping, int steps) {
+StrongDashpotRun strongDashpotRun(DashpotOperator damping, int steps) {
   const Real w = 1, dt = 1.5 / w, c = 10 / dt;
   LinearSecondOrderSystem system(test::scalarMatrix(1), test::scalarMatrix(c), test::scalarMatrix(w * w));
   CentralDifference integrator(damping);
   integrator.initialise(system, 0, Vector::Ones(1), Vector::Ones(1), dt);
-  EXPECT_EQ(integrator.implicitDamping(), damping == Damping::implicit);
+  EXPECT_EQ(integrator.implicitDamping(), damping == DashpotOperator::implicit);
   StrongDashpotRun run{0, 0, 0};
   for (int i = 0; i < steps && run.amplitude < 1e30; ++i) {
     integrator.step();
@@ -154,8 +154,8 @@ TEST(CentralDifferenceImplicitDamping, StrongDashpotsStayBoundedWhereThePredicto
   // has both roots inside the unit circle for any c >= 0 when w dt < 2 (Jury's test): here
   // 6 z^2 + 0.25 z - 4, roots 0.796 and -0.838. The Taylor start u_1 = u0 + dt v0 + dt^2/2 a_0 with
   // the exact a_0 = -w^2 u0 - c v0 = -23/3 is the largest excursion, |u_1| = 6.125; then it decays.
-  const StrongDashpotRun implicit = strongDashpotRun(Damping::implicit, 10000);
-  const StrongDashpotRun predictor = strongDashpotRun(Damping::predictor, 10000);
+  const StrongDashpotRun implicit = strongDashpotRun(DashpotOperator::implicit, 10000);
+  const StrongDashpotRun predictor = strongDashpotRun(DashpotOperator::predictor, 10000);
   std::printf("c dt / m = 10, w dt = 1.5: implicit |u_1| %.6f max |u| %.6f last |u| %.3e; predictor max |u| %.3e\n",
               implicit.firstStep, implicit.amplitude, implicit.last, predictor.amplitude);
   EXPECT_NEAR(implicit.firstStep, 6.125, 1e-12);
@@ -170,7 +170,7 @@ TEST(CentralDifferenceImplicitDamping, WithoutDampingBothOptionsAreTheClassicalS
   const Vector u0 = test::chainInitialDisplacement(n);
   Vector v0(n);
   for (int i = 0; i < n; ++i) v0[i] = std::sin(0.2 * i);
-  CentralDifference implicit(Damping::implicit), predictor(Damping::predictor);
+  CentralDifference implicit(DashpotOperator::implicit), predictor(DashpotOperator::predictor);
   implicit.initialise(*system, 0, u0, v0, 0.4);
   predictor.initialise(*system, 0, u0, v0, 0.4);
   EXPECT_FALSE(implicit.implicitDamping());  // nothing to treat implicitly
@@ -222,18 +222,18 @@ TEST(CentralDifferenceImplicitDamping, ReportedStateSatisfiesTheEquationOfMotion
 TEST(CentralDifferenceImplicitDamping, OptionIsChosenBeforeInitialiseAndByName) {
   auto system = test::oscillator(1.0, 0.1);
   CentralDifference integrator;
-  EXPECT_EQ(integrator.damping(), Damping::implicit);
-  integrator.setDamping(Damping::predictor);
+  EXPECT_EQ(integrator.damping(), DashpotOperator::implicit);
+  integrator.setDamping(DashpotOperator::predictor);
   integrator.initialise(*system, 0, Vector::Ones(1), Vector::Zero(1), 0.1);
   EXPECT_FALSE(integrator.implicitDamping());
   try {
-    integrator.setDamping(Damping::implicit);
+    integrator.setDamping(DashpotOperator::implicit);
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "damping");
   }
-  EXPECT_EQ(CentralDifference::dampingFromName("predictor"), Damping::predictor);
-  EXPECT_EQ(CentralDifference::dampingFromName("implicit"), Damping::implicit);
+  EXPECT_EQ(CentralDifference::dampingFromName("predictor"), DashpotOperator::predictor);
+  EXPECT_EQ(CentralDifference::dampingFromName("implicit"), DashpotOperator::implicit);
   try {
     CentralDifference::dampingFromName("explicit");
     FAIL();
@@ -245,14 +245,14 @@ TEST(CentralDifferenceImplicitDamping, OptionIsChosenBeforeInitialiseAndByName) 
 TEST(CentralDifferenceImplicitDamping, FactoryPassesTheDampingOption) {
   auto system = test::oscillator(1.0, 0.1);
   IntegratorOptions options;
-  EXPECT_EQ(options.centralDifferenceDamping, Damping::implicit);
-  for (Damping damping : {Damping::implicit, Damping::predictor}) {
+  EXPECT_EQ(options.centralDifferenceDamping, DashpotOperator::implicit);
+  for (DashpotOperator damping : {DashpotOperator::implicit, DashpotOperator::predictor}) {
     options.centralDifferenceDamping = damping;
     auto integrator = makeSecondOrderIntegrator("central_difference", options);
     integrator->initialise(*system, 0, Vector::Ones(1), Vector::Zero(1), 0.01);
     auto* cd = dynamic_cast<CentralDifference*>(integrator.get());
     ASSERT_NE(cd, nullptr);
-    EXPECT_EQ(cd->implicitDamping(), damping == Damping::implicit);
+    EXPECT_EQ(cd->implicitDamping(), damping == DashpotOperator::implicit);
   }
 }
 

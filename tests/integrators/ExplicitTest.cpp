@@ -25,17 +25,17 @@ class ExplicitScheme : public ::testing::Test {};
 using Schemes = ::testing::Types<CentralDifference, Leapfrog>;
 TYPED_TEST_SUITE(ExplicitScheme, Schemes);
 
-constexpr Real kOmega = 3.0;
+constexpr Real kExplicitOmega = 3.0;
 
 // Max |u| over `steps` steps of the undamped oscillator with w dt = wdt, from u0 = 1, v0 = w.
 template <class Integrator>
 Real maxAmplitude(Real wdt, int steps) {
-  auto system = test::oscillator(kOmega, 0);
+  auto system = test::oscillator(kExplicitOmega, 0);
   Integrator integrator;
   Vector u0(1), v0(1);
   u0 << 1;
-  v0 << kOmega;
-  integrator.initialise(*system, 0, u0, v0, wdt / kOmega);
+  v0 << kExplicitOmega;
+  integrator.initialise(*system, 0, u0, v0, wdt / kExplicitOmega);
   Real amplitude = 0;
   for (int i = 0; i < steps && amplitude < 1e30; ++i) {
     integrator.step();
@@ -63,12 +63,12 @@ TYPED_TEST(ExplicitScheme, EnergyErrorIsBoundedWithoutDrift) {
   // Symplectic: the energy 1/2 v^2 + 1/2 w^2 u^2 (with the synchronous velocity) oscillates within
   // a relative band of (w dt)^2 / 4 from (u0, v0) = (1, 0) and does not drift over 10^5 steps.
   const Real wdt = 0.1;
-  auto system = test::oscillator(kOmega, 0);
+  auto system = test::oscillator(kExplicitOmega, 0);
   TypeParam integrator;
   Vector u0(1), v0(1);
   u0 << 1;
   v0 << 0;
-  integrator.initialise(*system, 0, u0, v0, wdt / kOmega);
+  integrator.initialise(*system, 0, u0, v0, wdt / kExplicitOmega);
   const Real e0 = system->kineticEnergy(v0) + system->strainEnergy(u0);
   const int steps = 100000;
   Real maxFirst = 0, maxLast = 0, maxAll = 0;
@@ -120,7 +120,7 @@ TYPED_TEST(ExplicitScheme, OneAccelerationEvaluationPerStep) {
 
 TYPED_TEST(ExplicitScheme, FirstStepIsTheTaylorStart) {
   // u_1 = u_0 + dt v_0 + dt^2/2 a_0 and v_1 = v_0 + dt/2 (a_0 + a_1), exactly.
-  auto system = test::oscillator(kOmega, 0);
+  auto system = test::oscillator(kExplicitOmega, 0);
   TypeParam integrator;
   Vector u0(1), v0(1);
   u0 << 0.7;
@@ -128,16 +128,16 @@ TYPED_TEST(ExplicitScheme, FirstStepIsTheTaylorStart) {
   const Real dt = 0.05;
   integrator.initialise(*system, 1.0, u0, v0, dt);
   integrator.step();
-  const Real a0 = -kOmega * kOmega * 0.7;
+  const Real a0 = -kExplicitOmega * kExplicitOmega * 0.7;
   const Real u1 = 0.7 + dt * -0.4 + 0.5 * dt * dt * a0;
-  const Real a1 = -kOmega * kOmega * u1;
+  const Real a1 = -kExplicitOmega * kExplicitOmega * u1;
   EXPECT_NEAR(integrator.state().displacement[0], u1, 1e-15);
   EXPECT_NEAR(integrator.state().velocity[0], -0.4 + 0.5 * dt * (a0 + a1), 1e-15);
   EXPECT_DOUBLE_EQ(integrator.time(), 1.0 + dt);
 }
 
 TYPED_TEST(ExplicitScheme, AdvanceToTakesWholeStepsAndRejectsOffGridTimes) {
-  auto system = test::oscillator(kOmega, 0);
+  auto system = test::oscillator(kExplicitOmega, 0);
   TypeParam integrator;
   integrator.initialise(*system, 0, Vector::Ones(1), Vector::Zero(1), 0.01);
   integrator.advanceTo(0.37);
@@ -147,7 +147,7 @@ TYPED_TEST(ExplicitScheme, AdvanceToTakesWholeStepsAndRejectsOffGridTimes) {
 }
 
 TYPED_TEST(ExplicitScheme, BadInitialStateNamesTheKey) {
-  auto system = test::oscillator(kOmega, 0);
+  auto system = test::oscillator(kExplicitOmega, 0);
   TypeParam integrator;
   try {
     integrator.initialise(*system, 0, Vector::Ones(2), Vector::Zero(1), 0.01);

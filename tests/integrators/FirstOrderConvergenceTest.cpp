@@ -20,7 +20,7 @@ using namespace mfwave;
 
 namespace {
 
-constexpr Real kOmega = 2 * M_PI;  // period 1
+constexpr Real kConvergenceOmega = 2 * M_PI;  // period 1
 
 struct Case {
   std::string name;  // factory name
@@ -58,12 +58,12 @@ std::vector<Real> ratesFromErrors(const std::vector<Real>& errors) {
 // Errors against the exact solution on four grids, each half the step of the previous.
 std::vector<Real> oscillatorRates(const Case& c, Real zeta) {
   const Real endTime = 2;
-  test::SplitOscillator system(kOmega, zeta);
+  test::SplitOscillator system(kConvergenceOmega, zeta);
   const Vector exact = system.exact(endTime);
   std::vector<Real> errors;
   for (int level = 0; level < 4; ++level) {
     const Vector y = solve(c.name, system, test::vector2(1, 0), endTime, c.coarsestSteps << level);
-    errors.push_back(std::max(std::abs(y[0] - exact[0]), std::abs(y[1] - exact[1]) / kOmega));
+    errors.push_back(std::max(std::abs(y[0] - exact[0]), std::abs(y[1] - exact[1]) / kConvergenceOmega));
   }
   const auto rates = ratesFromErrors(errors);
   std::printf("%-20s oscillator zeta %.2f: errors%s; rates%s\n", c.name.c_str(), zeta, joined(errors).c_str(),
@@ -149,19 +149,19 @@ TEST(FirstOrderConvergence, LeapfrogStaysSecondOrderUnderAbruptStepChanges) {
   // oscillator, whose P depends on p: P_n, computed with the previous step's predictor, is
   // reused by a kick of a different length, and the scheme stays second order.
   const Real endTime = 2;
-  test::SplitOscillator reference(kOmega, 0.1);
+  test::SplitOscillator reference(kConvergenceOmega, 0.1);
   const Vector exact = reference.exact(endTime);
   std::vector<Real> errors;
   for (int level = 0; level < 4; ++level) {
     const Real h = endTime / (60 << level);
-    test::SplitOscillator system(kOmega, 0.1);
+    test::SplitOscillator system(kConvergenceOmega, 0.1);
     SplitLeapfrog integrator;
     integrator.initialise(system, 0, test::vector2(1, 0), h);
     const Real factors[] = {1.0, 0.4, 1.7};
     integrator.setStepSizeFunction([&](Real, const Vector&) { return h * factors[integrator.stepCount() % 3]; });
     integrator.advanceTo(endTime);
     const Vector& y = integrator.solution();
-    errors.push_back(std::max(std::abs(y[0] - exact[0]), std::abs(y[1] - exact[1]) / kOmega));
+    errors.push_back(std::max(std::abs(y[0] - exact[0]), std::abs(y[1] - exact[1]) / kConvergenceOmega));
   }
   const auto rates = ratesFromErrors(errors);
   std::printf("leapfrog, steps h, 0.4h, 1.7h, damped oscillator: errors%s; rates%s\n", joined(errors).c_str(),
@@ -188,13 +188,13 @@ TEST(FirstOrderConvergence, LeapfrogEnergyIsBoundedWithoutDrift) {
   // the shadow energy v^2 + w^2 (1 - (w dt / 2)^2) x^2 exactly (up to round-off), so the energy
   // error stays in a band of relative width (w dt)^2 / 4 and does not drift.
   const Real wdt = 0.1;
-  test::SplitOscillator system(kOmega, 0);
+  test::SplitOscillator system(kConvergenceOmega, 0);
   SplitLeapfrog integrator;
   const Vector y0 = test::vector2(1, 0);
-  integrator.initialise(system, 0, y0, wdt / kOmega);
+  integrator.initialise(system, 0, y0, wdt / kConvergenceOmega);
   const Real e0 = system.energy(y0);
   const Real x = wdt * wdt / 4;
-  auto shadow = [&](const Vector& y) { return y[1] * y[1] + kOmega * kOmega * (1 - x) * y[0] * y[0]; };
+  auto shadow = [&](const Vector& y) { return y[1] * y[1] + kConvergenceOmega * kConvergenceOmega * (1 - x) * y[0] * y[0]; };
   const Real shadow0 = shadow(y0);
   const int steps = 100000;
   Real maxFirst = 0, maxLast = 0, maxAll = 0, shadowMid = 0, maxShadowError = 0;
@@ -218,17 +218,17 @@ TEST(FirstOrderConvergence, LeapfrogEnergyIsBoundedWithoutDrift) {
   EXPECT_LT(maxShadowError, 1e-11);
   EXPECT_LT(drift, 1e-11);
   EXPECT_EQ(integrator.stepCount(), steps);
-  EXPECT_NEAR(integrator.time(), steps * wdt / kOmega, 1e-9);
+  EXPECT_NEAR(integrator.time(), steps * wdt / kConvergenceOmega, 1e-9);
 }
 
 TEST(FirstOrderConvergence, LeapfrogWithAStateDependentStepLosesEnergyConservation) {
   // Not a requirement but a property to know: with dt = (0.1 / w)(0.75 + 0.25 x) the step map is
   // no longer symplectic and the energy drifts (here downwards) instead of staying in a band.
-  test::SplitOscillator system(kOmega, 0);
+  test::SplitOscillator system(kConvergenceOmega, 0);
   SplitLeapfrog integrator;
   const Vector y0 = test::vector2(1, 0);
-  integrator.initialise(system, 0, y0, 0.1 / kOmega);
-  integrator.setStepSizeFunction([](Real, const Vector& y) { return (0.1 / kOmega) * (0.75 + 0.25 * y[0]); });
+  integrator.initialise(system, 0, y0, 0.1 / kConvergenceOmega);
+  integrator.setStepSizeFunction([](Real, const Vector& y) { return (0.1 / kConvergenceOmega) * (0.75 + 0.25 * y[0]); });
   const Real e0 = system.energy(y0);
   const int steps = 100000, window = 10000;
   Real meanFirst = 0, meanLast = 0;
@@ -246,12 +246,12 @@ TEST(FirstOrderConvergence, LeapfrogWithAStateDependentStepLosesEnergyConservati
 
 // |y_n| with y scaled to [w x; v] after n steps of w dt from (1, 0).
 Real scaledAmplitude(const std::string& name, Real wdt, int steps) {
-  test::SplitOscillator system(kOmega, 0);
+  test::SplitOscillator system(kConvergenceOmega, 0);
   auto integrator = makeFirstOrderIntegrator(name);
-  integrator->initialise(system, 0, test::vector2(1, 0), wdt / kOmega);
+  integrator->initialise(system, 0, test::vector2(1, 0), wdt / kConvergenceOmega);
   for (int i = 0; i < steps; ++i) integrator->step();
   const Vector& y = integrator->solution();
-  return std::hypot(kOmega * y[0], y[1]) / kOmega;
+  return std::hypot(kConvergenceOmega * y[0], y[1]) / kConvergenceOmega;
 }
 
 TEST(FirstOrderConvergence, AmplificationOfAnUndampedOscillation) {

@@ -12,7 +12,7 @@ using mfwave::testing::ScriptedIntegrator;
 
 namespace {
 
-struct StepLog : Observer {
+struct ValueLog : Observer {
   std::vector<long> steps;
   std::vector<Real> firstValues;
   bool ended = false;
@@ -42,7 +42,7 @@ struct TenTimes : ViewAdapter {
 TEST(ViewAdapter, KeepsEachObserversIntervalAndFormsTheViewOnlyWhenDue) {
   ScriptedIntegrator integrator(Vector::Constant(1, 1.0), Vector::Zero(1), 0.1,
                                 [](long, Vector& u, Vector&) { u[0] += 1; });
-  StepLog third, fourth, direct;
+  ValueLog third, fourth, direct;
   TenTimes adapter;
   adapter.add(third, 3);
   adapter.add(fourth, 4);
@@ -62,7 +62,7 @@ TEST(ViewAdapter, KeepsEachObserversIntervalAndFormsTheViewOnlyWhenDue) {
 }
 
 TEST(ViewAdapter, RejectsZeroInterval) {
-  StepLog log;
+  ValueLog log;
   TenTimes adapter;
   EXPECT_THROW(adapter.add(log, 0), InputError);
 }

@@ -4,6 +4,7 @@
 #include "core/Error.hpp"
 #include "particles/Annulus.hpp"
 #include "particles/Lattice.hpp"
+#include "support/InputErrorKey.hpp"
 
 #include <gtest/gtest.h>
 
@@ -33,15 +34,6 @@ double nearestNeighbourDistance(const ParticleSet<2>& set, Index i) {
   for (Index j = 0; j < set.size(); ++j)
     if (j != i) best = std::min(best, (set.position(i) - set.position(j)).norm());
   return best;
-}
-
-std::string errorKey(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.key();
-  }
-  return "";
 }
 
 }  // namespace
@@ -102,14 +94,14 @@ TEST(Annulus, GmsRingHasTenCirclesOfTheExpectedCounts) {
 
 TEST(Annulus, RejectsBadInputNamingTheKey) {
   const Vec2 c(0, 0);
-  EXPECT_EQ(errorKey([&] { makeAnnulus(c, -0.1, 1, 0.1); }), "inner_radius");
-  EXPECT_EQ(errorKey([&] { makeAnnulus(c, std::nan(""), 1, 0.1); }), "inner_radius");
-  EXPECT_EQ(errorKey([&] { makeAnnulus(c, 1, 1, 0.1); }), "outer_radius");
-  EXPECT_EQ(errorKey([&] { makeAnnulus(c, 1, 0.5, 0.1); }), "outer_radius");
-  EXPECT_EQ(errorKey([&] { makeAnnulus(c, 0.5, std::numeric_limits<double>::infinity(), 0.1); }), "outer_radius");
-  EXPECT_EQ(errorKey([&] { makeAnnulus(c, 0.5, 1, 0); }), "spacing");
-  EXPECT_EQ(errorKey([&] { makeAnnulus(c, 0.5, 1, -0.1); }), "spacing");
-  EXPECT_EQ(errorKey([&] { makeAnnulus(Vec2(std::nan(""), 0), 0.5, 1, 0.1); }), "centre");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([&] { makeAnnulus(c, -0.1, 1, 0.1); }), "inner_radius");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([&] { makeAnnulus(c, std::nan(""), 1, 0.1); }), "inner_radius");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([&] { makeAnnulus(c, 1, 1, 0.1); }), "outer_radius");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([&] { makeAnnulus(c, 1, 0.5, 0.1); }), "outer_radius");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([&] { makeAnnulus(c, 0.5, std::numeric_limits<double>::infinity(), 0.1); }), "outer_radius");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([&] { makeAnnulus(c, 0.5, 1, 0); }), "spacing");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([&] { makeAnnulus(c, 0.5, 1, -0.1); }), "spacing");
+  EXPECT_EQ(mfwave::testing::inputErrorKey([&] { makeAnnulus(Vec2(std::nan(""), 0), 0.5, 1, 0.1); }), "centre");
 }
 
 TEST(AppendParticles, TwoRingsMakeOneSetWithFreshIds) {

@@ -12,7 +12,7 @@
 namespace mfwave::bar1d {
 namespace {
 
-Study barStudy() {
+Study collocationBarStudy() {
   const std::string text = R"(
 [scene]
 name = "bar1d"
@@ -47,7 +47,7 @@ end_time = 5.0
 }
 
 TEST(BarCollocationCase, ConvergesInHWithinTheSpectralStepLimit) {
-  const Study study = barStudy();
+  const Study study = collocationBarStudy();
   const CaseResult coarse = runCase(study, 21, "", false);
   const CaseResult fine = runCase(study, 81, "", false);
   EXPECT_NEAR(fine.h, 0.125, 1e-15);

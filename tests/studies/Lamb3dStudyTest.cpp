@@ -19,13 +19,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
+struct LambOutcome {
   bool exited;
   int exitCode;
   std::string log;
 };
 
-Outcome runLamb3d(const std::string& arguments, const std::string& name) {
+LambOutcome runLamb3d(const std::string& arguments, const std::string& name) {
   const fs::path log = fs::temp_directory_path() / ("mfwave-lamb3d-" + name + ".log");
   const std::string command = std::string(LAMB3D_EXECUTABLE) + " --quiet --scene " + SCENES_FOLDER +
                               "/lamb3d.toml " + arguments + " > " + log.string() + " 2>&1";
@@ -48,7 +48,7 @@ std::map<std::string, double> errors(const fs::path& summaryPath) {
 TEST(Lamb3dStudy, PaperResolutionReproducesTheMeasuredErrors) {
   const fs::path out = fs::temp_directory_path() / "mfwave-lamb3d-paper";
   fs::remove_all(out);
-  const Outcome run = runLamb3d("--set 'study.spacings=[0.5]' --set output.every=11 --out " + out.string(), "paper");
+  const LambOutcome run = runLamb3d("--set 'study.spacings=[0.5]' --set output.every=11 --out " + out.string(), "paper");
   ASSERT_TRUE(run.exited && run.exitCode == 0) << run.log;
   EXPECT_EQ(mfwave::testing::summaryDisagreements(out), std::vector<std::string>{});  // every output listed
   for (const char* file : {"cases.csv", "galerkin_0.5-probes.csv", "published_0.5-probes.csv",
@@ -82,7 +82,7 @@ TEST(Lamb3dStudy, PaperResolutionReproducesTheMeasuredErrors) {
 TEST(Lamb3dStudy, WrongMethodAndBadSpacingNameTheirKeys) {
   const fs::path out = fs::temp_directory_path() / "mfwave-lamb3d-bad";
   fs::remove_all(out);
-  Outcome run = runLamb3d("--set method.name=finite_difference --out " + out.string(), "bad-method");
+  LambOutcome run = runLamb3d("--set method.name=finite_difference --out " + out.string(), "bad-method");
   EXPECT_TRUE(run.exited);
   EXPECT_EQ(run.exitCode, 2) << run.log;
   EXPECT_NE(run.log.find("method"), std::string::npos) << run.log;
@@ -101,7 +101,7 @@ TEST(Lamb3dStudy, AnUnfilteredPublishedRunThatGrowsIsStoppedWithExitThree) {
   fs::remove_all(out);
   const std::string common = "--set 'study.spacings=[0.5]' --set method.variant=published --set method.smoothing_rate=0 "
                              "--set output.vtk=false --set output.png=false ";
-  Outcome run = runLamb3d(common + "--set integrator.end_time=300 --out " + out.string(), "grows");
+  LambOutcome run = runLamb3d(common + "--set integrator.end_time=300 --out " + out.string(), "grows");
   ASSERT_TRUE(run.exited);
   EXPECT_EQ(run.exitCode, 3) << run.log;
   for (const char* part : {"energy growth at step ", ", t = ", "particle", "published operator has growing modes"})
@@ -136,7 +136,7 @@ TEST(Lamb3dStudy, AnUnfilteredPublishedRunThatGrowsIsStoppedWithExitThree) {
 TEST(Lamb3dStudy, TheFilteredConsistentVariantAtHalfSpacingIsStoppedInALongRun) {
   const fs::path out = fs::temp_directory_path() / "mfwave-lamb3d-consistent-long";
   fs::remove_all(out);
-  const Outcome run = runLamb3d("--set 'study.spacings=[0.25]' --set geometry.spacing=0.25 --set study.compare_published=false "
+  const LambOutcome run = runLamb3d("--set 'study.spacings=[0.25]' --set geometry.spacing=0.25 --set study.compare_published=false "
                                 "--set method.variant=consistent --set method.smoothing_rate=0.5 "
                                 "--set output.vtk=false --set output.png=false --set integrator.end_time=300 --out " +
                                     out.string(),
@@ -156,7 +156,7 @@ TEST(Lamb3dStudy, TheFilteredConsistentVariantAtHalfSpacingIsStoppedInALongRun) 
 TEST(Lamb3dStudy, TheGalerkinVariantRunsFiftyWindowsWithoutAFilterAndItsEnergyOnlyFalls) {
   const fs::path out = fs::temp_directory_path() / "mfwave-lamb3d-galerkin-long";
   fs::remove_all(out);
-  const Outcome run = runLamb3d("--set 'study.spacings=[0.25]' --set geometry.spacing=0.25 --set study.compare_published=false "
+  const LambOutcome run = runLamb3d("--set 'study.spacings=[0.25]' --set geometry.spacing=0.25 --set study.compare_published=false "
                                 "--set 'study.free_block_lower=[-3.5,-3.5,-7.0]' --set 'study.free_block_upper=[3.5,3.5,0.0]' "
                                 "--set output.vtk=false --set output.png=false --set integrator.end_time=300 --out " +
                                     out.string(),

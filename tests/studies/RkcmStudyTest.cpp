@@ -16,16 +16,16 @@
 
 namespace {
 
-using Row = std::vector<std::string>;
+using RkcmRow = std::vector<std::string>;
 
-std::vector<Row> readCsv(const std::string& path) {
+std::vector<RkcmRow> readCsv(const std::string& path) {
   std::ifstream in(path);
   std::string line;
   std::getline(in, line);
-  std::vector<Row> rows;
+  std::vector<RkcmRow> rows;
   while (std::getline(in, line)) {
     std::stringstream s(line);
-    Row r;
+    RkcmRow r;
     std::string f;
     while (std::getline(s, f, ',')) r.push_back(f);
     rows.push_back(r);
@@ -39,7 +39,7 @@ std::string scratch(const std::string& name) {
   return dir.string();
 }
 
-double num(const Row& r, std::size_t i) { return std::stod(r.at(i)); }
+double num(const RkcmRow& r, std::size_t i) { return std::stod(r.at(i)); }
 
 }  // namespace
 

@@ -21,13 +21,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
+struct WavefieldOutcome {
   bool exited;     // false: killed by a signal (a crash)
   int exitCode;
   std::string log;  // standard output and error
 };
 
-Outcome runProgram(const std::string& executable, const std::string& arguments, const std::string& name,
+WavefieldOutcome runProgram(const std::string& executable, const std::string& arguments, const std::string& name,
                    const std::string& prefix = "") {
   const fs::path log = fs::temp_directory_path() / ("mfwave-wavefield-" + name + ".log");
   const std::string command = prefix + executable + " --quiet " + arguments + " > " + log.string() + " 2>&1";
@@ -38,7 +38,7 @@ Outcome runProgram(const std::string& executable, const std::string& arguments, 
   return {WIFEXITED(status) != 0, WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
 }
 
-Outcome runWavefield(const std::string& arguments, const std::string& name, const std::string& prefix = "") {
+WavefieldOutcome runWavefield(const std::string& arguments, const std::string& name, const std::string& prefix = "") {
   return runProgram(WAVEFIELD_EXECUTABLE, arguments, name, prefix);
 }
 
@@ -56,7 +56,7 @@ TEST(WavefieldStudy, SampleBlockSceneWritesFramesProbesAndSummary) {
   const fs::path out = fs::temp_directory_path() / "mfwave-wavefield-block";
   fs::remove_all(out);
   // A shorter run of the README's sample scene: the pulse has left the source by t = 0.6.
-  const Outcome run = runWavefield(std::string("--scene ") + SCENES_FOLDER + "/block-ricker.toml --set integrator.end_time=0.6 " +
+  const WavefieldOutcome run = runWavefield(std::string("--scene ") + SCENES_FOLDER + "/block-ricker.toml --set integrator.end_time=0.6 " +
                                        "--out " + out.string(),
                                    "block");
   ASSERT_TRUE(run.exited && run.exitCode == 0) << run.log;
@@ -84,7 +84,7 @@ TEST(WavefieldStudy, PngFramesUnderXvfb) {
   if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed";
   const fs::path out = fs::temp_directory_path() / "mfwave-wavefield-png";
   fs::remove_all(out);
-  const Outcome run = runWavefield(std::string("--scene ") + SCENES_FOLDER +
+  const WavefieldOutcome run = runWavefield(std::string("--scene ") + SCENES_FOLDER +
                                        "/block-ricker.toml --set integrator.end_time=0.3 --set geometry.spacing=0.1 " +
                                        "--out " + out.string(),
                                    "png", "xvfb-run -a -s '-screen 0 1280x1024x24' ");
@@ -97,7 +97,7 @@ TEST(WavefieldStudy, PngFramesUnderXvfb) {
 TEST(WavefieldStudy, WithoutADisplayTheRunSaysWhyNoPngWasMade) {
   const fs::path out = fs::temp_directory_path() / "mfwave-wavefield-nodisplay";
   fs::remove_all(out);
-  const Outcome run = runWavefield(std::string("--scene ") + SCENES_FOLDER +
+  const WavefieldOutcome run = runWavefield(std::string("--scene ") + SCENES_FOLDER +
                                        "/block-ricker.toml --set integrator.end_time=0.1 --set geometry.spacing=0.1 " +
                                        "--out " + out.string(),
                                    "nodisplay", "env -u DISPLAY ");
@@ -121,7 +121,7 @@ TEST(WavefieldStudy, AnUnstableTimeStepIsRefusedBeforeAnyWork) {
   }
   const fs::path out = fs::temp_directory_path() / "mfwave-wavefield-unstable";
   fs::remove_all(out);
-  const Outcome run = runWavefield("--scene " + scene.string() + " --out " + out.string(), "unstable");
+  const WavefieldOutcome run = runWavefield("--scene " + scene.string() + " --out " + out.string(), "unstable");
   ASSERT_TRUE(run.exited);
   EXPECT_EQ(run.exitCode, 2) << run.log;
   EXPECT_NE(run.log.find("integrator.time_step: the step 0.02 exceeds the central_difference limit 2 / omega_max = "
@@ -129,7 +129,7 @@ TEST(WavefieldStudy, AnUnstableTimeStepIsRefusedBeforeAnyWork) {
   EXPECT_FALSE(fs::exists(out / "summary.json"));
   // The same through cfl, and for an ARKODE table at its own limit (classic RK4: 2 sqrt 2 / omega_max).
   for (const char* sets : {" --set integrator.cfl=5", " --set integrator.name=arkode --set integrator.cfl=1.5"}) {
-    const Outcome over = runWavefield("--scene " + std::string(SCENES_FOLDER) + "/block-ricker.toml" + sets +
+    const WavefieldOutcome over = runWavefield("--scene " + std::string(SCENES_FOLDER) + "/block-ricker.toml" + sets +
                                           " --out " + out.string(), "unstable-cfl");
     ASSERT_TRUE(over.exited);
     EXPECT_EQ(over.exitCode, 2) << over.log;
@@ -148,7 +148,7 @@ TEST(WavefieldStudy, ADeepDottedKeyIsASyntaxErrorNotACrash) {
     for (int k = 0; k < 200000; ++k) scene << "a.";
     scene << "a = 1\n";
   }
-  const Outcome run =
+  const WavefieldOutcome run =
       runWavefield("--scene " + (dir / "deep.toml").string() + " --out " + (dir / "out").string(), "deep-key");
   ASSERT_TRUE(run.exited) << "crashed: " << run.log;
   EXPECT_EQ(run.exitCode, 2) << run.log;
@@ -182,7 +182,7 @@ TEST(WavefieldStudy, ResolutionsAndRunsBeyondAnyMachineAreRefusedNamingTheKey) {
   const fs::path out = fs::temp_directory_path() / "mfwave-beyond-any-machine";
   for (const auto& c : cases) {
     fs::remove_all(out);
-    const Outcome run = runProgram(c.executable, c.arguments + " --out " + out.string(), "beyond");
+    const WavefieldOutcome run = runProgram(c.executable, c.arguments + " --out " + out.string(), "beyond");
     ASSERT_TRUE(run.exited) << "crashed: " << c.arguments << "\n" << run.log;
     EXPECT_EQ(run.exitCode, 2) << c.arguments << "\n" << run.log;
     EXPECT_NE(run.log.find(c.expected), std::string::npos) << c.arguments << "\n" << run.log;
@@ -197,12 +197,12 @@ TEST(WavefieldStudy, AnOutputFolderThatCannotBeMadeIsSaidWithItsPath) {
   fs::remove_all(file);
   std::ofstream(file) << "not a folder\n";
   const std::string scene = "--scene " + std::string(SCENES_FOLDER) + "/block-ricker.toml";
-  const Outcome out = runWavefield(scene + " --out " + file.string(), "out-file");
+  const WavefieldOutcome out = runWavefield(scene + " --out " + file.string(), "out-file");
   ASSERT_TRUE(out.exited) << out.log;
   EXPECT_EQ(out.exitCode, 1) << out.log;
   EXPECT_NE(out.log.find("wavefield: error: --out: cannot make the output folder '" + file.string() + "'"),
             std::string::npos) << out.log;
-  const Outcome folder = runWavefield(scene + " --set output.folder=" + (file / "below").string(), "out-below-file");
+  const WavefieldOutcome folder = runWavefield(scene + " --set output.folder=" + (file / "below").string(), "out-below-file");
   EXPECT_EQ(folder.exitCode, 1) << folder.log;
   EXPECT_NE(folder.log.find("output.folder: cannot make the output folder"), std::string::npos) << folder.log;
 }
@@ -212,7 +212,7 @@ TEST(WavefieldStudy, AnOutputFolderThatCannotBeMadeIsSaidWithItsPath) {
 TEST(WavefieldStudy, AFileThatCannotBeWrittenWholeStopsTheRunNamingIt) {
   const fs::path out = fs::temp_directory_path() / "mfwave-wavefield-fsize";
   fs::remove_all(out);
-  const Outcome run = runWavefield("--scene " + std::string(SCENES_FOLDER) + "/block-ricker.toml --out " + out.string(),
+  const WavefieldOutcome run = runWavefield("--scene " + std::string(SCENES_FOLDER) + "/block-ricker.toml --out " + out.string(),
                                    "fsize", "ulimit -f 20; ");
   ASSERT_TRUE(run.exited) << "killed (SIGXFSZ?): " << run.log;
   EXPECT_EQ(run.exitCode, 1) << run.log;
@@ -269,7 +269,7 @@ TEST_P(MalformedScene, FailsWithExitCodeTwoAndNamesTheKey) {
   ASSERT_FALSE(key.empty()) << scene;
   const fs::path out = fs::temp_directory_path() / ("mfwave-malformed-" + scene.stem().string());
   fs::remove_all(out);
-  const Outcome run = runWavefield("--scene " + scene.string() + " --out " + out.string(), scene.stem().string());
+  const WavefieldOutcome run = runWavefield("--scene " + scene.string() + " --out " + out.string(), scene.stem().string());
   ASSERT_TRUE(run.exited) << "crashed: " << run.log;
   EXPECT_EQ(run.exitCode, 2) << run.log;
   EXPECT_NE(run.log.find(key), std::string::npos) << "expected key '" << key << "' in: " << run.log;

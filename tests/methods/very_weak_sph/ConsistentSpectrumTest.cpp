@@ -127,7 +127,7 @@ struct Measured {
 };
 
 template <int D>
-Measured measure(const char* title, const Block<D>& block) {
+Measured measureSpectra(const char* title, const Block<D>& block) {
   Measured m;
   const Scheme p = schemeOf(block, VeryWeakSphVariant::Published);
   m.published = undamped(p.accelerationFromDisplacement);
@@ -170,7 +170,7 @@ void expectMeasured(const Measured& m, const std::array<Real, 4>& published, con
 
 TEST(ConsistentVariantSpectrum, TwoDimensions) {
   const Block<2> block(Vec2::Zero(), Vec2::Constant(8), 1.0, 2, 1.0);
-  const Measured m = measure("2-D 9 x 9 (81 particles)", block);
+  const Measured m = measureSpectra("2-D 9 x 9 (81 particles)", block);
   // The consistent step is 2.6 % longer. Free faces: both schemes have growing complex modes; the
   // filter brings the consistent one's from 0.044 to 0.002. With the top face free and the others
   // transmitting (the Lamb setting) the consistent variant decays, the published one grows slowly.
@@ -185,7 +185,7 @@ TEST(ConsistentVariantSpectrum, TwoDimensions) {
 
 TEST(ConsistentVariantSpectrum, ThreeDimensions) {
   const Block<3> block(Vec3::Zero(), Vec3::Constant(4), 1.0, 2, 1.0);
-  const Measured m = measure("3-D 5 x 5 x 5 (125 particles)", block);
+  const Measured m = measureSpectra("3-D 5 x 5 x 5 (125 particles)", block);
   // The consistent step is 10.7 % longer. Free faces: growth 0.199 (published 0.176), 0.132 with
   // the filter. Top face free, the others transmitting: a slow growth 0.00126 (published 0.0077)
   // that the filter turns into decay (-0.071). All faces transmitting: every mode decays.

@@ -29,10 +29,10 @@
 namespace mfwave {
 namespace {
 
-const Material kMaterial = Material::fromLame(2.0, 1.0, 1.3);
+const Material kGalerkinMaterial = Material::fromLame(2.0, 1.0, 1.3);
 
 template <int D>
-VeryWeakSph<D> galerkin(const ParticleSet<D>& particles, const Material& material = kMaterial) {
+VeryWeakSph<D> galerkin(const ParticleSet<D>& particles, const Material& material = kGalerkinMaterial) {
   VeryWeakSphOptions options;
   options.variant = VeryWeakSphVariant::Galerkin;
   options.material = material;
@@ -79,11 +79,11 @@ TEST(GalerkinLattice, StiffnessIsSymmetricPositiveSemiDefiniteWithOnlyRigidModes
 // tractions t_f = sigma(x_f) n_f, at every particle. Returns the largest relative residual per kind
 // (number of faces the particle lies on) over the fields of total degree `degree`.
 template <int D>
-std::vector<Real> patchResiduals(int intervals, int degree) {
+std::vector<Real> galerkinPatchResiduals(int intervals, int degree) {
   const ParticleSet<D> particles = block<D>(intervals, 0.5);
   VeryWeakSph<D> method = galerkin(particles);
   const Index n = particles.physicalCount();
-  const Real lambda = kMaterial.lambda(), mu = kMaterial.mu();
+  const Real lambda = kGalerkinMaterial.lambda(), mu = kGalerkinMaterial.mu();
   const Vec<D> c = Vec<D>::Constant(0.4);
   std::vector<Real> worst(D + 1, 0.0);
   // monomials (x - c)^e with |e| <= 2 in component k
@@ -137,12 +137,12 @@ std::vector<Real> patchResiduals(int intervals, int degree) {
 // (docs/theory/very-weak-sph.md); the test pins it so that a change shows.
 TEST(GalerkinLattice, RowsAreExactForLinearFieldsEverywhereAndForQuadraticsInTheInterior) {
   for (int degree = 0; degree <= 1; ++degree) {
-    for (const Real r : patchResiduals<1>(8, degree)) EXPECT_LT(r, 1e-13);
-    for (const Real r : patchResiduals<2>(5, degree)) EXPECT_LT(r, 1e-13);
-    for (const Real r : patchResiduals<3>(4, degree)) EXPECT_LT(r, 1e-13);
+    for (const Real r : galerkinPatchResiduals<1>(8, degree)) EXPECT_LT(r, 1e-13);
+    for (const Real r : galerkinPatchResiduals<2>(5, degree)) EXPECT_LT(r, 1e-13);
+    for (const Real r : galerkinPatchResiduals<3>(4, degree)) EXPECT_LT(r, 1e-13);
   }
-  for (const Real r : patchResiduals<1>(8, 2)) EXPECT_LT(r, 1e-13);
-  const std::vector<Real> r2 = patchResiduals<2>(5, 2), r3 = patchResiduals<3>(4, 2);
+  for (const Real r : galerkinPatchResiduals<1>(8, 2)) EXPECT_LT(r, 1e-13);
+  const std::vector<Real> r2 = galerkinPatchResiduals<2>(5, 2), r3 = galerkinPatchResiduals<3>(4, 2);
   EXPECT_LT(r2[0], 1e-13);
   EXPECT_LT(r3[0], 1e-13);
   EXPECT_LT(r2[1], 1e-13);
@@ -209,7 +209,7 @@ Real energyDrift(bool dashpots, int steps, Real* finalFraction) {
   const ParticleSet<3> particles = block<3>(6, 0.5);
   VeryWeakSph<3> method = galerkin(particles);
   LinearSecondOrderSystem& system = method.system;
-  if (dashpots) system.setDamping(lumpedFacetDashpots<3>(method.data.facets, kMaterial, allFaces(3)));
+  if (dashpots) system.setDamping(lumpedFacetDashpots<3>(method.data.facets, kGalerkinMaterial, allFaces(3)));
   const StableTimeStep stable = centralDifferenceStableStep(system, 1e-8, 20000);
   const Real dt = 0.9 * stable.estimate();
   std::mt19937 rng(7);

@@ -23,7 +23,7 @@ namespace {
 
 constexpr int kTop = static_cast<int>(BoxFace::PlusZ);
 // The section 8 block: the free surface is z = 0.
-const Vec3 kLower(-3.5, -3.5, -7);
+const Vec3 kPatchLower(-3.5, -3.5, -7);
 const Vec3 kUpper(3.5, 3.5, 0);
 // Measured (see ResultantOfTheDiscreteTractionLoad).
 constexpr Real kPhysicalResultant = 0.86167836222071348;
@@ -34,9 +34,9 @@ Real sum(const std::vector<Real>& v) { return std::accumulate(v.begin(), v.end()
 
 TEST(PatchLoad, SectionEightSquareGivesHalfAndQuarterCells) {
   const Real dx = 0.5;
-  const ParticleSet<3> particles = makeLattice<3>(kLower, kUpper, dx);
+  const ParticleSet<3> particles = makeLattice<3>(kPatchLower, kUpper, dx);
   const std::vector<Real> w =
-      patchLoadWeights(particles, kTop, Vec3(0, 0, 0), Vec3(0.5, 0.5, 0), dx, kLower, kUpper);
+      patchLoadWeights(particles, kTop, Vec3(0, 0, 0), Vec3(0.5, 0.5, 0), dx, kPatchLower, kUpper);
   auto at = [&](Real x, Real y) {
     for (Index a = 0; a < particles.physicalCount(); ++a)
       if ((particles.position(a) - Vec3(x, y, 0)).norm() < 1e-9) return w[static_cast<std::size_t>(a)];
@@ -59,29 +59,29 @@ TEST(PatchLoad, SectionEightSquareGivesHalfAndQuarterCells) {
 
 TEST(PatchLoad, WeightsIntegrateToThePatchAreaOnAnyLatticeAndPatch) {
   for (Real dx : {0.5, 0.25, 0.125}) {
-    const ParticleSet<3> particles = makeLattice<3>(kLower, kUpper, dx);
-    const Real centred = sum(patchLoadWeights(particles, kTop, Vec3(0, 0, 0), Vec3(0.5, 0.5, 9), dx, kLower, kUpper));
+    const ParticleSet<3> particles = makeLattice<3>(kPatchLower, kUpper, dx);
+    const Real centred = sum(patchLoadWeights(particles, kTop, Vec3(0, 0, 0), Vec3(0.5, 0.5, 9), dx, kPatchLower, kUpper));
     EXPECT_NEAR(centred * dx * dx, 1.0, 1e-14) << dx;
     // Not aligned with the lattice: 4 * 0.61 * 0.37 = 0.9028.
     const Real skew =
-        sum(patchLoadWeights(particles, kTop, Vec3(0.3, -0.7, 0), Vec3(0.61, 0.37, 0), dx, kLower, kUpper));
+        sum(patchLoadWeights(particles, kTop, Vec3(0.3, -0.7, 0), Vec3(0.61, 0.37, 0), dx, kPatchLower, kUpper));
     EXPECT_NEAR(skew * dx * dx, 0.9028, 1e-14) << dx;
     // Over the edge x = 3.5: only [2.7, 3.5] x [-0.5, 0.5] of the face is loaded, area 0.8.
     const Real clipped =
-        sum(patchLoadWeights(particles, kTop, Vec3(3.2, 0, 0), Vec3(0.5, 0.5, 0), dx, kLower, kUpper));
+        sum(patchLoadWeights(particles, kTop, Vec3(3.2, 0, 0), Vec3(0.5, 0.5, 0), dx, kPatchLower, kUpper));
     EXPECT_NEAR(clipped * dx * dx, 0.8, 1e-14) << dx;
     // The whole face: every cell counts once, edges half, corners a quarter.
-    const Real whole = sum(patchLoadWeights(particles, kTop, Vec3(0, 0, 0), Vec3(10, 10, 0), dx, kLower, kUpper));
+    const Real whole = sum(patchLoadWeights(particles, kTop, Vec3(0, 0, 0), Vec3(10, 10, 0), dx, kPatchLower, kUpper));
     EXPECT_NEAR(whole * dx * dx, 49.0, 1e-12) << dx;
   }
 }
 
 TEST(PatchLoad, EdgeParticlesLoadOnlyTheirFacetOnTheLoadedFace) {
   const Real dx = 0.5;
-  const Block<3> block(kLower, kUpper, dx, 2, dx);
+  const Block<3> block(kPatchLower, kUpper, dx, 2, dx);
   const BoundaryFacets<3> facets = boundaryFacets(block.particles, block.neighbours, block.kernel, true);
   const std::vector<Real> w =
-      patchLoadWeights(block.particles, kTop, Vec3(3.2, 0, 0), Vec3(0.5, 0.5, 0), dx, kLower, kUpper);
+      patchLoadWeights(block.particles, kTop, Vec3(3.2, 0, 0), Vec3(0.5, 0.5, 0), dx, kPatchLower, kUpper);
   const Vec3 traction(0, 0, -1);
   const Vector t = patchFacetTractions(facets, kTop, w, traction);
   const Index edge = block.find(Vec3(3.5, 0, 0));
@@ -99,7 +99,7 @@ TEST(PatchLoad, EdgeParticlesLoadOnlyTheirFacetOnTheLoadedFace) {
   const Vector both = facetTractionsFromNodal(facets, nodal);
   EXPECT_GT((both - t).cwiseAbs().maxCoeff(), 0.4);
   EXPECT_THROW((void)patchFacetTractions(facets, kTop, std::vector<Real>(3, 1.0), traction), InputError);
-  EXPECT_THROW((void)patchLoadWeights(block.particles, 6, Vec3(0, 0, 0), Vec3(1, 1, 1), dx, kLower, kUpper),
+  EXPECT_THROW((void)patchLoadWeights(block.particles, 6, Vec3(0, 0, 0), Vec3(1, 1, 1), dx, kPatchLower, kUpper),
                InputError);
 }
 
@@ -117,14 +117,14 @@ TEST(PatchLoad, ResultantOfTheDiscreteTractionLoad) {
   // where alpha > 1 because the face neighbours have half volumes; measured 0.8624 of the quadrature
   // (0.8503 if alpha_a V_a were V_lattice everywhere).
   const Real dx = 0.5;
-  const Block<3> block(kLower, kUpper, dx, 2, dx);
+  const Block<3> block(kPatchLower, kUpper, dx, 2, dx);
   const Index n = block.particles.physicalCount();
   const std::vector<Real> volume = statisticalVolumes(block.particles, block.neighbours, block.kernel, true);
   const std::vector<Real> alpha = kernelCorrectionFactors(block.particles, block.neighbours, block.kernel, volume, true);
   const BoundaryFacets<3> facets = boundaryFacets(block.particles, block.neighbours, block.kernel, true);
   const SparseMatrix tractionMatrix = assembleTractionMatrix(block.particles, block.neighbours, block.kernel, facets);
   const std::vector<Real> w =
-      patchLoadWeights(block.particles, kTop, Vec3(0, 0, 0), Vec3(0.5, 0.5, 0), dx, kLower, kUpper);
+      patchLoadWeights(block.particles, kTop, Vec3(0, 0, 0), Vec3(0.5, 0.5, 0), dx, kPatchLower, kUpper);
   const Vec3 traction(0, 0, -1);  // a unit pressure: exact resultant (0, 0, -1) over the unit square
   const Vector t = patchFacetTractions(facets, kTop, w, traction);
   Vector f = Vector::Zero(3 * n);

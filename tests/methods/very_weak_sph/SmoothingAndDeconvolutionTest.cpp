@@ -26,7 +26,7 @@ using mfwave::test::Block;
 namespace {
 
 // V / dx^3 of the ghost-completed 3-D lattice, h = dx (VolumeAndAreaTest.cpp).
-constexpr Real kLatticeVolume = 1.0000275346670939;
+constexpr Real kSmoothingLatticeVolume = 1.0000275346670939;
 // Measured (see the tests that use them).
 constexpr Real kPlainDriftX = -0.0076205599545673408;
 constexpr Real kPlainDriftZ = 0.00090465836181286008;
@@ -91,7 +91,7 @@ TEST(ConservativeSmoothing, RowsAreStochasticAndThreadCountIndependent) {
   EXPECT_LT(worst, 1e-14);
   // Interior diagonal: W(0) V = V_lattice / (pi h^3).
   const Index centre = setup.block.find(Vec3(1.5, 1.5, 1.5));
-  EXPECT_NEAR(s.coeff(centre, centre), kLatticeVolume / kPi, 1e-14);
+  EXPECT_NEAR(s.coeff(centre, centre), kSmoothingLatticeVolume / kPi, 1e-14);
 
   const int threadsBefore = omp_get_max_threads();
   omp_set_num_threads(1);
@@ -272,7 +272,7 @@ TEST(Deconvolution, NormalisedFormReproducesConstantsEverywhere) {
 
 TEST(Deconvolution, PlainFormFailsAtTheSurface) {
   // Eq. (35) as printed maps a constant 1 to 1 + (1 - s_a) / (W(0) V_a). Ghost-completed lattice:
-  // s_a = FV_a, W(0) V_a = FV_a kLatticeVolume / pi, so 1 + pi (1 - FV) / (FV kLatticeVolume):
+  // s_a = FV_a, W(0) V_a = FV_a kSmoothingLatticeVolume / pi, so 1 + pi (1 - FV) / (FV kSmoothingLatticeVolume):
   // interior 1, face 1 + pi / k = 4.1415, edge 1 + 3 pi / k = 10.4245, corner 1 + 7 pi / k = 22.9905.
   const Smoothed<3> setup(Vec3::Zero(), Vec3::Constant(3), 0.5);
   const ParticleMatrix plain = deconvolutionMatrix(setup.block.particles, setup.block.neighbours,
@@ -287,10 +287,10 @@ TEST(Deconvolution, PlainFormFailsAtTheSurface) {
   // One layer below a face s < 1 (its face neighbours have half volumes), so the plain form misses there
   // too: measured 1.2351.
   EXPECT_NEAR(at(Vec3(1.5, 1.5, 0.5)), 1.235124006621755, 1e-12);
-  EXPECT_NEAR(at(Vec3(1.5, 1.5, 0)), 1 + kPi / kLatticeVolume, 1e-12);
-  EXPECT_NEAR(at(Vec3(0, 1.5, 3)), 1 + 3 * kPi / kLatticeVolume, 1e-12);
-  EXPECT_NEAR(at(Vec3(3, 0, 3)), 1 + 7 * kPi / kLatticeVolume, 1e-12);
-  EXPECT_NEAR(1 + kPi / kLatticeVolume, 4.1415060, 1e-6);
+  EXPECT_NEAR(at(Vec3(1.5, 1.5, 0)), 1 + kPi / kSmoothingLatticeVolume, 1e-12);
+  EXPECT_NEAR(at(Vec3(0, 1.5, 3)), 1 + 3 * kPi / kSmoothingLatticeVolume, 1e-12);
+  EXPECT_NEAR(at(Vec3(3, 0, 3)), 1 + 7 * kPi / kSmoothingLatticeVolume, 1e-12);
+  EXPECT_NEAR(1 + kPi / kSmoothingLatticeVolume, 4.1415060, 1e-6);
 }
 
 TEST(Deconvolution, SharpensASmoothFieldByTheSymbolRatio) {
@@ -345,8 +345,8 @@ TEST(Deconvolution, SharpensASmoothFieldByTheSymbolRatio) {
       for (int j = -1; j <= 1; ++j)
         for (int l = -1; l <= 1; ++l)
           lambda += block.block.kernel.value(Vec3(i * dx, j * dx, l * dx)) * std::cos(k * i * dx);
-    lambda *= kLatticeVolume * dx * dx * dx;
-    const Real self = kLatticeVolume / kPi;
+    lambda *= kSmoothingLatticeVolume * dx * dx * dx;
+    const Real self = kSmoothingLatticeVolume / kPi;
     const Real ratio = std::sqrt(deconvolvedError / smoothedError);
     std::printf("3-D deconvolution: lambda %.12f, error ratio %.12f (predicted %.12f)\n", lambda, ratio,
                 (lambda - self) / self);

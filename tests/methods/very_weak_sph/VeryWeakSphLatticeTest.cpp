@@ -22,7 +22,7 @@
 namespace mfwave {
 namespace {
 
-const Material kMaterial = Material::fromLame(2.0, 1.0, 1.3);
+const Material kLatticeMaterial = Material::fromLame(2.0, 1.0, 1.3);
 
 template <int D>
 struct Box {
@@ -57,7 +57,7 @@ ParticleSet<D> particlesOn(const Box<D>& box) {
 template <int D>
 VeryWeakSphProblemSettings<D> settingsOn(const Box<D>& box, VeryWeakSphVariant variant) {
   VeryWeakSphProblemSettings<D> s;
-  s.options.material = kMaterial;
+  s.options.material = kLatticeMaterial;
   s.options.variant = variant;
   s.smoothingLength = 1.1 * box.dx;
   s.lower = box.lower;
