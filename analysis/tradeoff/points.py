@@ -83,21 +83,28 @@ def bar1d_sph(per_bar, kernel="cubic_spline", ratio=2.0, integrator="leapfrog", 
 def lamb3d(dx, variant="consistent", kernel="cubic_spline", ratio=1.0, cfl=0.5):
     sets = [f"geometry.spacing={dx}", f"study.spacings=[{dx}]", "output.vtk=false",
             "study.compare_published=false", "study.strong_smoothing_rate=0", "study.kernel_floor=false",
-            f"method.kernel={kernel}", f"method.smoothing_length_ratio={ratio}", f"integrator.cfl={cfl}"]
+            f"integrator.cfl={cfl}"]
+    if variant == "galerkin":
+        # The scene's own method (the tent kernel as test and trial function, no filter, on the
+        # lattice stencils): no kernel or smoothing length to choose.
+        kernel, ratio = "tent", "-"
+    else:
+        sets += [f"method.kernel={kernel}", f"method.smoothing_length_ratio={ratio}"]
     if variant == "consistent":
         # The study's filter rate, 0.25 c_s / dx (0.5 at dx = 0.5): given here at this run's spacing.
-        sets.append(f"method.smoothing_rate={0.25 / dx:g}")
-    else:
+        sets += ["method.variant=consistent", f"method.smoothing_rate={0.25 / dx:g}"]
+    elif variant == "published":
         # The scheme as printed with the paper's settings: what the lamb3d driver's published_<dx> cases use.
         sets += ["method.variant=published", "method.smoothing_rate=0.77", "method.smoothing_order=1",
                  "method.smoothing_rate_scales_with_spacing=false", "method.deconvolution=true"]
-    return Point("lamb_3d", f"VW-SPH {variant}", "lamb3d", "lamb3d.toml", f"dx={dx:g}", kernel, f"{ratio:g}",
+    return Point("lamb_3d", f"VW-SPH {variant}", "lamb3d", "lamb3d.toml", f"dx={dx:g}", kernel,
+                 ratio if isinstance(ratio, str) else f"{ratio:g}",
                  "central_difference", cfl, tuple(sets),
                  drop=("study.free_block_lower", "study.free_block_upper"))
 
 
 PLANE_WAVE_METHODS = {"finite_difference": "FD", "vwsph_consistent": "VW-SPH consistent",
-                      "vwsph_published": "VW-SPH published", "rkcm": "RKCM"}
+                      "vwsph_published": "VW-SPH published", "vwsph_galerkin": "VW-SPH galerkin", "rkcm": "RKCM"}
 
 
 def planewave(cells, method="vwsph_consistent", kernel="cubic_spline", ratio=1.3, integrator="central_difference",
@@ -106,8 +113,8 @@ def planewave(cells, method="vwsph_consistent", kernel="cubic_spline", ratio=1.3
     if method == "rkcm":
         kernel_name, support = "cubic_b_spline_m2", ratio
         sets = [f"study.rk_support_ratio={ratio}"]
-    elif method == "finite_difference":
-        kernel_name, support, sets = "-", "-", []
+    elif method in ("finite_difference", "vwsph_galerkin"):
+        kernel_name, support, sets = ("-" if method == "finite_difference" else "tent"), "-", []
     else:
         kernel_name, support = kernel, ratio
         sets = [f"study.kernel={kernel}", f"study.smoothing_length_ratio={ratio}"]
@@ -128,7 +135,7 @@ def _dedupe(points):
 
 
 def default_sweep():
-    """116 points, about 2 minutes on 2 idle cores (each lamb3d point at dx = 0.125 takes 30-60 s)."""
+    """164 points, about 2 minutes on 2 idle cores (the largest, lamb3d's Galerkin variant at dx = 0.0625, about a minute)."""
     pts = []
     # Standing wave, finite differences: every integrator over resolutions, then step fractions
     # (1.0 is the 1-D "magic" step of central differences; 1.05 is above the limit and fails).
@@ -156,14 +163,18 @@ def default_sweep():
     pts += [bar1d_sph(n, integrator=i) for i in ("forward_euler", "predictor_corrector", "arkode")
             for n in (400, 1600)]
     pts += [bar1d_sph(n, cfl=f) for f in (0.5, 3.0, 6.0, 8.0) for n in (400, 1600)]
-    # 3-D Lamb problem, very weak form SPH (the largest first, so it is not the straggler).
-    pts = [lamb3d(0.125), lamb3d(0.125, kernel="wendland_c2"), lamb3d(0.125, variant="published")] + pts
+    # 3-D Lamb problem, very weak form SPH (the largest first, so it is not the straggler): the
+    # shipped Galerkin variant to dx = 0.0625 (1.4 million particles on the lattice stencils), the
+    # consistent and published ones to 0.125.
+    pts = [lamb3d(0.0625, variant="galerkin"), lamb3d(0.125), lamb3d(0.125, kernel="wendland_c2"),
+           lamb3d(0.125, variant="published")] + pts
+    pts += [lamb3d(dx, variant="galerkin") for dx in (0.5, 0.25, 0.125)]
     pts += [lamb3d(dx) for dx in (0.5, 0.25)]
     pts += [lamb3d(dx, variant="published") for dx in (0.5, 0.25)]
     pts += [lamb3d(dx, kernel="wendland_c2") for dx in (0.5, 0.25)]
     pts += [lamb3d(dx, cfl=0.9) for dx in (0.5, 0.25)]
     # Plane wave in a periodic box: every linear method on the same problem.
-    pts += [planewave(c, m) for m in ("finite_difference", "vwsph_consistent", "vwsph_published")
+    pts += [planewave(c, m) for m in ("finite_difference", "vwsph_consistent", "vwsph_published", "vwsph_galerkin")
             for c in (16, 32, 64, 128, 256)]
     pts += [planewave(c, "vwsph_consistent", kernel=k, ratio=r) for k, r in (("wendland_c2", 1.3), ("cubic_spline", 1.5))
             for c in (32, 128)]

@@ -46,8 +46,8 @@ def report_text(rows):
              + f"; {sum(r['wall_s'] for r in rows):.0f} s of driver wall time in all.",
              "Cost: wall time of one driver process on one core (OMP_NUM_THREADS=1). Error: each problem's",
              "own relative error against its exact solution (error_measure in tradeoff.csv), so errors of",
-             "different problems are comparable only as orders of magnitude. Starting a driver costs about",
-             "5 ms, so among the smallest runs differences of a few milliseconds are noise.",
+             "different problems are comparable only as orders of magnitude. Starting a driver costs 5 to",
+             "30 ms depending on the machine, so among the smallest runs such differences are noise.",
              "",
              "Cheapest configuration reaching each target, over all problems:"]
     lines += _target_lines(ok, "  ")

@@ -39,7 +39,7 @@ SceneSchema planeWaveSchema() {
   schema.add("study.dimension", ValueType::Integer).withUnit("-").defaultsTo("2").between(1, 3).describedAs(
       "dimension of the periodic box");
   schema.add("study.method", ValueType::String).defaultsTo("\"vwsph_consistent\"")
-      .oneOf({"finite_difference", "vwsph_published", "vwsph_consistent", "rkcm"})
+      .oneOf({"finite_difference", "vwsph_published", "vwsph_consistent", "vwsph_galerkin", "rkcm"})
       .describedAs("method (rkcm has a consistent mass, which explicit integrators solve every step)");
   schema.add("study.cells", ValueType::Integer).withUnit("-").defaultsTo("32").atLeast(8).describedAs(
       "lattice nodes per axis (even); dx = 1 / cells, the box is the unit cube");

@@ -1,6 +1,7 @@
 #include "analysis/PeriodicLattice.hpp"
 
 #include "core/Error.hpp"
+#include "lattice/PeriodicStencilSystem.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -121,12 +122,31 @@ LinearSecondOrderSystem periodicLatticeSystem(const PeriodicLatticeOperator<D>& 
   return LinearSecondOrderSystem(mass, SparseMatrix(), -periodicMatrix(op.acceleration, op.spacing, op.cells));
 }
 
+template <int D>
+std::unique_ptr<LinearOperatorSystem> periodicStencilSystem(const PeriodicLatticeOperator<D>& op) {
+  if (!op.lumped())
+    throw InputError("mass", "a consistent mass is solved every step from its matrix: use periodicLatticeSystem");
+  const int c = op.components();
+  std::vector<Real> blocks;
+  blocks.reserve(static_cast<std::size_t>(op.acceleration.size() * c * c));
+  for (const Eigen::MatrixXd& g : op.acceleration.blocks)
+    for (int p = 0; p < c; ++p)
+      for (int q = 0; q < c; ++q) blocks.push_back(g(p, q));
+  const auto steps = latticeSteps(op.acceleration, op.spacing);
+  if (c == 1) return std::make_unique<PeriodicStencilSystem<D, 1>>(op.cells, steps, blocks);
+  if constexpr (D > 1)
+    if (c == D) return std::make_unique<PeriodicStencilSystem<D, D>>(op.cells, steps, blocks);
+  throw InputError("stencil", std::to_string(c) + " components: the matrix-free periodic system takes 1 or " +
+                                  std::to_string(D));
+}
+
 #define MFWAVE_PERIODIC_LATTICE(D)                                                                              \
   template struct PeriodicLatticeOperator<D>;                                                                   \
   template PeriodicLatticeOperator<D> makePeriodicLatticeOperator<D>(LatticeStencil<D>, Real, int, LatticeStencil<D>); \
   template std::vector<std::array<int, D>> latticeSteps<D>(const LatticeStencil<D>&, Real);                     \
   template SparseMatrix periodicMatrix<D>(const LatticeStencil<D>&, Real, int);                                 \
   template LinearSecondOrderSystem periodicLatticeSystem<D>(const PeriodicLatticeOperator<D>&);                 \
+  template std::unique_ptr<LinearOperatorSystem> periodicStencilSystem<D>(const PeriodicLatticeOperator<D>&);   \
   template Index periodicNode<D>(const std::array<int, D>&, int);                                               \
   template std::array<int, D> latticeCoordinates<D>(Index, int);                                                \
   template int stencilReach<D>(const LatticeStencil<D>&, Real);

@@ -14,6 +14,7 @@
 #include "systems/LinearSecondOrderSystem.hpp"
 
 #include <array>
+#include <memory>
 
 namespace mfwave {
 
@@ -50,6 +51,12 @@ SparseMatrix periodicMatrix(const LatticeStencil<D>& stencil, Real spacing, int 
 // consistent one is solved every explicit step), no damping, stiffness K = -A.
 template <int D>
 LinearSecondOrderSystem periodicLatticeSystem(const PeriodicLatticeOperator<D>& op);
+
+// The same system matrix-free (lib/lattice/PeriodicStencilSystem: the stencil applied by lattice
+// arithmetic, no matrix), for a lumped operator with 1 or D components. Throws InputError("mass") for
+// a consistent mass (solving it needs the matrix), InputError("stencil") for other components.
+template <int D>
+std::unique_ptr<LinearOperatorSystem> periodicStencilSystem(const PeriodicLatticeOperator<D>& op);
 
 // Node index of lattice coordinates (each taken modulo N), and the coordinates in [0, N) of a node:
 // the numbering of every lattice array here, the FFT grids included (x fastest).

@@ -51,6 +51,7 @@ LatticeStencils<D>::LatticeStencils(const LatticeRowTypes<D>& types, const Spars
 
 template <int D>
 void LatticeStencils<D>::bind() {
+  table_ = freshStencilNumbers(static_cast<std::uint64_t>(std::max<Index>(typeCount(), 1)));
   flat_.resize(offset_.size());
   dx_.resize(offset_.size());
   for (std::size_t e = 0; e < offset_.size(); ++e) {

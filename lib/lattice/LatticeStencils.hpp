@@ -65,7 +65,8 @@ class LatticeStencils {
   // The stencil of a type, for stencilRun.
   StencilView view(Index type) const {
     const auto b = static_cast<std::size_t>(begin(type));
-    return {block_.data() + D * D * b, flat_.data() + b, dx_.data() + b, end(type) - begin(type)};
+    return {block_.data() + D * D * b, flat_.data() + b, dx_.data() + b, end(type) - begin(type),
+            table_ + static_cast<std::uint64_t>(type)};
   }
 
   // Calls f(p, type, product, stride) for every node p with the row applied to x: component c of
@@ -100,6 +101,7 @@ class LatticeStencils {
   std::vector<Real> block_;                   // D * D per entry
   std::vector<Index> flat_;                   // per entry: the offset as a node-index difference
   std::vector<Index> dx_;                     // per entry: the offset's x part
+  std::uint64_t table_ = 0;                   // the first of its stencils' numbers (freshStencilNumbers)
 };
 
 // Calls f(first, base) for every line of nodes along x: first is its first node, base the type of

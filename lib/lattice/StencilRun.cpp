@@ -116,17 +116,19 @@ void stencilRun(const StencilView& s, const Real* x, Index first, Index length, 
   }
   // The terms: the nonzero coefficients in the order rowProduct sums them (entry, then column), row
   // by row, each with its line and its place in that line's scratch. They depend on the stencil
-  // and the run's width only, so a thread keeps the last stencil's and resolves the lines per run.
+  // table and the run's width only (which entries share a line is the same on every line, also
+  // where a periodic lattice wraps the offsets), so a thread keeps the last table's and resolves
+  // the lines per run.
   struct Terms {
-    const Real* blocks = nullptr;
+    std::uint64_t table = 0;
     Index entries = -1, width = -1;
     std::vector<Real> coefficients;
     std::vector<Index> line, place, sources;
     Index rowEnd[3] = {};
   };
   thread_local Terms terms;
-  if (terms.blocks != s.blocks || terms.entries != s.entries || terms.width != width) {
-    terms.blocks = s.blocks;
+  if (terms.table != s.table || terms.entries != s.entries || terms.width != width) {
+    terms.table = s.table;
     terms.entries = s.entries;
     terms.width = width;
     terms.coefficients.clear();
@@ -167,9 +169,12 @@ template void stencilRun<1>(const StencilView&, const Real*, Index, Index, Real*
 template void stencilRun<2>(const StencilView&, const Real*, Index, Index, Real*, StencilRunCache&, std::uint64_t);
 template void stencilRun<3>(const StencilView&, const Real*, Index, Index, Real*, StencilRunCache&, std::uint64_t);
 
-std::uint64_t nextStencilProduct() {
-  static std::atomic<std::uint64_t> counter{0};
-  return ++counter;
-}
+namespace {
+std::atomic<std::uint64_t> stencilCounter{0};
+}  // namespace
+
+std::uint64_t nextStencilProduct() { return ++stencilCounter; }
+
+std::uint64_t freshStencilNumbers(std::uint64_t count) { return stencilCounter.fetch_add(count) + 1; }
 
 }  // namespace mfwave

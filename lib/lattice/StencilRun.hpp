@@ -21,12 +21,14 @@
 namespace mfwave {
 
 // One stencil: `entries` blocks (D x D, row-major, in `blocks`), each at node offset flat[e] whose x
-// part is dx[e].
+// part is dx[e]. `table` names the stencil (a number from freshStencilNumbers, taken when its table
+// was made; tables never change after): a thread keeps the terms of the last stencil it ran.
 struct StencilView {
   const Real* blocks;
   const Index* flat;
   const Index* dx;
   Index entries;
+  std::uint64_t table;
 };
 
 // Deinterleaved lines of one product's input, kept between the runs of one thread: the run of the
@@ -44,6 +46,8 @@ struct StencilRunCache {
 
 // A fresh number for each product (each pass over the lattice), so that no cache outlives its input.
 std::uint64_t nextStencilProduct();
+// The first of `count` fresh numbers (from the same counter), one per stencil of a table.
+std::uint64_t freshStencilNumbers(std::uint64_t count);
 
 // out[c * length + l] = sum_e sum_d B_e[c][d] x[D (first + l + flat_e) + d] for l in [0, length).
 // `cache` belongs to the calling thread; `product` is the pass's nextStencilProduct().
