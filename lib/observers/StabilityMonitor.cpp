@@ -1,10 +1,12 @@
 #include "observers/StabilityMonitor.hpp"
 
 #include "core/Error.hpp"
+#include "systems/ParallelVector.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 namespace mfwave {
 
@@ -35,18 +37,71 @@ void StabilityMonitor::fail(const StateView& state, const Vector& field, const c
                          static_cast<long>(worst / options_.components));
 }
 
+namespace {
+
+// The scans run over fixed blocks of entries, in parallel, and combine the blocks in order: the
+// results are those of one pass in index order, on any thread count. Every step reads the whole
+// state here, so on the lattice operators (tens of millions of unknowns) a serial scan costs as
+// much as the step.
+constexpr Index kScanBlock = Index{1} << 14;
+
+Index scanBlocks(Index n) { return std::max<Index>(1, (n + kScanBlock - 1) / kScanBlock); }
+
+// f(block) for every block: on the calling thread for a few blocks (a small state observed every
+// step must not pay for a parallel region), else OpenMP-parallel.
+template <class Function>
+void forEachScanBlock(Index blocks, Function&& f) {
+  if (blocks <= 4) {
+    for (Index b = 0; b < blocks; ++b) f(b);
+    return;
+  }
+#pragma omp parallel for schedule(static)
+  for (long b = 0; b < static_cast<long>(blocks); ++b) f(static_cast<Index>(b));
+}
+
+}  // namespace
+
 Real StabilityMonitor::scan(const StateView& state, const Vector& field, const char* name, Index& worst) const {
+  const Index n = field.size(), blocks = scanBlocks(n);
+  // The calling thread's scratch, named by reference so that the workers write into it.
+  thread_local std::vector<Real> largestScratch;
+  thread_local std::vector<Index> worstScratch, nonFiniteScratch;
+  std::vector<Real>& blockLargest = largestScratch;
+  std::vector<Index>& blockWorst = worstScratch;
+  std::vector<Index>& blockNonFinite = nonFiniteScratch;
+  blockLargest.assign(static_cast<std::size_t>(blocks), 0.0);
+  blockWorst.assign(static_cast<std::size_t>(blocks), 0);
+  blockNonFinite.assign(static_cast<std::size_t>(blocks), -1);
+  forEachScanBlock(blocks, [&](Index b) {
+    const Index begin = b * kScanBlock, end = std::min(n, begin + kScanBlock);
+    Real largest = 0;
+    Index at = begin, nonFinite = -1;
+    for (Index i = begin; i < end; ++i) {
+      const Real value = std::abs(field[i]);
+      if (!std::isfinite(value)) {
+        nonFinite = i;
+        break;
+      }
+      if (value > largest) {
+        largest = value;
+        at = i;
+      }
+    }
+    blockLargest[static_cast<std::size_t>(b)] = largest;
+    blockWorst[static_cast<std::size_t>(b)] = at;
+    blockNonFinite[static_cast<std::size_t>(b)] = nonFinite;
+  });
+  // The first non-finite entry, else the first entry of the largest magnitude.
   Real amplitude = 0;
   worst = 0;
-  for (Index i = 0; i < field.size(); ++i) {
-    const Real value = std::abs(field[i]);
-    if (!std::isfinite(value)) {
-      worst = i;
+  for (std::size_t b = 0; b < blockLargest.size(); ++b) {
+    if (blockNonFinite[b] >= 0) {
+      worst = blockNonFinite[b];
       fail(state, field, name, worst, "non-finite value");
     }
-    if (value > amplitude) {
-      amplitude = value;
-      worst = i;
+    if (blockLargest[b] > amplitude) {
+      amplitude = blockLargest[b];
+      worst = blockWorst[b];
     }
   }
   if (amplitude > options_.absoluteLimit) {
@@ -77,9 +132,31 @@ bool StabilityMonitor::grewSinceQuiet(History& history, Real amplitude, bool jud
 }
 
 Real StabilityMonitor::oscillationRatio(const Vector& u) const {
-  const Real scale = previous_.norm();
-  if (scale == 0) return 0;
-  return (u - 2 * previous_ + beforePrevious_).norm() / scale;
+  // |u - 2 u_prev + u_before| / |u_prev|, both sums of squares per block, then over blocks in order.
+  const Index n = u.size(), blocks = scanBlocks(n);
+  thread_local std::vector<Real> differenceScratch, scaleScratch;
+  std::vector<Real>& secondDifference = differenceScratch;
+  std::vector<Real>& scale = scaleScratch;
+  secondDifference.assign(static_cast<std::size_t>(blocks), 0.0);
+  scale.assign(static_cast<std::size_t>(blocks), 0.0);
+  forEachScanBlock(blocks, [&](Index b) {
+    const Index begin = b * kScanBlock, end = std::min(n, begin + kScanBlock);
+    Real d2 = 0, p2 = 0;
+    for (Index i = begin; i < end; ++i) {
+      const Real d = u[i] - 2 * previous_[i] + beforePrevious_[i];
+      d2 += d * d;
+      p2 += previous_[i] * previous_[i];
+    }
+    secondDifference[static_cast<std::size_t>(b)] = d2;
+    scale[static_cast<std::size_t>(b)] = p2;
+  });
+  Real d2 = 0, p2 = 0;
+  for (std::size_t b = 0; b < scale.size(); ++b) {
+    d2 += secondDifference[b];
+    p2 += scale[b];
+  }
+  if (p2 == 0) return 0;
+  return std::sqrt(d2) / std::sqrt(p2);
 }
 
 void StabilityMonitor::observe(const StateView& state) {
@@ -117,7 +194,7 @@ void StabilityMonitor::observe(const StateView& state) {
   }
   // Keep the last two displacements (swap buffers: one copy per observation).
   beforePrevious_.swap(previous_);
-  previous_ = state.displacement;
+  assignCopy(previous_, state.displacement);
 }
 
 }  // namespace mfwave

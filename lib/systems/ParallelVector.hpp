@@ -12,5 +12,7 @@ namespace mfwave {
 void addScaled(Vector& y, Real s, const Vector& x);
 // y = a + s b (y may alias a or b)
 void assignSum(Vector& y, const Vector& a, Real s, const Vector& b);
+// y = x (y resized)
+void assignCopy(Vector& y, const Vector& x);
 
 }  // namespace mfwave

@@ -4,10 +4,12 @@
 #include "observers/TimeLoop.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 using namespace mfwave;
 using mfwave::testing::ScriptedIntegrator;
@@ -190,4 +192,48 @@ TEST(StabilityMonitor, FreeMotionAfterTheLoadsIsNotGrowth) {
                            v[0] = 2;
                          }),
       2 * M_PI);
+}
+
+TEST(StabilityMonitor, ScansABigStateInParallelAndNamesTheSameEntryOnAnyThreadCount) {
+  // 10^6 unknowns scan in blocks on both threads; the answer must be that of one pass in index
+  // order: the first non-finite entry (a later one and a larger value before it notwithstanding),
+  // and, when all are finite, the first entry of the largest magnitude.
+  const Index n = 1000000;
+  auto firstFailure = [&](int threads, bool withNaN) {
+    Vector u = Vector::Constant(n, 0.5);
+    u[12345] = 5;    // largest, first
+    u[876543] = -5;  // as large, later: not the one named
+    ScriptedIntegrator integrator(u, Vector::Zero(n), 0.5, [&](long step, Vector& state, Vector&) {
+      if (step != 2) return;
+      if (withNaN) {
+        state[700001] = std::numeric_limits<Real>::infinity();
+        state[900000] = std::numeric_limits<Real>::quiet_NaN();
+      } else {
+        state *= 1e9;  // above the absolute limit
+      }
+    });
+    StabilityMonitorOptions options;
+    options.components = 1;
+    options.absoluteLimit = 1e6;
+    StabilityMonitor monitor(options);
+    TimeLoop loop;
+    loop.add(monitor);
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    std::string message;
+    long particle = -1;
+    try {
+      loop.run(integrator, 10.0);
+    } catch (const InstabilityError& e) {
+      message = e.what();
+      particle = e.particle();
+    }
+    omp_set_num_threads(before);
+    return std::make_pair(particle, message);
+  };
+  for (bool withNaN : {true, false}) {
+    const auto one = firstFailure(1, withNaN), two = firstFailure(2, withNaN);
+    EXPECT_EQ(one.first, withNaN ? 700001 : 12345) << one.second;
+    EXPECT_EQ(one, two);
+  }
 }
