@@ -63,12 +63,9 @@ void forEachScanBlock(Index blocks, Function&& f) {
 
 Real StabilityMonitor::scan(const StateView& state, const Vector& field, const char* name, Index& worst) const {
   const Index n = field.size(), blocks = scanBlocks(n);
-  // The calling thread's scratch, named by reference so that the workers write into it.
-  thread_local std::vector<Real> largestScratch;
-  thread_local std::vector<Index> worstScratch, nonFiniteScratch;
-  std::vector<Real>& blockLargest = largestScratch;
-  std::vector<Index>& blockWorst = worstScratch;
-  std::vector<Index>& blockNonFinite = nonFiniteScratch;
+  std::vector<Real>& blockLargest = blocks_.largest;
+  std::vector<Index>& blockWorst = blocks_.worst;
+  std::vector<Index>& blockNonFinite = blocks_.nonFinite;
   blockLargest.assign(static_cast<std::size_t>(blocks), 0.0);
   blockWorst.assign(static_cast<std::size_t>(blocks), 0);
   blockNonFinite.assign(static_cast<std::size_t>(blocks), -1);
@@ -134,9 +131,8 @@ bool StabilityMonitor::grewSinceQuiet(History& history, Real amplitude, bool jud
 Real StabilityMonitor::oscillationRatio(const Vector& u) const {
   // |u - 2 u_prev + u_before| / |u_prev|, both sums of squares per block, then over blocks in order.
   const Index n = u.size(), blocks = scanBlocks(n);
-  thread_local std::vector<Real> differenceScratch, scaleScratch;
-  std::vector<Real>& secondDifference = differenceScratch;
-  std::vector<Real>& scale = scaleScratch;
+  std::vector<Real>& secondDifference = blocks_.squares;
+  std::vector<Real>& scale = blocks_.scaleSquares;
   secondDifference.assign(static_cast<std::size_t>(blocks), 0.0);
   scale.assign(static_cast<std::size_t>(blocks), 0.0);
   forEachScanBlock(blocks, [&](Index b) {

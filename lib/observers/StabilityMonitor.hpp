@@ -28,6 +28,7 @@
 #include <deque>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace mfwave {
 
@@ -81,6 +82,12 @@ class StabilityMonitor : public Observer {
   StabilityMonitorOptions options_;
   History displacement_, velocity_;
   Vector previous_, beforePrevious_;
+  // Per-block partial results of the scans (scan, oscillationRatio), kept between observations.
+  struct BlockScratch {
+    std::vector<Real> largest, squares, scaleSquares;
+    std::vector<Index> worst, nonFinite;
+  };
+  mutable BlockScratch blocks_;
   long observations_ = 0;
   long quietObservations_ = 0;  // observations at or after quietAfter
   Real lastRatio_ = 0;
