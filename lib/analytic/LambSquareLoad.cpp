@@ -1,83 +1,24 @@
 #include "analytic/LambSquareLoad.hpp"
 
 #include "analytic/PekerisPointLoad.hpp"
+#include "analytic/SmoothstepQuadrature.hpp"
 #include "core/Error.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
-#include <mutex>
 #include <utility>
 
 namespace mfwave {
 
-namespace {
-
-using Rule = std::pair<std::vector<Real>, std::vector<Real>>;  // nodes, weights on [0, 1]
-
-// Gauss-Legendre rule on [0, 1] by Newton iteration on P_n (Golub-Welsch-free, n <= 200).
-Rule makeRule(int n) {
-  std::vector<Real> x(static_cast<std::size_t>(n)), w(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    Real z = std::cos(kPi * (i + 0.75) / (n + 0.5));
-    Real dp = 0;
-    for (int it = 0; it < 100; ++it) {
-      Real p0 = 1, p1 = z;
-      for (int k = 2; k <= n; ++k) {
-        const Real p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (z * p1 - p0) / (z * z - 1);
-      const Real dz = p1 / dp;
-      z -= dz;
-      if (std::abs(dz) < 1e-16) break;
-    }
-    x[static_cast<std::size_t>(i)] = 0.5 * (1 - z);
-    w[static_cast<std::size_t>(i)] = 1 / ((1 - z * z) * dp * dp);  // (2 / ((1-z^2) P'^2)) / 2
-  }
-  return {x, w};
-}
-
-const Rule& rule(int n) {
-  static std::mutex mutex;
-  static std::map<int, Rule> cache;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto it = cache.find(n);
-  if (it == cache.end()) it = cache.emplace(n, makeRule(n)).first;
-  return it->second;
-}
-
-}  // namespace
-
 LambSquareLoad::LambSquareLoad(Real shearModulus, Real shearSpeed, Real halfWidth,
                                std::vector<Real> times, std::vector<Real> values, Real pressure)
     : mu_(shearModulus), cs_(shearSpeed), l_(halfWidth), p_(pressure),
-      times_(std::move(times)), values_(std::move(values)) {
+      load_(std::move(times), std::move(values)), rule_(gaussLegendre(24)) {
   if (!(mu_ > 0) || !std::isfinite(mu_)) throw InputError("shear_modulus", "must be positive");
   if (!(cs_ > 0) || !std::isfinite(cs_)) throw InputError("shear_speed", "must be positive");
   if (!(l_ > 0) || !std::isfinite(l_)) throw InputError("half_width", "must be positive");
   if (!std::isfinite(p_)) throw InputError("pressure", "must be finite");
-  if (times_.size() < 2 || times_.size() != values_.size())
-    throw InputError("times", "need at least 2 breakpoints and as many values as times");
-  for (std::size_t i = 0; i < times_.size(); ++i) {
-    if (!std::isfinite(times_[i]) || !std::isfinite(values_[i]))
-      throw InputError("times", "breakpoints must be finite");
-    if (i > 0 && !(times_[i] > times_[i - 1]))
-      throw InputError("times", "must be strictly increasing");
-  }
-  if (values_.front() != 0)
-    throw InputError("values", "the load must start from 0 (a jump would give infinite velocity)");
-  // f(t) = sum_k ds_k (t - t_k)_+ : slope changes at each breakpoint (slope 0 before and after).
-  Real previous = 0;
-  for (std::size_t i = 0; i < times_.size(); ++i) {
-    const Real slope = i + 1 < times_.size()
-                           ? (values_[i + 1] - values_[i]) / (times_[i + 1] - times_[i])
-                           : 0;
-    slopeJumps_.push_back(slope - previous);
-    previous = slope;
-  }
 }
 
 LambSquareLoad LambSquareLoad::dingLongWu() {
@@ -86,16 +27,7 @@ LambSquareLoad LambSquareLoad::dingLongWu() {
 
 void LambSquareLoad::setQuadraturePoints(int points) {
   if (points < 2 || points > 200) throw InputError("quadrature_points", "must be in [2, 200]");
-  points_ = points;
-}
-
-Real LambSquareLoad::loadHistory(Real t) const {
-  if (t <= times_.front()) return values_.front();
-  if (t >= times_.back()) return values_.back();
-  const auto i = static_cast<std::size_t>(
-      std::upper_bound(times_.begin(), times_.end(), t) - times_.begin() - 1);
-  const Real s = (t - times_[i]) / (times_[i + 1] - times_[i]);
-  return values_[i] + s * (values_[i + 1] - values_[i]);
+  rule_ = gaussLegendre(points);
 }
 
 // p / (pi mu) * sum over the signed triangles (receiver, corner k, corner k+1) of
@@ -124,7 +56,6 @@ Real LambSquareLoad::integrateSquare(Real x, Real y, Real t, bool ramp) const {
       k = 0.5 * tau * tau * (hInf - P::shapeOverTauSquaredIntegral(tau)) + 0.5 * P::shapeIntegral(tau);
     return R * R / c * k;
   };
-  const Rule& gl = rule(points_);
   const std::array<Real, 4> cx = {l_, -l_, -l_, l_}, cy = {l_, l_, -l_, -l_};
   const std::array<Real, 3> radii = {c * t * P::kSqrt3, c * t, c * t / P::kRayleighTau};
   Real total = 0;
@@ -159,20 +90,9 @@ Real LambSquareLoad::integrateSquare(Real x, Real y, Real t, bool ramp) const {
       }
     }
     std::sort(cuts.begin(), cuts.end());
-    Real edgeSum = 0;
-    for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
-      const Real lo = cuts[j], h = cuts[j + 1] - lo;
-      if (!(h > 0)) continue;
-      Real s = 0;
-      for (std::size_t q = 0; q < gl.first.size(); ++q) {
-        const Real u = gl.first[q];
-        // Smoothstep map phi = lo + h (3u^2 - 2u^3): flattens sqrt endpoint behaviour.
-        const Real phi = lo + h * u * u * (3 - 2 * u);
-        const Real jac = h * 6 * u * (1 - u);
-        s += gl.second[q] * jac * radial(d / std::cos(phi));
-      }
-      edgeSum += s;
-    }
+    // Each piece mapped by a smoothstep: flattens the sqrt behaviour at the fronts' crossings.
+    const Real edgeSum =
+        integrateSmoothstepPieces(cuts, rule_, [&](Real phi) { return radial(d / std::cos(phi)); });
     total += sign * edgeSum;
   }
   return p_ / (kPi * mu_) * total;
@@ -187,17 +107,11 @@ Real LambSquareLoad::rampDisplacement(Real x, Real y, Real t) const {
 }
 
 Real LambSquareLoad::displacement(Real x, Real y, Real t) const {
-  Real u = 0;
-  for (std::size_t k = 0; k < times_.size(); ++k)
-    if (slopeJumps_[k] != 0) u += slopeJumps_[k] * rampDisplacement(x, y, t - times_[k]);
-  return u;
+  return load_.superpose(t, [&](Real tau) { return rampDisplacement(x, y, tau); });
 }
 
 Real LambSquareLoad::velocity(Real x, Real y, Real t) const {
-  Real v = 0;
-  for (std::size_t k = 0; k < times_.size(); ++k)
-    if (slopeJumps_[k] != 0) v += slopeJumps_[k] * stepDisplacement(x, y, t - times_[k]);
-  return v;
+  return load_.superpose(t, [&](Real tau) { return stepDisplacement(x, y, tau); });
 }
 
 }  // namespace mfwave

@@ -27,6 +27,8 @@
 // continuous, so the velocity is finite everywhere). Accuracy: about 1e-12 relative (tests compare
 // 24- and 48-point rules and the time integral of the velocity with the displacement).
 
+#include "analytic/PiecewiseLinearLoad.hpp"
+#include "core/GaussLegendre.hpp"
 #include "core/Types.hpp"
 
 #include <vector>
@@ -48,7 +50,7 @@ class LambSquareLoad {
   // Responses to p H(t) and to p t H(t) on the square (the building blocks above).
   Real stepDisplacement(Real x, Real y, Real t) const;
   Real rampDisplacement(Real x, Real y, Real t) const;
-  Real loadHistory(Real t) const;  // f(t)
+  Real loadHistory(Real t) const { return load_.value(t); }  // f(t)
 
   // Gauss-Legendre points per theta piece (default 24); for convergence studies.
   void setQuadraturePoints(int points);
@@ -56,8 +58,8 @@ class LambSquareLoad {
  private:
   Real integrateSquare(Real x, Real y, Real t, bool ramp) const;
   Real mu_, cs_, l_, p_;
-  std::vector<Real> times_, values_, slopeJumps_;
-  int points_ = 24;
+  PiecewiseLinearLoad load_;
+  QuadratureRule rule_;
 };
 
 }  // namespace mfwave

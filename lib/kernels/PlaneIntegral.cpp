@@ -1,6 +1,6 @@
 #include "kernels/PlaneIntegral.hpp"
 
-#include "kernels/GaussLegendre.hpp"
+#include "core/GaussLegendre.hpp"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 // Gaussian.
 
 #include "KernelCases.hpp"
-#include "kernels/GaussLegendre.hpp"
+#include "core/GaussLegendre.hpp"
 #include "kernels/KernelFactory.hpp"
 
 #include <cmath>

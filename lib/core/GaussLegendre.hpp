@@ -1,6 +1,7 @@
 #pragma once
 // Gauss-Legendre quadrature: exact for polynomials of degree 2n - 1, which makes it exact on each
-// polynomial piece of the spline kernels (normalisation checks, plane integrals).
+// polynomial piece of the spline kernels (normalisation checks, plane integrals); the exact Lamb
+// solutions (lib/analytic) integrate their smooth-after-mapping kernels with it.
 
 #include "core/Types.hpp"
 

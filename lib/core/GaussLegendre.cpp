@@ -1,4 +1,4 @@
-#include "kernels/GaussLegendre.hpp"
+#include "core/GaussLegendre.hpp"
 
 #include "core/Error.hpp"
 

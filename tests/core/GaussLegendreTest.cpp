@@ -1,7 +1,7 @@
 // The quadrature the normalisation and plane-integral results rest on.
 
 #include "core/Error.hpp"
-#include "kernels/GaussLegendre.hpp"
+#include "core/GaussLegendre.hpp"
 
 #include <gtest/gtest.h>
 
