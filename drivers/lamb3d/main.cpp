@@ -14,6 +14,10 @@
 // Writes cases.csv (errors and cost per case), <case>-probes.csv, exact.csv, frames, summary.json.
 // Results: docs/studies/lamb3d.md. Plot: /usr/bin/python3 analysis/plot_lamb3d.py OUT.
 //
+// The same source builds lamb2d (MFWAVE_LAMB_DIMENSION = 2): the plane-strain problem with a strip
+// load (data/scenes/lamb2d.toml), scored against LambStripLoad at every receiver, surface or inside
+// (docs/studies/lamb2d.md).
+//
 //   lamb3d --scene data/scenes/lamb3d.toml [--set 'study.spacings=[0.5]'] [--out DIR]
 
 #include "studies/lamb3d/LambCase.hpp"
@@ -40,7 +44,12 @@ using namespace mfwave::lamb3d;
 
 namespace {
 
-const char* kProgram = "lamb3d";
+#ifndef MFWAVE_LAMB_DIMENSION
+#define MFWAVE_LAMB_DIMENSION 3
+#endif
+constexpr int kDimension = MFWAVE_LAMB_DIMENSION;
+static_assert(kDimension == 2 || kDimension == 3, "the Lamb study is 2-D or 3-D");
+const char* kProgram = kDimension == 3 ? "lamb3d" : "lamb2d";
 
 SceneSchema lambSchema() {
   using T = ValueType;
@@ -103,8 +112,10 @@ Plan readPlan(SceneReader& reader) {
   StudySettings& study = plan.study;
   study.scene = readScene(reader);
   const Scene& scene = study.scene;
-  if (scene.info.dimension != 3) reader.fail("scene.dimension", "lamb3d is a 3-D study");
-  if (scene.method.name != "very_weak_sph") reader.fail("method.name", "lamb3d runs the very_weak_sph method");
+  if (scene.info.dimension != kDimension)
+    reader.fail("scene.dimension", std::string(kProgram) + " is a " + std::to_string(kDimension) + "-D study");
+  if (scene.method.name != "very_weak_sph")
+    reader.fail("method.name", std::string(kProgram) + " runs the very_weak_sph method");
   const VeryWeakSphSpec main = readVeryWeakSph(reader, scene.material.material());
   study.errorWindow = reader.number("study.error_window");
   study.arrivalFraction = reader.number("study.arrival_fraction");
@@ -139,9 +150,9 @@ Plan readPlan(SceneReader& reader) {
     plan.cases.push_back({"strong_filter", g, false, strongSpec, false});
   }
   if (reader.has("study.free_block_lower") || reader.has("study.free_block_upper")) {
-    const std::vector<Real> lower = reader.numbers("study.free_block_lower", 3);
-    const std::vector<Real> upper = reader.numbers("study.free_block_upper", 3);
-    for (std::size_t a = 0; a < 3; ++a)
+    const std::vector<Real> lower = reader.numbers("study.free_block_lower", kDimension);
+    const std::vector<Real> upper = reader.numbers("study.free_block_upper", kDimension);
+    for (std::size_t a = 0; a < static_cast<std::size_t>(kDimension); ++a)
       if (lower[a] > g.lower[a] || upper[a] < g.upper[a])
         reader.fail("study.free_block_lower", "the free block must contain the scene's box " + g.describeBox());
     try {
@@ -164,7 +175,8 @@ Plan readPlan(SceneReader& reader) {
   const double machine = physicalMemoryMiB();
   for (const CaseSettings& c : plan.cases) {
     const bool lattice =
-        veryWeakSphProblemSettings<3>(scene, c.geometry, c.method, !c.freeFaces).storage == OperatorStorage::Lattice;
+        veryWeakSphProblemSettings<kDimension>(scene, c.geometry, c.method, !c.freeFaces).storage ==
+        OperatorStorage::Lattice;
     const double bytes = lattice ? 320.0 : 8192.0;
     const double need = bytes / (1024.0 * 1024.0) * static_cast<double>(c.geometry.particleCount());
     if (need > machine)
@@ -241,7 +253,11 @@ CaseTable<CaseResult> casesTable(const std::vector<ProbeResult>& probes) {
 
 int main(int argc, char** argv) {
   const SceneSchema schema = lambSchema();
-  DriverCommandLine cli(kProgram, "lamb3d: the Ding-Long-Wu 3-D Lamb problem by very weak form SPH, against the exact response",
+  DriverCommandLine cli(kProgram,
+                        kDimension == 3
+                            ? "lamb3d: the Ding-Long-Wu 3-D Lamb problem by very weak form SPH, against the exact response"
+                            : "lamb2d: the plane-strain Lamb problem (a strip load) by very weak form SPH, against the "
+                              "exact response",
                         schema.describe());
   if (const auto exit = cli.parse(argc, argv)) return *exit;
 

@@ -1,8 +1,11 @@
 #include "study/LambReference.hpp"
 
+#include "analytic/HalfSpaceFrequencyWavenumber.hpp"
 #include "particles/BoxFace.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 
 namespace mfwave {
@@ -10,17 +13,20 @@ namespace mfwave {
 std::string lambReferenceUnavailable(const Scene& scene) {
   if (scene.loads.size() != 1 || scene.loads[0].type != LoadType::SurfacePatch)
     return "the exact reference needs exactly one surface_patch load";
+  const int d = scene.info.dimension;
+  if (d != 2 && d != 3) return "the exact reference is for 2-D and 3-D scenes";
   const LoadSpec& load = scene.loads[0];
   const auto axis = static_cast<std::size_t>(load.face / 2);
   std::vector<Real> widths;
-  for (std::size_t a = 0; a < 3; ++a)
+  for (std::size_t a = 0; a < static_cast<std::size_t>(d); ++a)
     if (a != axis) widths.push_back(load.halfWidth[a]);
-  if (std::abs(widths[0] - widths[1]) > 1e-12 * widths[0]) return "the exact reference needs a square patch";
-  for (std::size_t a = 0; a < 3; ++a)
+  if (d == 3 && std::abs(widths[0] - widths[1]) > 1e-12 * widths[0]) return "the exact reference needs a square patch";
+  for (std::size_t a = 0; a < static_cast<std::size_t>(d); ++a)
     if (a != axis && load.traction[a] != 0) return "the exact reference needs a normal traction";
   const Material material = scene.material.material();
-  if (std::abs(material.lambda() - material.mu()) > 1e-12 * material.mu())
-    return "the exact reference (Pekeris) needs a Poisson solid, lambda = mu";
+  if (d == 3 && std::abs(material.lambda() - material.mu()) > 1e-12 * material.mu())
+    return "the exact 3-D reference (Pekeris) needs a Poisson solid, lambda = mu";
+  if (d == 2 && material.lambda() < 0) return "the exact 2-D reference needs lambda >= 0";
   std::vector<Real> times, values;
   if (!load.timeFunction.piecewiseLinear(times, values) || values.front() != 0)
     return "the exact reference needs a piecewise-linear load history starting from 0";
@@ -40,25 +46,95 @@ LambSquareLoad lambReference(const Scene& scene) {
                         load.traction[axis]);
 }
 
-std::optional<std::array<Real, 2>> lambSurfaceOffset(const Scene& scene, const ParticleSet<3>& particles,
-                                                     const Probe& probe) {
+template <int D>
+std::optional<LambReceiver> lambReceiver(const Scene& scene, const ParticleSet<D>& particles, const Probe& probe) {
   if (scene.loads.empty()) return std::nullopt;
   const LoadSpec& load = scene.loads[0];
   const int axis = load.face / 2;
+  if (probe.component != axis) return std::nullopt;
+  const Vec<D> x = particles.position(probe.particle);
+  LambReceiver receiver;
+  for (int k = 0; k + 1 < D; ++k) {
+    const auto a = static_cast<std::size_t>((axis + 1 + k) % D);
+    receiver.offset[static_cast<std::size_t>(k)] = x[static_cast<Index>(a)] - load.centre[a];
+  }
   const bool onFace = (particles.faceMask[static_cast<std::size_t>(probe.particle)] & faceBit(load.face)) != 0;
-  if (!onFace || probe.component != axis) return std::nullopt;
-  const Vec3 x = particles.position(probe.particle);
-  const auto first = static_cast<std::size_t>((axis + 1) % 3), second = static_cast<std::size_t>((axis + 2) % 3);
-  return std::array<Real, 2>{x[static_cast<Index>(first)] - load.centre[first],
-                             x[static_cast<Index>(second)] - load.centre[second]};
+  if (onFace) return receiver;
+  receiver.depth = std::abs(x[axis] - load.centre[static_cast<std::size_t>(axis)]);
+  if (D == 2) return receiver;
+  // 3-D inside: on the load's axis only (to rounding of the lattice positions).
+  const Real scale = std::max<Real>(load.halfWidth[static_cast<std::size_t>((axis + 1) % D)], 1);
+  if (std::abs(receiver.offset[0]) > 1e-9 * scale || std::abs(receiver.offset[1]) > 1e-9 * scale)
+    return std::nullopt;
+  receiver.offset = {0, 0};
+  return receiver;
 }
 
-std::vector<Real> lambExactSeries(const LambSquareLoad& exact, const std::array<Real, 2>& offset,
-                                  const std::vector<Real>& times, bool velocity) {
+template std::optional<LambReceiver> lambReceiver<2>(const Scene&, const ParticleSet<2>&, const Probe&);
+template std::optional<LambReceiver> lambReceiver<3>(const Scene&, const ParticleSet<3>&, const Probe&);
+
+namespace {
+
+// The buried 3-D receiver's series by f-k integration on a 1/64 grid, interpolated to `times`.
+std::vector<Real> buriedSeries(const Scene& scene, Real depth, const std::vector<Real>& times, bool velocity,
+                               Real horizon) {
+  const LoadSpec& load = scene.loads[0];
+  const Material material = scene.material.material();
+  const auto axis = static_cast<std::size_t>(load.face / 2);
+  std::vector<Real> breakTimes, values;
+  load.timeFunction.piecewiseLinear(breakTimes, values);
+  const HalfSpaceFrequencyWavenumber fk(material.lambda(), material.mu(), material.density(),
+                                        SurfaceLoadShape::Square, load.halfWidth[(axis + 1) % 3],
+                                        std::move(breakTimes), std::move(values), load.traction[axis]);
+  Real end = 0;
+  for (const Real t : times)
+    if (t <= horizon) end = std::max(end, t);
+  std::vector<Real> series(times.size(), std::numeric_limits<Real>::quiet_NaN());
+  for (std::size_t i = 0; i < times.size(); ++i)
+    if (times[i] <= 0) series[i] = 0;
+  if (!(end > 0)) return series;
+  const Real steps = std::ceil(64 * end), dt = end / steps;
+  const HalfSpaceFrequencyWavenumber::Series fine = fk.response(0, depth, end, dt);
+  const std::vector<Real>& samples = velocity ? fine.velocity : fine.displacement;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    if (!(times[i] > 0 && times[i] <= end)) continue;
+    const Real position = std::clamp<Real>(times[i] / dt, 0, static_cast<Real>(samples.size() - 1));
+    const auto k = std::min(static_cast<std::size_t>(position), samples.size() - 2);
+    const Real w = position - static_cast<Real>(k);
+    series[i] = (1 - w) * samples[k] + w * samples[k + 1];
+  }
+  return series;
+}
+
+LambStripLoad stripReference(const Scene& scene) {
+  const LoadSpec& load = scene.loads[0];
+  const Material material = scene.material.material();
+  std::vector<Real> times, values;
+  load.timeFunction.piecewiseLinear(times, values);
+  const auto axis = static_cast<std::size_t>(load.face / 2);
+  return LambStripLoad(material.lambda(), material.mu(), material.density(), load.halfWidth[(axis + 1) % 2],
+                       std::move(times), std::move(values), load.traction[axis]);
+}
+
+}  // namespace
+
+LambExactResponse::LambExactResponse(const Scene& scene) : scene_(scene) {
+  if (scene.info.dimension == 2) strip_.emplace(stripReference(scene));
+  else square_.emplace(lambReference(scene));
+}
+
+std::vector<Real> LambExactResponse::series(const LambReceiver& receiver, const std::vector<Real>& times,
+                                            bool velocity, Real horizon) const {
+  if (square_ && receiver.depth > 0) return buriedSeries(scene_, receiver.depth, times, velocity, horizon);
   std::vector<Real> series;
   series.reserve(times.size());
-  for (const Real t : times)
-    series.push_back(velocity ? exact.velocity(offset[0], offset[1], t) : exact.displacement(offset[0], offset[1], t));
+  const auto& o = receiver.offset;
+  for (const Real t : times) {
+    if (strip_)
+      series.push_back(velocity ? strip_->velocity(o[0], receiver.depth, t) : strip_->displacement(o[0], receiver.depth, t));
+    else
+      series.push_back(velocity ? square_->velocity(o[0], o[1], t) : square_->displacement(o[0], o[1], t));
+  }
   return series;
 }
 
