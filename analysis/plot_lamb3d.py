@@ -137,9 +137,9 @@ def cost(out_dir, cases, program):
     if len(dx_all) > 1:
         ref = [0.05 * (d / dx_all[0]) ** 2 for d in dx_all]
         axes[1].loglog(dx_all, ref, "k:", label="dx^2")
-    axes[0].set(xlabel="wall time [s] (assembly + run)", ylabel="relative L2 error of v_z, 0 <= t <= 6",
+    axes[0].set(xlabel="wall time [s] (assembly + run)", ylabel="relative L2 error of the vertical velocity, 0 <= t <= 6",
                 title="accuracy against cost")
-    axes[1].set(xlabel="spacing dx (h = dx)", ylabel="relative L2 error of v_z", title="convergence")
+    axes[1].set(xlabel="spacing dx (h = dx)", ylabel="relative L2 error of the vertical velocity", title="convergence")
     finish_axes(axes)
     fig.tight_layout()
     save_atomically(fig, os.path.join(out_dir, f"{program}-cost.png"))
