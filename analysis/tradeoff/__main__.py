@@ -4,12 +4,13 @@
 
 (from the repository's top folder; the package is analysis/tradeoff/).
 
-Each point is one driver process (wave1d, bar1d, plane2d, bar1d-sph, lamb3d) pinned by --set to one
-configuration, on one core; the sweep runs --jobs of them at once. Writes into --out:
-tradeoff.csv (a row per point, appended as it finishes), tradeoff.png (error against wall time
-with the Pareto front), tradeoff.txt (the cheapest configuration for 10 %, 1 % and 0.1 % error,
-also printed), runs/<point>/ (each driver's own output and log) and scenes/ (scene files with keys
-removed). Rerunning the command skips the points already in tradeoff.csv, so an interrupted sweep
+Each point is one driver process (wave1d, bar1d, plane2d, bar1d-sph, lamb2d, lamb3d, planewave) pinned
+by --set to one configuration, on one core; the sweep runs --jobs of them at once. Writes into --out:
+tradeoff.csv (a row per point, appended as it finishes), tradeoff.png (one panel per problem: error
+against wall time with that problem's Pareto front), tradeoff-memory.png (error against peak memory
+for the problems several methods solve), tradeoff.txt (per problem, the cheapest configuration for
+10 %, 3 %, 1 % and 0.1 % error, at each receiver of the Lamb problems, also printed), runs/<point>/
+(each driver's own output and log) and scenes/ (scene files with keys removed). Rerunning the command skips the points already in tradeoff.csv, so an interrupted sweep
 resumes where it stopped. Page: docs/studies/tradeoff.md.
 """
 import argparse

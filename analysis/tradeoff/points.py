@@ -12,7 +12,8 @@ ERROR_MEASURES = {
     "bar_fixed_free_1d": "relative L2 of u at T on 2001 points",
     "manufactured_2d": "relative L2 of u at T on a 4x finer grid",
     "bar_impact_1d": "relative L1 of v at T over the particles",
-    "lamb_3d": "relative L2 of v_z over 0-6 s, worse of the centre and receiver probes",
+    "lamb_3d": "relative L2 of v_z over 0-6 s, worst of the centre, surface (2 away) and buried (1 deep) receivers",
+    "lamb_2d": "relative L2 of v_y over 0-6 s, worst of the centre, surface (2 away) and buried (1 deep) receivers",
     "plane_wave_2d": "relative L2 of u at T (2 periods) over the lattice nodes",
 }
 
@@ -80,7 +81,13 @@ def bar1d_sph(per_bar, kernel="cubic_spline", ratio=2.0, integrator="leapfrog", 
                   f"integrator.name={integrator}", f"integrator.cfl={cfl}"))
 
 
-def lamb3d(dx, variant="consistent", kernel="cubic_spline", ratio=1.0, cfl=0.5):
+# The problems several methods solve, each with its own panel and answer (docs/studies/which-method.md).
+SHARED_PROBLEMS = ("plane_wave_2d", "lamb_2d", "lamb_3d")
+
+
+def lamb3d(dx, variant="consistent", kernel="cubic_spline", ratio=1.0, cfl=0.5, dimension=3):
+    """A Lamb problem by very weak SPH: the 3-D square load (lamb3d) or, with dimension=2, the
+    plane-strain strip load (lamb2d), at one spacing, scored at the scene's three receivers."""
     sets = [f"geometry.spacing={dx}", f"study.spacings=[{dx}]", "output.vtk=false",
             "study.compare_published=false", "study.strong_smoothing_rate=0", "study.kernel_floor=false",
             f"integrator.cfl={cfl}"]
@@ -97,10 +104,15 @@ def lamb3d(dx, variant="consistent", kernel="cubic_spline", ratio=1.0, cfl=0.5):
         # The scheme as printed with the paper's settings: what the lamb3d driver's published_<dx> cases use.
         sets += ["method.variant=published", "method.smoothing_rate=0.77", "method.smoothing_order=1",
                  "method.smoothing_rate_scales_with_spacing=false", "method.deconvolution=true"]
-    return Point("lamb_3d", f"VW-SPH {variant}", "lamb3d", "lamb3d.toml", f"dx={dx:g}", kernel,
+    name = f"lamb{dimension}d"
+    return Point(f"lamb_{dimension}d", f"VW-SPH {variant}", name, f"{name}.toml", f"dx={dx:g}", kernel,
                  ratio if isinstance(ratio, str) else f"{ratio:g}",
                  "central_difference", cfl, tuple(sets),
                  drop=("study.free_block_lower", "study.free_block_upper"))
+
+
+def lamb2d(dx, variant="galerkin", kernel="cubic_spline", ratio=1.0, cfl=0.5):
+    return lamb3d(dx, variant, kernel, ratio, cfl, dimension=2)
 
 
 PLANE_WAVE_METHODS = {"finite_difference": "FD", "vwsph_consistent": "VW-SPH consistent",
@@ -173,6 +185,11 @@ def default_sweep():
     pts += [lamb3d(dx, variant="published") for dx in (0.5, 0.25)]
     pts += [lamb3d(dx, kernel="wendland_c2") for dx in (0.5, 0.25)]
     pts += [lamb3d(dx, cfl=0.9) for dx in (0.5, 0.25)]
+    # 2-D Lamb problem (strip load), very weak form SPH: every variant over spacings.
+    pts += [lamb2d(dx) for dx in (0.5, 0.25, 0.125, 0.0625, 0.03125)]
+    pts += [lamb2d(dx, variant="consistent") for dx in (0.5, 0.25, 0.125, 0.0625, 0.03125)]
+    pts += [lamb2d(dx, variant="published") for dx in (0.5, 0.25, 0.125)]
+    pts += [lamb2d(dx, cfl=0.9) for dx in (0.125, 0.0625)]
     # Plane wave in a periodic box: every linear method on the same problem.
     pts += [planewave(c, m) for m in ("finite_difference", "vwsph_consistent", "vwsph_published", "vwsph_galerkin")
             for c in (16, 32, 64, 128, 256)]
@@ -220,6 +237,8 @@ def full_sweep():
     pts += [planewave(c, "rkcm", ratio=r, integrator="newmark") for r in (2.2, 2.5) for c in (256,)]
     pts += [planewave(c, m, cfl=f) for m in ("finite_difference", "vwsph_consistent") for f in (0.25, 0.75)
             for c in (32, 128, 512)]
+    pts += [lamb2d(0.015625), lamb2d(0.015625, variant="consistent")]
+    pts += [lamb2d(dx, kernel=k, variant="consistent") for k in ("wendland_c2", "quintic_spline") for dx in (0.125, 0.0625)]
     return _dedupe(pts)
 
 

@@ -88,9 +88,14 @@ def read_results(point, out_dir):
     if not cases:
         raise ValueError(f"{point.driver} wrote no cases in summary.json")
     case = cases[-1]
+    # Drivers with several receivers (the Lamb studies) record each one's relative L2 error:
+    # kept as "name=value;..." so that the report can answer per receiver.
+    receivers = [(name[:-len("_relative_l2")], _number(value)) for name, value in (case.get("errors") or {}).items()
+                 if name.endswith("_relative_l2") and name != "largest_relative_l2"]
     return {"particles": int(case["particles"]), "steps": int(case["steps"]), "dt": _number(case["dt"]),
             "dt_stable": _number(case["stable_dt"]), "error": _number(case["primary_error_value"]),
-            "loop_s": _number(case["loop_seconds"])}
+            "loop_s": _number(case["loop_seconds"]),
+            "receiver_errors": ";".join(f"{n}={v:.6g}" for n, v in receivers) if len(receivers) > 1 else ""}
 
 
 def last_line(path, limit=240):

@@ -11,7 +11,7 @@ import os
 
 COLUMNS = ["config_id", "status", "exit_code", "problem", "method", "resolution", "particles", "kernel",
            "support_ratio", "integrator", "dt_fraction", "error", "error_measure", "wall_s", "loop_s", "peak_mib",
-           "steps", "particle_steps_per_s", "dt", "dt_stable", "driver", "run_dir", "note"]
+           "steps", "particle_steps_per_s", "dt", "dt_stable", "driver", "run_dir", "receiver_errors", "note"]
 
 NUMERIC = ["exit_code", "particles", "dt_fraction", "error", "wall_s", "loop_s", "peak_mib", "steps",
            "particle_steps_per_s", "dt", "dt_stable"]

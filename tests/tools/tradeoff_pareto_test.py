@@ -1,4 +1,5 @@
-"""Unit checks of analysis/tradeoff/pareto.py: the Pareto front and the cheapest point per target."""
+"""Unit checks of analysis/tradeoff/pareto.py (the Pareto front and the cheapest point per target) and of
+report.py's per-problem, per-receiver answers."""
 import math
 import os
 import random
@@ -7,6 +8,7 @@ import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 from analysis.tradeoff.pareto import cheapest_per_target, cheapest_reaching, dominates, pareto_front  # noqa: E402
+from analysis.tradeoff.report import receiver_errors, report_text  # noqa: E402
 
 
 def cost(p):
@@ -71,6 +73,40 @@ class CheapestPerTarget(unittest.TestCase):
         front = pareto_front(self.pts, cost, error)
         for _, best in cheapest_per_target(self.pts, (0.5, 0.1, 0.01), cost, error):
             self.assertIn(best, front)
+
+
+def row(problem, method, wall, err, receivers="", peak=50.0):
+    return {"config_id": f"{problem}|{method}|{wall}", "status": "ok", "exit_code": 0.0, "problem": problem,
+            "method": method, "resolution": f"dx={wall}", "kernel": "-", "support_ratio": "-",
+            "integrator": "central_difference", "dt_fraction": 0.5, "error": err, "error_measure": "L2",
+            "wall_s": wall, "peak_mib": peak, "receiver_errors": receivers}
+
+
+class Report(unittest.TestCase):
+    rows = [row("lamb_2d", "A", 1.0, 0.08, "centre=0.05;receiver=0.08;buried=0.02"),
+            row("lamb_2d", "B", 2.0, 0.02, "centre=0.02;receiver=0.01;buried=0.015", peak=80.0),
+            row("lamb_2d", "A", 5.0, 0.009, "centre=0.009;receiver=0.005;buried=0.004"),
+            row("standing_wave_1d", "FD", 0.1, 0.002)]
+
+    def test_receiver_errors_are_read_back(self):
+        self.assertEqual(receiver_errors(self.rows[0]), {"centre": 0.05, "receiver": 0.08, "buried": 0.02})
+        self.assertEqual(receiver_errors(self.rows[3]), {})
+
+    def test_each_problem_answers_each_target_and_each_receiver_with_time_and_memory(self):
+        lines = report_text(self.rows).splitlines()
+        shared = lines.index("Problems several methods solve (the cheapest configuration per target answers which method):")
+        single = lines.index("Problems one method solves (its settings against each other):")
+        self.assertLess(shared, single)
+        lamb = lines[shared + 1:single]
+        # Worst receiver: 10 % -> A at 1 s; 3 % -> B at 2 s (80 MiB); 1 % -> A at 5 s.
+        self.assertIn("<= 10 %: 1 s, 50 MiB", next(l for l in lamb if "<= 10 %:" in l))
+        self.assertIn("<= 3 %: 2 s, 80 MiB", next(l for l in lamb if "<= 3 %:" in l))
+        self.assertIn("<= 1 %: 5 s", next(l for l in lamb if "<= 1 %:" in l))
+        # The buried receiver alone reaches 3 % with A at 1 s already.
+        at = lamb.index("    at the buried receiver alone:")
+        self.assertIn("<= 3 %: 1 s", lamb[at + 2])
+        # No front or answer across problems.
+        self.assertNotIn("over all problems", "\n".join(lines))
 
 
 if __name__ == "__main__":
