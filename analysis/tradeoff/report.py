@@ -61,7 +61,7 @@ def _problem_lines(problem, mine):
     lines += _target_lines(mine, "    ")
     receivers = sorted({name for r in mine for name in receiver_errors(r)})
     for name in receivers:
-        lines.append(f"    at the {name} receiver alone:")
+        lines.append(f"    at the probe '{name}' alone:")
         lines += _target_lines(mine, "      ", lambda r, n=name: receiver_errors(r).get(n, math.nan))
     front = pareto_front(mine, cost, error)
     lines.append(f"    Pareto front ({len(front)} points, cheapest first):")

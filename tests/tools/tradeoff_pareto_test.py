@@ -103,7 +103,7 @@ class Report(unittest.TestCase):
         self.assertIn("<= 3 %: 2 s, 80 MiB", next(l for l in lamb if "<= 3 %:" in l))
         self.assertIn("<= 1 %: 5 s", next(l for l in lamb if "<= 1 %:" in l))
         # The buried receiver alone reaches 3 % with A at 1 s already.
-        at = lamb.index("    at the buried receiver alone:")
+        at = lamb.index("    at the probe 'buried' alone:")
         self.assertIn("<= 3 %: 1 s", lamb[at + 2])
         # No front or answer across problems.
         self.assertNotIn("over all problems", "\n".join(lines))
