@@ -1,5 +1,7 @@
 #include "analytic/HalfSpaceFrequencyWavenumber.hpp"
 
+#include "analytic/RayleighWave.hpp"
+
 #include "core/Error.hpp"
 #include "core/GaussLegendre.hpp"
 
@@ -112,21 +114,6 @@ struct Medium {
   }
 };
 
-// Rayleigh speed: the root xi = (c_R / beta)^2 in (0, 1) of
-// (2 - xi)^2 - 4 sqrt(1 - xi beta^2/alpha^2) sqrt(1 - xi), divided by xi to drop the root xi = 0.
-Real rayleighSpeed(Real alpha, Real beta) {
-  const Real gamma = beta * beta / (alpha * alpha);
-  auto g = [gamma](Real xi) {
-    return ((2 - xi) * (2 - xi) - 4 * std::sqrt(1 - gamma * xi) * std::sqrt(1 - xi)) / xi;
-  };
-  Real lo = 1e-9, hi = 1;
-  for (int i = 0; i < 200 && hi - lo > 1e-16; ++i) {
-    const Real mid = 0.5 * (lo + hi);
-    (g(mid) < 0 ? lo : hi) = mid;
-  }
-  return beta * std::sqrt(0.5 * (lo + hi));
-}
-
 // Smallest even n' >= n whose factors are 2, 3, 5, 7 (fast FFT lengths).
 long fftFriendly(long n) {
   for (long m = std::max<long>(n + (n & 1), 2);; m += 2) {
@@ -236,7 +223,7 @@ HalfSpaceFrequencyWavenumber::HalfSpaceFrequencyWavenumber(Real lambda, Real mu,
     throw InputError("settings.cutoff_factor", "must be in [0.5, 1000]");
   alpha_ = std::sqrt((lambda_ + 2 * mu_) / rho_);
   beta_ = std::sqrt(mu_ / rho_);
-  cR_ = rayleighSpeed(alpha_, beta_);
+  cR_ = mfwave::rayleighWaveSpeed(alpha_, beta_);
 }
 
 HalfSpaceFrequencyWavenumber::Series HalfSpaceFrequencyWavenumber::response(Real x, Real depth, Real endTime,

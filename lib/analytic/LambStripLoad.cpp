@@ -1,5 +1,6 @@
 #include "analytic/LambStripLoad.hpp"
 
+#include "analytic/RayleighWave.hpp"
 #include "analytic/SmoothstepQuadrature.hpp"
 #include "core/Error.hpp"
 
@@ -24,6 +25,12 @@ Complex verticalSlowness(Complex q, Real inverseSpeedSquared) {
     return {0, -std::sqrt(-w.real())};
   }
   return std::sqrt(w);
+}
+
+// R(q) = (1/c_s^2 - 2 q^2)^2 + 4 q^2 gamma_p gamma_s (header), inverseShearSquared = 1/c_s^2.
+Complex rayleighFunction(Complex q, Complex gp, Complex gs, Real inverseShearSquared) {
+  const Complex a = inverseShearSquared - 2.0 * q * q;
+  return a * a + 4.0 * q * q * gp * gs;
 }
 
 // (t - t')^n / n! for n = 1, 2: the step (n = 1) and ramp (n = 2) responses from the impulse kernel.
@@ -55,20 +62,13 @@ LambStripLoad::LambStripLoad(Real lambda, Real mu, Real rho, Real halfWidth, std
   // Beyond 1/c_s, where the surface kernel has its pole, R is real but near its root a difference
   // of two nearly equal terms. Rationalised, R = N(x) / (a^2 + 4 x s_p s_s) with x = q^2,
   // a = 1/c_s^2 - 2x, s_c = sqrt(x - 1/c^2), and N(x) = a^4 - 16 x^2 (x - 1/c_p^2)(x - 1/c_s^2) the
-  // Rayleigh cubic: N = c3 x^3 + c2 x^2 + c1 x + c0. Its root x_R beyond 1/c_s^2 (N(1/c_s^2) > 0,
-  // N -> -inf) is found to rounding, and N = (x - x_R)(d2 x^2 + d1 x + d0) by synthetic division:
-  // no cancellation left near the pole.
+  // Rayleigh cubic: N = c3 x^3 + c2 x^2 + c1 x + c0. Its root x_R = 1 / c_R^2 is known to rounding,
+  // and N = (x - x_R)(d2 x^2 + d1 x + d0) by synthetic division: no cancellation left near the pole.
   const Real a2 = 1 / (cp_ * cp_), b2 = 1 / (cs_ * cs_);
-  const Real c3 = 16 * (a2 - b2), c2 = 24 * b2 * b2 - 16 * a2 * b2, c1 = -8 * b2 * b2 * b2,
-             c0 = b2 * b2 * b2 * b2;
-  auto cubic = [&](Real x) { return ((c3 * x + c2) * x + c1) * x + c0; };
-  Real lo = b2, hi = 4 * b2;
-  for (int it = 0; it < 200 && hi - lo > 1e-17 * hi; ++it) {
-    const Real mid = 0.5 * (lo + hi);
-    (cubic(mid) > 0 ? lo : hi) = mid;
-  }
-  rayleighX_ = 0.5 * (lo + hi);
-  rayleighSlowness_ = std::sqrt(rayleighX_);
+  const Real c3 = 16 * (a2 - b2), c2 = 24 * b2 * b2 - 16 * a2 * b2, c1 = -8 * b2 * b2 * b2;
+  const Real cR = mfwave::rayleighWaveSpeed(cp_, cs_);
+  rayleighSlowness_ = 1 / cR;
+  rayleighX_ = rayleighSlowness_ * rayleighSlowness_;
   quotient_[0] = c3;
   quotient_[1] = c2 + rayleighX_ * quotient_[0];
   quotient_[2] = c1 + rayleighX_ * quotient_[1];
@@ -102,12 +102,10 @@ Real LambStripLoad::halfPlaneSurface(Real xi, Real t, int power) const {
   const QuadratureRule& rule = rule_;
   // Before the S arrival R is complex (gamma_s real): no pole.
   auto kernel = [&](Real tPrime) {
-    const Real q = tPrime / xi;
-    const Complex gp(0, -std::sqrt(std::max<Real>(q * q - a2, 0)));
-    const Complex gs = verticalSlowness(Complex(q, 0), b2);
-    const Real a = b2 - 2 * q * q;
-    const Complex R = a * a + 4.0 * q * q * gp * gs;
-    return -(2 / xi) * (-gp.imag()) * (1.0 / R).real() * b2 / q;
+    const Complex q(tPrime / xi, 0);
+    const Complex gp = verticalSlowness(q, a2), gs = verticalSlowness(q, b2);  // gp = -i s_p here
+    const Complex R = rayleighFunction(q, gp, gs, b2);
+    return -(2 / xi) * (-gp.imag()) * (1.0 / R).real() * b2 / q.real();
   };
   // The plane P wave of the strip's pole at q = 0 reaches the surface at once.
   Real total = -(kPi * cs_ * cs_ / cp_) * weight(t, 0, power);
@@ -137,14 +135,10 @@ Real LambStripLoad::halfPlaneInterior(Real xi, Real z, Real t, int power) const 
   const QuadratureRule& rule = rule_;
   Real total = 0;
   if (t > z / cp_) total -= (kPi * cs_ * cs_ / cp_) * weight(t, z / cp_, power);
-  auto rayleighFunction = [&](Complex q, Complex gp, Complex gs) {
-    const Complex a = b2 - 2.0 * q * q;
-    return a * a + 4.0 * q * q * gp * gs;
-  };
   // 2 Im[G(q) dq/dt] for the P (shear = false) or S term at a point of its path.
   auto term = [&](Complex q, Complex dq, bool shear) {
     const Complex gp = verticalSlowness(q, a2), gs = verticalSlowness(q, b2);
-    const Complex R = rayleighFunction(q, gp, gs);
+    const Complex R = rayleighFunction(q, gp, gs, b2);
     const Complex G = shear ? 2.0 * q * gp / R : gp * (b2 - 2.0 * q * q) / (q * R);
     return 2 * (G * dq).imag();
   };

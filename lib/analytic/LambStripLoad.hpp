@@ -32,7 +32,7 @@
 //
 // Checked (tests/analytic/LambStripLoadTest.cpp, LambStripLoadFrequencyWavenumberTest.cpp): against
 // a frequency-wavenumber integration with FFTW (HalfSpaceFrequencyWavenumber: relative L2 over
-// 0 <= t <= 6 of 1e-6 .. 8e-5 in velocity and 2e-9 .. 3e-7 in displacement at the study's receivers
+// 0 <= t <= 6 of 6e-6 .. 1.3e-4 in velocity and 5e-9 .. 4e-7 in displacement at the study's receivers
 // and a head-wave receiver, the f-k side's own error), the plane-wave first motion, the arrival
 // times, the late-time Flamant difference between two surface points, 24- against 48-point rules
 // (1e-11), and the time integral of the velocity against the displacement.

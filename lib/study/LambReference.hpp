@@ -7,6 +7,7 @@
 // Nothing here depends on the method: every method that runs a Lamb scene scores its probes
 // through these functions.
 
+#include "analytic/HalfSpaceFrequencyWavenumber.hpp"
 #include "analytic/LambSquareLoad.hpp"
 #include "analytic/LambStripLoad.hpp"
 #include "io/scene/Scene.hpp"
@@ -16,8 +17,10 @@
 
 #include <array>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mfwave {
@@ -52,7 +55,8 @@ class LambExactResponse {
   // LambSquareLoad (about 1e-12). 3-D below the centre: f-k integration (about 1e-4 relative, a
   // second or two per receiver for 6 s) sampled every 1/64 and interpolated linearly (1e-5 of the
   // peak), computed up to `horizon` only (its cost grows with the square of the time span) and NaN
-  // after it: pass the error window.
+  // after it: pass the error window. The f-k series is kept per depth and span, so asking again
+  // (the probes, then the fine grid of exact.csv) costs only the interpolation; not thread-safe.
   std::vector<Real> series(const LambReceiver& receiver, const std::vector<Real>& times, bool velocity,
                            Real horizon = std::numeric_limits<Real>::infinity()) const;
 
@@ -60,9 +64,12 @@ class LambExactResponse {
   const LambSquareLoad* square() const { return square_ ? &*square_ : nullptr; }
 
  private:
-  Scene scene_;
-  std::optional<LambSquareLoad> square_;
-  std::optional<LambStripLoad> strip_;
+  std::vector<Real> buriedSeries(Real depth, const std::vector<Real>& times, bool velocity, Real horizon) const;
+
+  std::optional<LambSquareLoad> square_;             // 3-D, on the surface
+  std::optional<HalfSpaceFrequencyWavenumber> buried_;  // 3-D, below the centre
+  std::optional<LambStripLoad> strip_;               // 2-D, everywhere
+  mutable std::map<std::pair<Real, Real>, HalfSpaceFrequencyWavenumber::Series> buriedCache_;  // (depth, end)
 };
 
 // The exact 3-D surface response to the load spread over the surface by the kernel: the square's

@@ -45,7 +45,7 @@ TEST(LambStripLoadAgainstFrequencyWavenumber, AgreeAtTheStudysReceivers) {
     const CrossCheck c = compare(r.x, r.depth);
     std::printf("x = %g, depth = %g: relative L2 velocity %.2e, displacement %.2e\n", r.x, r.depth, c.velocity,
                 c.displacement);
-    EXPECT_LT(c.velocity, 2e-4) << r.x << " " << r.depth;  // measured 1e-6 .. 8e-5
-    EXPECT_LT(c.displacement, 2e-6) << r.x << " " << r.depth;  // measured 2e-9 .. 3e-7
+    EXPECT_LT(c.velocity, 2e-4) << r.x << " " << r.depth;  // measured 6e-6 .. 1.3e-4
+    EXPECT_LT(c.displacement, 2e-6) << r.x << " " << r.depth;  // measured 5e-9 .. 4e-7
   }
 }

@@ -17,18 +17,20 @@
 namespace mfwave {
 namespace {
 
-// The Ding-Long-Wu problem on a small block; the arguments change one thing each.
-Scene lambScene(const std::string& halfWidth = "[0.5, 0.5, 0.0]", const std::string& traction = "[0.0, 0.0, 1.0]",
-                const std::string& lambda = "1.0",
-                const std::string& history = "{ type = \"triangle\", start = 0.0, rise = 1.0, fall = 1.0 }") {
+const char* const kTriangleHistory = "{ type = \"triangle\", start = 0.0, rise = 1.0, fall = 1.0 }";
+
+// The Ding-Long-Wu problem on a small block (or, with dimension 2, its strip-load analogue on a
+// rectangle); the arguments change one thing each, "" keeping the dimension's own default.
+Scene lambScene(const std::string& halfWidth = "", const std::string& traction = "", const std::string& lambda = "1.0",
+                const std::string& history = kTriangleHistory, int dimension = 3) {
+  const bool plane = dimension == 2;
   const std::string text = R"(
 [scene]
 name = "lamb"
-dimension = 3
+dimension = )" + std::to_string(dimension) + R"(
 [geometry]
-shape = "block"
-lower = [-2.0, -2.0, -2.0]
-upper = [2.0, 2.0, 0.0]
+shape = )" + (plane ? "\"rectangle\"\nlower = [-2.0, -2.0]\nupper = [2.0, 0.0]"
+                    : "\"block\"\nlower = [-2.0, -2.0, -2.0]\nupper = [2.0, 2.0, 0.0]") + R"(
 spacing = 0.5
 [material]
 density = 1.0
@@ -38,10 +40,9 @@ mu = 1.0
 name = "finite_difference"
 [[load]]
 type = "surface_patch"
-face = "+z"
-centre = [0.0, 0.0, 0.0]
-half_width = )" + halfWidth + R"(
-traction = )" + traction + R"(
+face = )" + (plane ? "\"+y\"\ncentre = [0.0, 0.0]" : "\"+z\"\ncentre = [0.0, 0.0, 0.0]") + R"(
+half_width = )" + (!halfWidth.empty() ? halfWidth : plane ? "[0.5, 0.0]" : "[0.5, 0.5, 0.0]") + R"(
+traction = )" + (!traction.empty() ? traction : plane ? "[0.0, 1.0]" : "[0.0, 0.0, 1.0]") + R"(
 time_function = )" + history + R"(
 [integrator]
 end_time = 1.0
@@ -159,33 +160,7 @@ TEST(LambReference, TheKernelSmoothedResponseTendsToTheExactOneAsTheKernelShrink
 // The 2-D problem: a strip on a half-plane, any Poisson ratio, the exact response at any receiver
 // (LambStripLoad), the receiver's offset along the face and its depth below it.
 Scene lambStripScene(const std::string& lambda = "1.0") {
-  const std::string text = R"(
-[scene]
-name = "lamb2d"
-dimension = 2
-[geometry]
-shape = "rectangle"
-lower = [-2.0, -2.0]
-upper = [2.0, 0.0]
-spacing = 0.5
-[material]
-density = 1.0
-lambda = )" + lambda + R"(
-mu = 1.0
-[method]
-name = "finite_difference"
-[[load]]
-type = "surface_patch"
-face = "+y"
-centre = [0.0, 0.0]
-half_width = [0.5, 0.0]
-traction = [0.0, 1.0]
-time_function = { type = "triangle", start = 0.0, rise = 1.0, fall = 1.0 }
-[integrator]
-end_time = 1.0
-)";
-  SceneReader reader = parseScene(text, "lamb2d.toml", {}, SceneSchema::common());
-  return readScene(reader);
+  return lambScene("", "", lambda, kTriangleHistory, 2);
 }
 
 TEST(LambReference, InTwoDimensionsItIsTheStripSolutionAtEveryReceiver) {
