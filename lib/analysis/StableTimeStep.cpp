@@ -77,4 +77,29 @@ StableTimeStep centralDifferenceStableStep(const LinearOperatorSystem& system, R
   return result;
 }
 
+AccelerationSpectralRadius accelerationSpectralRadius(SecondOrderSystem& system, Real time, Real relativeTolerance,
+                                                      int maximumIterations) {
+  const Index n = system.size();
+  Vector x = Vector::LinSpaced(n, 0.3, 1.7).array().sin(), y(n), a0(n);
+  const Vector zero = Vector::Zero(n);
+  // The load at `time` (body force, boundary data): a(t, x) - a(t, 0) = -K x.
+  system.acceleration(time, zero, zero, a0);
+  AccelerationSpectralRadius out;
+  for (int it = 0; it < maximumIterations; ++it) {
+    system.acceleration(time, x, zero, y);
+    y = -(y - a0);
+    const Real next = y.norm() / x.norm();
+    x = y / y.norm();
+    out.iterations = it + 1;
+    out.lastChange = std::abs(next - out.value) / next;
+    if (it > 20 && std::abs(next - out.value) < relativeTolerance * next) {
+      out.value = next;
+      out.converged = true;
+      break;
+    }
+    out.value = next;
+  }
+  return out;
+}
+
 }  // namespace mfwave

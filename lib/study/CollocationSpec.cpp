@@ -1,5 +1,7 @@
 #include "study/CollocationSpec.hpp"
 
+#include "analysis/InteriorStability.hpp"
+#include "analysis/MethodLatticeStencils.hpp"
 #include "methods/collocation/RadialBasisShapeFunctions.hpp"
 #include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
 
@@ -43,5 +45,19 @@ std::unique_ptr<ShapeFunctions<D>> makeCollocationShapes(const CollocationSpec& 
 template std::unique_ptr<ShapeFunctions<1>> makeCollocationShapes<1>(const CollocationSpec&, const Coordinates<1>&, Real);
 template std::unique_ptr<ShapeFunctions<2>> makeCollocationShapes<2>(const CollocationSpec&, const Coordinates<2>&, Real);
 template std::unique_ptr<ShapeFunctions<3>> makeCollocationShapes<3>(const CollocationSpec&, const Coordinates<3>&, Real);
+
+CollocationGrowingModes rkPlaneStrainGrowingModes(int order, Real ratio, const Material& material) {
+  const MethodLatticeStencil<2> rows =
+      collocationInteriorStencil<2>(CollocationBasis::ReproducingKernel, order, ratio, material, 1.0);
+  const InteriorStability<2> verdict = interiorStability<2>(rows.acceleration, rows.mass, 1.0, 32);
+  CollocationGrowingModes out;
+  if (!verdict.growing()) return out;
+  std::ostringstream what;
+  what << "the RK collocation operator (method.order = " << order << ", method.support_ratio = " << ratio
+       << ") has growing modes: its interior " << verdict.describe() << "; such a mode grows at every time step";
+  out.what = what.str();
+  out.advice = "a smaller method.support_ratio, e.g. 2.5, is stable in 2-D";
+  return out;
+}
 
 }  // namespace mfwave

@@ -1,9 +1,10 @@
 #pragma once
 // The [method] keys of strong-form collocation (Luo, Liu, Huang), typed once read: the shape
 // functions (reproducing kernel or radial basis) and their parameters relative to the node
-// spacing h, and the shape functions they make on a set of nodes. Shared by the collocation
-// studies (bar1d, plane2d).
+// spacing h, the shape functions they make on a set of nodes, and whether RK rows of that order and
+// support have growing modes. Shared by the collocation studies (bar1d, plane2d, lamb2d).
 
+#include "core/Material.hpp"
 #include "io/scene/SceneReader.hpp"
 #include "methods/collocation/ShapeFunctions.hpp"
 #include "particles/ParticleSet.hpp"
@@ -36,5 +37,21 @@ CollocationSpec readCollocationSpec(SceneReader& reader, const std::string& meth
 template <int D>
 std::unique_ptr<ShapeFunctions<D>> makeCollocationShapes(const CollocationSpec& spec, const Coordinates<D>& nodes,
                                                          Real h);
+
+// Whether the interior rows of plane-strain RK collocation (basis order `order`, cubic B-spline
+// support a = ratio h) have growing modes: the exact spectrum of the interior row on a periodic
+// lattice (at h = 1: with a / h fixed the rows scale as 1 / h^2, so one spectrum serves every
+// resolution). omega^2 < 0 or complex anywhere is a mode that grows at every time step, whatever the
+// integrator: in 2-D from about a / h = 2.77 on, where the mass symbol psi-hat changes sign
+// (docs/studies/spectra.md). Each study decides what to do with it (plane2d: exit 3 through
+// refuseGrowingModes; lamb2d: an input error at method.support_ratio).
+struct CollocationGrowingModes {
+  // "" when nothing grows; else "the RK collocation operator (method.order = 2, method.support_ratio
+  // = 3) has growing modes: its interior <where omega^2 is smallest>; such a mode grows at every time step".
+  std::string what;
+  std::string advice;  // what to change
+  bool growing() const { return !what.empty(); }
+};
+CollocationGrowingModes rkPlaneStrainGrowingModes(int order, Real ratio, const Material& material);
 
 }  // namespace mfwave

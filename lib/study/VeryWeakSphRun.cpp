@@ -1,9 +1,6 @@
 #include "study/VeryWeakSphRun.hpp"
 
-#include "core/AtomicFile.hpp"
 #include "methods/very_weak_sph/Deconvolution.hpp"
-
-#include <iomanip>
 
 namespace mfwave {
 
@@ -48,42 +45,16 @@ template std::unique_ptr<CentralDifference> veryWeakSphCentralDifference<3>(Very
                                                                             LinearEnergyLedger*);
 
 VeryWeakSphProbes::VeryWeakSphProbes(std::vector<Probe> probes, int components, const ParticleMatrix* deconvolution)
-    : probes_(std::move(probes)),
-      components_(components),
-      deconvolution_(deconvolution),
-      raw_(probes_.size()),
-      reported_(probes_.size()) {}
+    : ReportedProbes(std::move(probes)), components_(components), deconvolution_(deconvolution) {}
 
 void VeryWeakSphProbes::observe(const StateView& s) {
-  if (!times_.empty() && s.time <= times_.back()) return;
-  times_.push_back(s.time);
-  for (std::size_t i = 0; i < probes_.size(); ++i) {
-    const Probe& p = probes_[i];
+  if (!beginSample(s.time)) return;
+  for (std::size_t i = 0; i < probes().size(); ++i) {
+    const Probe& p = probes()[i];
     const Vector& field = p.quantity == ProbeQuantity::Velocity ? s.velocity : s.displacement;
-    raw_[i].push_back(field[components_ * p.particle + p.component]);
-    reported_[i].push_back(deconvolution_ ? deconvolveAt(*deconvolution_, p.particle, field, components_, p.component)
-                                          : raw_[i].back());
+    const Real raw = field[components_ * p.particle + p.component];
+    add(i, raw, deconvolution_ ? deconvolveAt(*deconvolution_, p.particle, field, components_, p.component) : raw);
   }
-}
-
-void VeryWeakSphProbes::writeCsv(const std::string& path, const std::vector<std::vector<Real>>& exact) const {
-  AtomicFile file(path);
-  std::ostream& out = file.stream();
-  out << "t [s]";
-  for (std::size_t i = 0; i < probes_.size(); ++i) {
-    out << ',' << probes_[i].name << "_raw," << probes_[i].name << "_reported";
-    if (!exact[i].empty()) out << ',' << probes_[i].name << "_exact";
-  }
-  out << '\n' << std::setprecision(10);
-  for (std::size_t k = 0; k < times_.size(); ++k) {
-    out << times_[k];
-    for (std::size_t i = 0; i < probes_.size(); ++i) {
-      out << ',' << raw_[i][k] << ',' << reported_[i][k];
-      if (!exact[i].empty()) out << ',' << exact[i][k];
-    }
-    out << '\n';
-  }
-  file.commit();
 }
 
 }  // namespace mfwave

@@ -9,6 +9,7 @@
 #include "observers/LinearEnergyLedger.hpp"
 #include "observers/Observer.hpp"
 #include "observers/ProbeRecorder.hpp"
+#include "observers/ReportedProbes.hpp"
 
 #include <memory>
 #include <string>
@@ -29,30 +30,18 @@ std::unique_ptr<CentralDifference> veryWeakSphCentralDifference(VeryWeakSphProbl
 
 // Each probe's value in the state (raw) and the value the method reports: with a deconvolution
 // matrix (the published variant) the deconvolved value at the probe (eq. (35)), else the state
-// itself. Samples once per time (end() right after a sample of the same step adds nothing).
-class VeryWeakSphProbes : public Observer {
+// itself. Samples once per time (end() right after a sample of the same step adds nothing); the
+// series and their CSV are ReportedProbes'.
+class VeryWeakSphProbes : public ReportedProbes {
  public:
   // `components`: unknowns per particle; `deconvolution` may be null and must outlive the recorder.
   VeryWeakSphProbes(std::vector<Probe> probes, int components, const ParticleMatrix* deconvolution);
 
   void observe(const StateView& s) override;
-  void end(const StateView& s) override { observe(s); }
-
-  const std::vector<Probe>& probes() const { return probes_; }
-  const std::vector<Real>& times() const { return times_; }
-  const std::vector<Real>& raw(std::size_t i) const { return raw_[i]; }
-  const std::vector<Real>& reported(std::size_t i) const { return reported_[i]; }
-
-  // Writes (atomically) "t [s]", then per probe <name>_raw, <name>_reported and, where exact[i]
-  // is not empty (one value per sample), <name>_exact. `exact` has one entry per probe.
-  void writeCsv(const std::string& path, const std::vector<std::vector<Real>>& exact) const;
 
  private:
-  std::vector<Probe> probes_;
   int components_;
   const ParticleMatrix* deconvolution_;
-  std::vector<Real> times_;
-  std::vector<std::vector<Real>> raw_, reported_;
 };
 
 }  // namespace mfwave

@@ -4,9 +4,14 @@
 
 namespace mfwave {
 
+namespace {
+// The condition of every option key: it also tells them apart in veryWeakSphOptionKeys.
+const char* const kWhen = "name = very_weak_sph";
+}  // namespace
+
 void addVeryWeakSphKeys(SceneSchema& schema) {
   using T = ValueType;
-  const std::string when = "name = very_weak_sph";
+  const std::string when = kWhen;
   schema.addChoice("method.name", "very_weak_sph");
   schema.add("method.variant", T::String).defaultsTo("\"galerkin\"").oneOf({"galerkin", "consistent", "published"}).when(when)
       .describedAs("galerkin: symmetric weak form with the lattice's tent kernel, stable without a filter (lattices "
@@ -38,6 +43,13 @@ void addVeryWeakSphKeys(SceneSchema& schema) {
                    "sparse matrices (any particles; the reference), or auto (the stencils where they can run the scene)");
   schema.add("method.deconvolution", T::Boolean).defaultsTo("false").when(when)
       .describedAs("report probe values sharpened by the deconvolution of eq. 35 (the raw values are kept too)");
+}
+
+std::vector<std::string> veryWeakSphOptionKeys(const SceneSchema& schema) {
+  std::vector<std::string> keys;
+  for (const KeySpec& key : schema.keys())
+    if (key.condition == kWhen) keys.push_back(key.path);
+  return keys;
 }
 
 VeryWeakSphSpec readVeryWeakSph(SceneReader& reader, const Material& material) {

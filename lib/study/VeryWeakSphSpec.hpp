@@ -9,6 +9,7 @@
 #include "methods/very_weak_sph/VeryWeakSphOptions.hpp"
 
 #include <string>
+#include <vector>
 
 namespace mfwave {
 
@@ -37,6 +38,11 @@ struct VeryWeakSphSpec {
 
 // Adds "very_weak_sph" to method.name and its option keys.
 void addVeryWeakSphKeys(SceneSchema& schema);
+
+// The option keys addVeryWeakSphKeys registered in `schema` (method.variant, method.kernel, ...; not
+// method.name), for a driver that runs another method on a scene written for this one and accepts
+// them unused (lamb2d's RK collocation).
+std::vector<std::string> veryWeakSphOptionKeys(const SceneSchema& schema);
 
 // Reads the options when method.name is very_weak_sph; `material` from the scene's [material].
 VeryWeakSphSpec readVeryWeakSph(SceneReader& reader, const Material& material);

@@ -50,3 +50,41 @@ TEST(StableTimeStep, RejectsAConsistentMass) {
   k.insert(1, 1) = 1;
   EXPECT_THROW(centralDifferenceStableStep(LinearSecondOrderSystem(m, SparseMatrix(), k)), InputError);
 }
+
+namespace {
+
+// u'' = f - K u with K = M^{-1} K of the spring chain and a constant load f: the acceleration alone
+// must give the chain's omega_max^2, the load removed.
+class LoadedChain : public SecondOrderSystem {
+ public:
+  LoadedChain(int n, Real m, Real k) : system_(chain(n, m, k)), load_(Vector::Constant(n, 3.0)) {}
+  Index size() const override { return system_.size(); }
+  bool dependsOnVelocity() const override { return false; }
+  void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) override {
+    system_.acceleration(t, u, v, a);
+    a += load_;
+  }
+
+ private:
+  LinearSecondOrderSystem system_;
+  Vector load_;
+};
+
+}  // namespace
+
+TEST(AccelerationSpectralRadius, FindsTheLargestEigenvalueFromTheAccelerationAlone) {
+  const int n = 12;
+  const Real m = 2, k = 50;
+  const Real exact = 4 * k / m * std::pow(std::sin(n * M_PI / (2 * (n + 1.0))), 2);
+  LoadedChain system(n, m, k);
+  const AccelerationSpectralRadius radius = accelerationSpectralRadius(system, 0.5, 1e-10, 20000);
+  EXPECT_TRUE(radius.converged);
+  EXPECT_NEAR(radius.value, exact, 1e-6 * exact);
+  EXPECT_GT(radius.iterations, 20);
+  // Cut short, it says so and gives its last ratio, from below.
+  const AccelerationSpectralRadius early = accelerationSpectralRadius(system, 0.5, 1e-14, 30);
+  EXPECT_FALSE(early.converged);
+  EXPECT_EQ(early.iterations, 30);
+  EXPECT_LE(early.value, exact * (1 + 1e-12));
+  EXPECT_GT(early.value, 0.5 * exact);
+}

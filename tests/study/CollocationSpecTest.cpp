@@ -1,7 +1,8 @@
 // lib/study/CollocationSpec: the collocation [method] keys are read by method name into typed
 // options, another method is refused at method.name, and the shape functions made from them are
 // the asked kind with the asked parameters: a reproducing kernel of order m reproduces degree-m
-// polynomials with support a = ratio h, a radial basis interpolates its nodes.
+// polynomials with support a = ratio h, a radial basis interpolates its nodes; plane-strain RK rows
+// grow from a support of about 2.77 h on.
 
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/SceneError.hpp"
@@ -87,6 +88,16 @@ TEST(CollocationSpec, MakesTheShapeFunctionsItDescribes) {
   for (Index k = 0; k < values.size(); ++k)
     EXPECT_NEAR(values.value[static_cast<std::size_t>(k)], values.nodes[static_cast<std::size_t>(k)] == 4 ? 1.0 : 0.0,
                 1e-8);  // interpolates its nodes
+}
+
+TEST(CollocationSpec, PlaneStrainRkSupportsFromAboutTwoPointEightOnHaveGrowingInteriorModes) {
+  const Material material = Material::fromLame(1, 1, 1);
+  for (const Real stable : {2.2, 2.5, 2.7})
+    EXPECT_FALSE(rkPlaneStrainGrowingModes(2, stable, material).growing()) << stable;
+  const CollocationGrowingModes grows = rkPlaneStrainGrowingModes(2, 3.0, material);
+  ASSERT_TRUE(grows.growing());
+  EXPECT_NE(grows.what.find("method.order = 2, method.support_ratio = 3)"), std::string::npos) << grows.what;
+  EXPECT_NE(grows.advice.find("method.support_ratio"), std::string::npos);
 }
 
 }  // namespace

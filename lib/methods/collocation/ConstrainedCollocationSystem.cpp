@@ -64,7 +64,7 @@ Vector ConstrainedCollocationSystem::boundaryData(Real t) const {
   return out;
 }
 
-Vector ConstrainedCollocationSystem::loadRate(Real t, int order) const {
+Vector ConstrainedCollocationSystem::boundaryDataRate(Real t, int order) const {
   if (!system_.load) return Vector::Zero(static_cast<Index>(boundaryRows_.size()));
   const Real e = 1e-4 * std::max<Real>(1, std::abs(t));
   if (order == 1) return (boundaryData(t + e) - boundaryData(t - e)) / (2 * e);
@@ -85,13 +85,13 @@ Vector ConstrainedCollocationSystem::coefficients(const Vector& U, Real t) const
 }
 
 Vector ConstrainedCollocationSystem::coefficientRates(const Vector& V, Real t) const {
-  return solveConstraint(V, loadRate(t, 1));
+  return solveConstraint(V, boundaryDataRate(t, 1));
 }
 
 Vector ConstrainedCollocationSystem::coefficientAccelerations(const Vector& U, Real t) {
   Vector a(size());
   acceleration(t, U, U, a);
-  return solveConstraint(a, loadRate(t, 2));
+  return solveConstraint(a, boundaryDataRate(t, 2));
 }
 
 void ConstrainedCollocationSystem::acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector>,
@@ -112,6 +112,18 @@ void ConstrainedCollocationSystem::acceleration(Real t, Eigen::Ref<const Vector>
   else
     a = -a;
   a /= system_.density;
+}
+
+Eigen::MatrixXd ConstrainedCollocationSystem::constraintAdjoint(const Eigen::MatrixXd& functionals) const {
+  if (isLeastSquares())
+    throw Error("constraintAdjoint: the collocation constraint matrix is tall (least squares); its adjoint is not "
+                "C^{-T}");
+  if (functionals.rows() != constraint_.cols())
+    throw InputError("collocation.functionals", "expected " + std::to_string(constraint_.cols()) + " rows");
+  const SparseMatrix transposed = constraint_.transpose();
+  FactorisedMatrix adjoint;
+  adjoint.factorise(transposed, "transposed collocation constraint matrix [Psi_I; B]^T");
+  return adjoint.solve(functionals);
 }
 
 Eigen::MatrixXd ConstrainedCollocationSystem::denseStiffness() const {

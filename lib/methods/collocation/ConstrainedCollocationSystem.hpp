@@ -63,10 +63,20 @@ class ConstrainedCollocationSystem : public ConstrainedSecondOrderSystem {
   Vector coefficientAccelerations(const Vector& U, Real t) override;
   // C^{-1} [top; bottom] for any right-hand side (top: size(), bottom: boundaryRows().size()).
   Vector solveConstraint(const Vector& top, const Vector& bottom) const;
+  // Linear functionals of the coefficients written on the constraint's right-hand side: for each
+  // column r of `functionals` (cols() entries: r . d is, e.g., u^h_i(x) = sum_J psi_J(x) d_Ji), the
+  // column g = C^{-T} r, so that r . C^{-1} [top; bottom] = g . [top; bottom]. Sampling u^h at a few
+  // points every step then costs a dot product instead of a solve (r . d' = g . [V; b_B'(t)]).
+  // Factorises C^T once per call; square C only (throws mfwave::Error when least squares).
+  Eigen::MatrixXd constraintAdjoint(const Eigen::MatrixXd& functionals) const;
   // U = Psi_I d.
   Vector interiorValues(const Vector& d) const { return psiInterior_ * d; }
   // Boundary data b_B(t) (size boundaryRows().size()).
   Vector boundaryData(Real t) const;
+  // Its rate b_B'(t) (order 1) or b_B''(t) (order 2) by central differences of the load with step
+  // 1e-4 max(1, |t|): what coefficientRates and coefficientAccelerations join to V and a. Zero when
+  // there is no load.
+  Vector boundaryDataRate(Real t, int order) const;
 
   // K (size() x size(), dense) with a = -K U for zero loads and zero boundary data. Costs a
   // solve with size() right-hand sides: for small systems (stability analysis).
@@ -82,8 +92,6 @@ class ConstrainedCollocationSystem : public ConstrainedSecondOrderSystem {
   bool isLeastSquares() const { return constraint_.rows() > constraint_.cols(); }
 
  private:
-  Vector loadRate(Real t, int order) const;  // b_B^(order)(t) by central differences
-
   CollocationSystem system_;
   std::vector<Index> interiorRows_, boundaryRows_;
   SparseMatrix psiInterior_, aInterior_, constraint_;

@@ -1,7 +1,8 @@
 #include "LambCase.hpp"
+#include "LambCollocationCase.hpp"
+#include "LambProbeScores.hpp"
 
 #include "analysis/StableTimeStep.hpp"
-#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
 #include "integrators/IntegratorFactory.hpp"
@@ -16,17 +17,13 @@
 #include "observers/LinearEnergyLedger.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
-#include "study/LambReference.hpp"
 #include "study/VeryWeakSphRun.hpp"
 #include "study/VeryWeakSphScene.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <iomanip>
 #include <memory>
-#include <limits>
-#include <optional>
+#include <sstream>
 
 namespace mfwave::lamb3d {
 
@@ -143,84 +140,8 @@ CaseResult runCaseIn(const StudySettings& study, const CaseSettings& settings, c
     result.files.push_back(energyFile);
   }
 
-  // errors against the exact half-space response, for probes on the loaded face along its normal
-  const std::string referenceProblem = lambReferenceUnavailable(scene);
-  std::optional<LambExactResponse> exact;
-  if (referenceProblem.empty()) exact.emplace(scene);
-  else result.notes.push_back(referenceProblem);
-  std::vector<std::vector<Real>> exactSeries(probes.size());
-  std::vector<LambReceiver> receivers(probes.size());
-  for (std::size_t i = 0; i < probes.size(); ++i) {
-    ProbeResult r;
-    r.name = probes[i].name;
-    const bool velocity = probes[i].quantity == ProbeQuantity::Velocity;
-    if (exact) {
-      if (const auto receiver = lambReceiver<D>(scene, particles, probes[i])) {
-        receivers[i] = *receiver;
-        exactSeries[i] = exact->series(*receiver, recorder.times(), velocity, study.errorWindow);
-        r.hasExact = true;
-        r.raw = compareSignals(recorder.times(), recorder.raw(i), exactSeries[i], study.errorWindow,
-                               study.arrivalFraction);
-        r.reported = compareSignals(recorder.times(), recorder.reported(i), exactSeries[i], study.errorWindow,
-                                    study.arrivalFraction);
-        if (study.kernelFloor && exact->square() && receiver->depth == 0) {
-          // Over the error window only (a long run's later samples would cost minutes).
-          const std::vector<Real>& times = recorder.times();
-          const auto inWindow = static_cast<std::ptrdiff_t>(
-              std::upper_bound(times.begin(), times.end(), study.errorWindow) - times.begin());
-          const std::vector<Real> windowTimes(times.begin(), times.begin() + inWindow);
-          const std::vector<Real> windowExact(exactSeries[i].begin(), exactSeries[i].begin() + inWindow);
-          r.kernelFloor = compareSignals(windowTimes,
-                                         kernelSmoothedLambSeries(*exact->square(), problem.kernel(),
-                                                                  receiver->offset, windowTimes, velocity),
-                                         windowExact, study.errorWindow, study.arrivalFraction)
-                              .relativeL2;
-        }
-      } else {
-        result.notes.push_back("probe " + r.name +
-                               ": no exact reference (not the normal component on the loaded face, or in 3-D not "
-                               "below the load centre)");
-      }
-    }
-    result.probes.push_back(r);
-  }
-  // The record's primary error: the largest reported relative L2 error over the probes with an exact response.
-  Real largest = -1;
-  for (const ProbeResult& p : result.probes)
-    if (p.hasExact) {
-      record.errors.push_back({p.name + "_relative_l2", p.reported.relativeL2});
-      largest = std::max(largest, p.reported.relativeL2);
-    }
-  if (largest >= 0) {
-    record.errors.push_back({"largest_relative_l2", largest});
-    record.primaryError = "largest_relative_l2";
-  }
-  recorder.writeCsv(folder + "/" + settings.name + "-probes.csv", exactSeries);
-  if (exact && settings.writeFrames) {
-    // The exact response on a fine time grid, for the figures (the errors use the run's samples).
-    constexpr int samples = 600;
-    std::vector<Real> times;
-    for (int k = 0; k <= samples; ++k) times.push_back(scene.integrator.endTime * k / samples);
-    std::vector<std::vector<Real>> columns(probes.size());
-    for (std::size_t i = 0; i < probes.size(); ++i)
-      if (result.probes[i].hasExact)
-        columns[i] = exact->series(receivers[i], times, probes[i].quantity == ProbeQuantity::Velocity,
-                                   study.errorWindow);
-    AtomicFile file(folder + "/exact.csv");
-    file.stream() << "t [s]";
-    for (std::size_t i = 0; i < probes.size(); ++i)
-      if (result.probes[i].hasExact) file.stream() << ',' << probes[i].name << "_exact";
-    file.stream() << '\n' << std::setprecision(10);
-    for (std::size_t k = 0; k < times.size(); ++k) {
-      file.stream() << times[k];
-      for (std::size_t i = 0; i < probes.size(); ++i)
-        if (result.probes[i].hasExact) file.stream() << ',' << columns[i][k];
-      file.stream() << '\n';
-    }
-    file.commit();
-    result.files.push_back("exact.csv");
-  }
-  result.files.push_back(settings.name + "-probes.csv");
+  // errors against the exact half-space response, the probes' CSV and the figure case's exact.csv
+  scoreLambProbes<D>(study, settings, particles, recorder, &problem.kernel(), folder, result);
   frames.report().appendTo(result.files, result.notes);
   record.peakMemoryMiB = peakMemoryMiB();
   return result;
@@ -228,8 +149,16 @@ CaseResult runCaseIn(const StudySettings& study, const CaseSettings& settings, c
 
 }  // namespace
 
+std::string CaseSettings::methodLabel() const {
+  if (!collocation) return method.variantName();
+  std::ostringstream label;
+  label << "rk m=" << collocation->order << " a/h=" << collocation->supportRatio;
+  return label.str();
+}
+
 CaseResult runCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
                    bool progress) {
+  if (settings.isCollocation()) return runCollocationCase(study, settings, folder, progress);
   if (study.scene.info.dimension == 2) return runCaseIn<2>(study, settings, folder, progress);
   if (study.scene.info.dimension == 3) return runCaseIn<3>(study, settings, folder, progress);
   throw InputError("scene.dimension", "the Lamb study runs 2-D and 3-D scenes");

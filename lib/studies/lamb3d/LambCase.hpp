@@ -1,14 +1,17 @@
 #pragma once
-// One run of the lamb3d study: a scene (possibly re-gridded, re-boxed or with other boundaries)
-// through the very weak form SPH and central differences, its probes compared with the exact
-// surface response of the half-space.
+// One run of the lamb3d / lamb2d study: a scene (possibly re-gridded, re-boxed or with other
+// boundaries) through the very weak form SPH and central differences, or (lamb2d) through RK
+// collocation (LambCollocationCase.hpp), its probes compared with the exact response of the
+// half-space.
 
 #include "analysis/SignalComparison.hpp"
 #include "io/run/StudyCases.hpp"
 #include "io/scene/Scene.hpp"
+#include "study/CollocationSpec.hpp"
 #include "study/VeryWeakSphSpec.hpp"
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,11 +19,21 @@ namespace mfwave::lamb3d {
 
 // What distinguishes one run from the scene's own set-up.
 struct CaseSettings {
-  std::string name;                 // "galerkin_0.5", "published_0.25", "strong_filter", "free_block", ...
+  std::string name;                 // "galerkin_0.5", "published_0.25", "strong_filter", "free_block",
+                                    // "rk_m2_a2.5_0.125", ...
   GeometrySpec geometry;            // box and spacing of this run
   bool freeFaces = false;           // every face free (the large-block comparison)
   VeryWeakSphSpec method;           // variant, corrections, smoothing (rate at this spacing), deconvolution
-  bool writeFrames = false;         // VTK / PNG frames as the scene's [output] asks
+  // The figure case: VTK / PNG frames as the scene's [output] asks (the very weak SPH) and the exact
+  // response on a fine time grid, exact.csv (either method).
+  bool writeFrames = false;
+  // Set: the case runs RK collocation with these shape functions instead of the very weak SPH
+  // (`method` is then not used).
+  std::optional<CollocationSpec> collocation;
+
+  bool isCollocation() const { return collocation.has_value(); }
+  // The method of the cases table: the very weak SPH's variant ("galerkin") or "rk m=2 a/h=2.5".
+  std::string methodLabel() const;
 };
 
 struct ProbeResult {
@@ -36,7 +49,9 @@ struct ProbeResult {
 
 // The record (StudyCase) holds particles, steps, dt, the stable step estimate, the set-up
 // (assembly) and loop times and the peak memory (of the process when the case ended: cases run
-// smallest first).
+// smallest first). An RK collocation case fills meanNeighbours (nodes per collocation point) and
+// operatorNonZeros (of A) too; the other figures below are the very weak SPH's (an RK case leaves
+// them at zero and the table blank).
 struct CaseResult : StudyCase {
   CaseSettings settings;
   Index ghosts = 0;
@@ -60,7 +75,8 @@ struct StudySettings {
 };
 
 // Runs one case and writes "<folder>/<case>-probes.csv" (time, then raw, reported and exact
-// columns per probe) and, if asked, frames "<case>_NNNNNN.vtp" with "<case>.pvd".
+// columns per probe) and, if asked, frames "<case>_NNNNNN.vtp" with "<case>.pvd". A collocation case
+// runs runCollocationCase (LambCollocationCase.hpp).
 CaseResult runCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
                    bool progress);
 

@@ -1,7 +1,6 @@
 #include "Plane2dCase.hpp"
 
-#include "analysis/InteriorStability.hpp"
-#include "analysis/MethodLatticeStencils.hpp"
+#include "analysis/StableTimeStep.hpp"
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
 #include "integrators/ConstrainedIntegrators.hpp"
@@ -11,10 +10,10 @@
 #include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
+#include "study/CollocationSpec.hpp"
 
 #include <limits>
 #include <memory>
-#include <sstream>
 
 namespace mfwave::plane2d {
 namespace {
@@ -32,27 +31,6 @@ struct Manufactured {
     return Vec2::Constant((-m.density() * w * w * p - lu) * std::cos(w * t));
   }
 };
-
-// Largest |eigenvalue| of K by power iteration on a(U) = -K U (zero loads), a fixed start.
-Real spectralRadius(ConstrainedCollocationSystem& system) {
-  Vector x = Vector::LinSpaced(system.size(), 0.3, 1.7).array().sin(), y(system.size());
-  Real lambda = 0;
-  // a(U) = f/rho - K U with the body force f: K x = -(a(x) - a(0)) removes the load.
-  Vector a0(system.size()), zero = Vector::Zero(system.size());
-  system.acceleration(0, zero, zero, a0);
-  for (int it = 0; it < 400; ++it) {
-    system.acceleration(0, x, x, y);
-    y = -(y - a0);
-    const Real next = y.norm() / x.norm();
-    x = y / y.norm();
-    if (it > 20 && std::abs(next - lambda) < 1e-6 * next) {
-      lambda = next;
-      break;
-    }
-    lambda = next;
-  }
-  return lambda;
-}
 
 }  // namespace
 
@@ -82,7 +60,7 @@ CaseResult runCase(const Scene& scene, int order, Real ratio, Real w, int cells,
   ConstrainedCollocationSystem system(assembleCollocation<2>(shapes, points, material, loads));
 
   // The step against the integrator's own limit on this operator (exit 2 above it, before stepping).
-  const Real omegaMax = std::sqrt(spectralRadius(system));
+  const Real omegaMax = std::sqrt(accelerationSpectralRadius(system).value);
   const Real criticalDt = 2 / omegaMax;
   const Real dt = scene.integrator.timeStepFor(criticalDt);
   const StepLimitCheck check = checkStepLimit(scene.integrator, scene.stability, omegaMax, dt, criticalDt,
@@ -144,15 +122,9 @@ CaseResult runCase(const Scene& scene, int order, Real ratio, Real w, int cells,
 }
 
 std::vector<std::string> checkInteriorStability(const Scene& scene, int order, Real ratio) {
-  const MethodLatticeStencil<2> rows = collocationInteriorStencil<2>(CollocationBasis::ReproducingKernel, order, ratio,
-                                                                     scene.material.material(), 1.0);
-  const InteriorStability<2> verdict = interiorStability<2>(rows.acceleration, rows.mass, 1.0, 32);
-  if (!verdict.growing()) return {};
-  std::ostringstream what;
-  what << "the RK collocation operator (method.order = " << order << ", method.support_ratio = " << ratio
-       << ") has growing modes: its interior " << verdict.describe()
-       << "; such a mode grows at every time step";
-  return {refuseGrowingModes(scene.stability, what.str(), "a smaller method.support_ratio, e.g. 2.5, is stable in 2-D")};
+  const CollocationGrowingModes modes = rkPlaneStrainGrowingModes(order, ratio, scene.material.material());
+  if (!modes.growing()) return {};
+  return {refuseGrowingModes(scene.stability, modes.what, modes.advice)};
 }
 
 }  // namespace mfwave::plane2d

@@ -256,6 +256,45 @@ TEST(ConstrainedCollocation, PlaneStrainAccelerationIsExactWithBodyForceAndBound
   }
 }
 
+TEST(ConstrainedCollocation, TheAdjointCarriesAFunctionalOfTheCoefficientsToTheRightHandSide) {
+  // A fixed-free bar with a traction history h(t) = t^2 at x = 1: a probe of u^h (or of its rate)
+  // through g = C^{-T} r must equal r . d (r . d') from the solves, and b_B'(t) = 2 t.
+  const Material material = Material::fromYoung(3, 0, 1.0);
+  const Coordinates<1> nodes = unitLattice<1>(16, 0.0);
+  const ReproducingKernelShapeFunctions<1> rk(nodes, 2, 3.3 / 16);
+  CollocationLoads<1> loads;
+  loads.traction = [](const Vec1&, const Vec1&, Real t) { return Vec1(t * t); };
+  ConstrainedCollocationSystem system(assembleCollocation<1>(rk, fixedFreeBarPoints(nodes), material, loads));
+  const Real t = 0.7;
+  const Vector rate = system.boundaryDataRate(t, 1);
+  ASSERT_EQ(rate.size(), 2);  // the displacement row at 0, the traction row at 1
+  EXPECT_NEAR(rate[0], 0, 1e-12);
+  EXPECT_NEAR(rate[1], 2 * t, 1e-7);
+  EXPECT_NEAR(system.boundaryDataRate(t, 2)[1], 2, 1e-4);
+  // r: u^h at x = 0.83 and at the free end.
+  Eigen::MatrixXd r = Eigen::MatrixXd::Zero(system.system().cols(), 2);
+  ShapeFunctionValues<1> values;
+  const std::array<Real, 2> at{0.83, 1.0};
+  for (Index c = 0; c < 2; ++c) {
+    rk.evaluate(Vec1(at[static_cast<std::size_t>(c)]), 0, values);
+    for (Index k = 0; k < values.size(); ++k)
+      r(values.nodes[static_cast<std::size_t>(k)], c) = values.value[static_cast<std::size_t>(k)];
+  }
+  const Eigen::MatrixXd g = system.constraintAdjoint(r);
+  ASSERT_EQ(g.rows(), system.size() + 2);
+  const Vector U = Vector::LinSpaced(system.size(), 0.1, 0.9).array().sin();
+  const Vector V = Vector::LinSpaced(system.size(), -1, 1).array().cos();
+  Vector top(system.size() + 2), topRate(system.size() + 2);
+  top << U, system.boundaryData(t);
+  topRate << V, rate;
+  const Vector d = system.coefficients(U, t), dRate = system.coefficientRates(V, t);
+  for (Index c = 0; c < 2; ++c) {
+    EXPECT_NEAR(g.col(c).dot(top), r.col(c).dot(d), 1e-10 * (1 + std::abs(r.col(c).dot(d))));
+    EXPECT_NEAR(g.col(c).dot(topRate), r.col(c).dot(dRate), 1e-10 * (1 + std::abs(r.col(c).dot(dRate))));
+  }
+  EXPECT_THROW(system.constraintAdjoint(Eigen::MatrixXd::Zero(3, 1)), InputError);
+}
+
 TEST(ConstrainedCollocation, LeastSquaresWithMorePointsThanNodesIsExactForQuadratics) {
   const Material material = Material::fromYoung(4, 0, 1.0);
   const Coordinates<1> nodes = unitLattice<1>(10, 0.0);

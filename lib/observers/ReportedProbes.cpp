@@ -1,0 +1,43 @@
+#include "observers/ReportedProbes.hpp"
+
+#include "core/AtomicFile.hpp"
+
+#include <iomanip>
+
+namespace mfwave {
+
+ReportedProbes::ReportedProbes(std::vector<Probe> probes)
+    : probes_(std::move(probes)), raw_(probes_.size()), reported_(probes_.size()) {}
+
+bool ReportedProbes::beginSample(Real time) {
+  if (!times_.empty() && time <= times_.back()) return false;
+  times_.push_back(time);
+  return true;
+}
+
+void ReportedProbes::add(std::size_t i, Real raw, Real reported) {
+  raw_[i].push_back(raw);
+  reported_[i].push_back(reported);
+}
+
+void ReportedProbes::writeCsv(const std::string& path, const std::vector<std::vector<Real>>& exact) const {
+  AtomicFile file(path);
+  std::ostream& out = file.stream();
+  out << "t [s]";
+  for (std::size_t i = 0; i < probes_.size(); ++i) {
+    out << ',' << probes_[i].name << "_raw," << probes_[i].name << "_reported";
+    if (!exact[i].empty()) out << ',' << probes_[i].name << "_exact";
+  }
+  out << '\n' << std::setprecision(10);
+  for (std::size_t k = 0; k < times_.size(); ++k) {
+    out << times_[k];
+    for (std::size_t i = 0; i < probes_.size(); ++i) {
+      out << ',' << raw_[i][k] << ',' << reported_[i][k];
+      if (!exact[i].empty()) out << ',' << exact[i][k];
+    }
+    out << '\n';
+  }
+  file.commit();
+}
+
+}  // namespace mfwave

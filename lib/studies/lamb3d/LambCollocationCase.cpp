@@ -1,0 +1,273 @@
+#include "studies/lamb3d/LambCollocationCase.hpp"
+
+#include "analysis/StableTimeStep.hpp"
+#include "core/Error.hpp"
+#include "core/Stopwatch.hpp"
+#include "integrators/ConstrainedIntegrators.hpp"
+#include "io/run/ProgressReporter.hpp"
+#include "io/scene/BuildParticles.hpp"
+#include "io/scene/Format.hpp"
+#include "io/scene/StepLimitCheck.hpp"
+#include "methods/collocation/CollocationSystem.hpp"
+#include "methods/collocation/ConstrainedCollocationSystem.hpp"
+#include "observers/ReportedProbes.hpp"
+#include "observers/StabilityMonitor.hpp"
+#include "observers/TimeLoop.hpp"
+#include "particles/BoxFace.hpp"
+#include "studies/lamb3d/LambProbeScores.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace mfwave::lamb3d {
+
+namespace {
+
+// The probes of a collocation run: the interpolated field at each probe's node, u^h(x_p) = sum_J
+// psi_J(x_p) d_J (Luo-Liu-Huang eq. (7)), or its rate with d'. With d = C^{-1} [U; b_B(t)] and
+// d' = C^{-1} [V; b_B'(t)] (ConstrainedCollocationSystem) a sample would cost a solve with the
+// constraint matrix; instead the probe's row r (psi_J(x_p) on its component) is carried over to the
+// right-hand side once, g = C^{-T} r (constraintAdjoint), and a sample is g . [U; b_B(t)] or
+// g . [V; b_B'(t)]. At an interior node u^h is the state itself (U = Psi_I d); on the loaded face it
+// is what the traction rows make of the load. Raw and reported are the same value (collocation has
+// nothing like the very weak SPH's deconvolution).
+class CollocationProbes : public ReportedProbes {
+ public:
+  CollocationProbes(std::vector<Probe> probes, const ShapeFunctions<2>& shapes, const ParticleSet<2>& particles,
+                    const ConstrainedCollocationSystem& system)
+      : ReportedProbes(std::move(probes)), system_(system) {
+    Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(system.system().cols(), static_cast<Index>(this->probes().size()));
+    ShapeFunctionValues<2> values;
+    for (std::size_t i = 0; i < this->probes().size(); ++i) {
+      const Probe& p = this->probes()[i];
+      shapes.evaluate(particles.position(p.particle), 0, values);
+      for (Index k = 0; k < values.size(); ++k)
+        rows(values.nodes[static_cast<std::size_t>(k)] * 2 + p.component, static_cast<Index>(i)) =
+            values.value[static_cast<std::size_t>(k)];
+      velocity_ = velocity_ || p.quantity == ProbeQuantity::Velocity;
+      displacement_ = displacement_ || p.quantity == ProbeQuantity::Displacement;
+    }
+    adjoint_ = system.constraintAdjoint(rows);
+  }
+
+  void observe(const StateView& s) override {
+    if (!beginSample(s.time)) return;
+    const Index interior = system_.size();
+    const Vector data = displacement_ ? system_.boundaryData(s.time) : Vector();
+    const Vector rate = velocity_ ? system_.boundaryDataRate(s.time, 1) : Vector();
+    for (std::size_t i = 0; i < probes().size(); ++i) {
+      const bool velocity = probes()[i].quantity == ProbeQuantity::Velocity;
+      const auto g = adjoint_.col(static_cast<Index>(i));
+      const Real value = g.head(interior).dot(velocity ? s.velocity : s.displacement) +
+                         g.tail(g.size() - interior).dot(velocity ? rate : data);
+      add(i, value, value);
+    }
+  }
+
+ private:
+  const ConstrainedCollocationSystem& system_;
+  Eigen::MatrixXd adjoint_;  // column i: C^{-T} r_i for probe i
+  bool velocity_ = false, displacement_ = false;
+};
+
+// The earliest arrival at a probe of a P wave that leaves the load's patch (a segment of its face),
+// reflects once off a face of `faces` (a BoxFace mask) and reaches the probe: the distance from the
+// patch to the probe's mirror image in that face, over c_p. With the path for the note.
+struct FirstReflection {
+  Real time = std::numeric_limits<Real>::infinity();
+  std::string path;
+};
+
+FirstReflection firstReflection(const Scene& scene, const ParticleSet<2>& particles, const std::vector<Probe>& probes,
+                                unsigned faces) {
+  const LoadSpec& load = scene.loads[0];
+  const int normalAxis = faceAxis(load.face), along = 1 - normalAxis;
+  const Real cp = scene.material.material().pWaveSpeed();
+  const GeometrySpec& g = scene.geometry;
+  FirstReflection first;
+  for (const Probe& probe : probes) {
+    const Vec2 x = particles.position(probe.particle);
+    for (int face = 0; face < 4; ++face) {
+      if ((faces & faceBit(face)) == 0) continue;
+      const int axis = faceAxis(face);
+      const auto a = static_cast<std::size_t>(axis);
+      const Real wall = faceSign(face) < 0 ? g.lower[a] : g.upper[a];
+      Vec2 image = x;
+      image[axis] = 2 * wall - x[axis];
+      // the patch's nearest point to the image
+      Vec2 source;
+      source[normalAxis] = load.centre[static_cast<std::size_t>(normalAxis)];
+      const Real c = load.centre[static_cast<std::size_t>(along)];
+      const Real l = load.halfWidth[static_cast<std::size_t>(along)];
+      source[along] = std::clamp(image[along], c - l, c + l);
+      const Real time = (image - source).norm() / cp;
+      if (time < first.time) {
+        first.time = time;
+        std::ostringstream path;
+        path << std::setprecision(3) << (image - source).norm() << " / c_p from the load's patch via the "
+             << (faceSign(face) < 0 ? "-" : "+") << axisName(axis) << " face to probe " << probe.name;
+        first.path = path.str();
+      }
+    }
+  }
+  return first;
+}
+
+}  // namespace
+
+CaseResult runCollocationCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
+                              bool progress) {
+  const Scene& scene = study.scene;
+  if (scene.info.dimension != 2)
+    throw InputError("method.name", "RK collocation runs the 2-D Lamb problem (lamb2d) only");
+  if (scene.loads.size() != 1 || scene.loads[0].type != LoadType::SurfacePatch)
+    throw InputError("load", "the RK collocation case needs exactly one surface_patch load");
+  const CollocationSpec& spec = *settings.collocation;
+  CaseResult result;
+  result.settings = settings;
+  CaseRecord& record = result.record;
+  record.name = settings.name;
+  const Stopwatch setupClock;
+
+  // nodes: the physical particles of the lattice (the very weak SPH case's, without its ghosts)
+  const ParticleSet<2> particles = buildParticles<2>(settings.geometry);
+  const Index nodeCount = particles.physicalCount();
+  record.particles = nodeCount;
+  Coordinates<2> nodes;
+  for (int a = 0; a < 2; ++a)
+    nodes[static_cast<std::size_t>(a)].assign(particles.coordinates()[static_cast<std::size_t>(a)].begin(),
+                                              particles.coordinates()[static_cast<std::size_t>(a)].begin() + nodeCount);
+  const Real dx = settings.geometry.spacing;
+  const std::unique_ptr<ShapeFunctions<2>> shapes = makeCollocationShapes<2>(spec, nodes, dx);
+
+  // rows: interior nodes collocate the equation of motion; the loaded face (its corners excepted)
+  // the traction, every other boundary node u = 0
+  const LoadSpec& load = scene.loads[0];
+  const Vec2 normal = faceNormal<2>(load.face);
+  const auto along = static_cast<std::size_t>(1 - faceAxis(load.face));
+  CollocationPoints<2> points;
+  Index tractionRows = 0;
+  for (Index i = 0; i < nodeCount; ++i) {
+    const std::uint8_t mask = particles.faceMask[static_cast<std::size_t>(i)];
+    const Vec2 x = particles.position(i);
+    if (mask == 0) {
+      points.add(x, CollocationRowKind::Interior);
+    } else if (mask == faceBit(load.face)) {
+      points.add(x, CollocationRowKind::Traction, normal);
+      ++tractionRows;
+    } else {
+      points.add(x, CollocationRowKind::Displacement);
+    }
+  }
+  // h(x, t) = traction w(x) f(t): w = 1 inside the patch, 1/2 on its edges, 0 outside.
+  CollocationLoads<2> loads;
+  const Vec2 traction(load.traction[0], load.traction[1]);
+  const Real centre = load.centre[along], halfWidth = load.halfWidth[along];
+  const Real edgeTolerance = 1e-9 * std::max(halfWidth, dx);
+  const TimeFunction history = load.timeFunction;
+  loads.traction = [traction, centre, halfWidth, edgeTolerance, along, history](const Vec2& x, const Vec2&, Real t) {
+    const Real distance = std::abs(x[static_cast<Index>(along)] - centre);
+    const Real w = distance < halfWidth - edgeTolerance ? 1.0 : distance <= halfWidth + edgeTolerance ? 0.5 : 0.0;
+    return Vec2(traction * (w * history(t)));
+  };
+  const Material material = scene.material.material();
+  ConstrainedCollocationSystem system(assembleCollocation<2>(*shapes, points, material, loads));
+  result.operatorNonZeros = system.system().A.nonZeros();
+  {
+    ShapeFunctionValues<2> values;
+    Real total = 0;
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      shapes->evaluate(points.points[p], 0, values);
+      total += static_cast<Real>(values.size());
+    }
+    result.meanNeighbours = total / static_cast<Real>(points.size());
+  }
+
+  // The step against the integrator's own limit on this operator (exit 2 above it, before stepping).
+  const AccelerationSpectralRadius radius = accelerationSpectralRadius(system);
+  const Real omegaMax = std::sqrt(radius.value);
+  const Real criticalDt = 2 / omegaMax;
+  if (!radius.converged) {
+    // The largest eigenvalues of K come in close clusters, so the ratio creeps up to omega_max^2
+    // from below (at dx = 0.25: 0.08 % under the dense eigenvalue after 400 iterations).
+    std::ostringstream note;
+    note << std::setprecision(2) << settings.name << ": the power iteration for omega_max^2 was still rising by "
+         << radius.lastChange << " per iteration after " << radius.iterations
+         << " (clustered largest eigenvalues); its last ratio, a little under omega_max^2, sets the step";
+    result.notes.push_back(note.str());
+  }
+  const Real dt = scene.integrator.timeStepFor(criticalDt);
+  record.stableTimeStep = criticalDt;
+  record.timeStep = dt;
+  record.simulatedTime = scene.integrator.endTime;
+  const StepLimitCheck check = checkStepLimit(scene.integrator, scene.stability, omegaMax, dt, criticalDt,
+                                              "a power iteration on the assembled collocation operator",
+                                              "in case " + settings.name);
+  if (!check.note.empty()) result.notes.push_back(check.note);
+
+  const std::unique_ptr<SecondOrderIntegrator> integrator =
+      makeConstrainedIntegrator(scene.integrator.name, scene.integrator.options);
+  integrator->initialise(system, 0, Vector::Zero(system.size()), Vector::Zero(system.size()), dt);
+
+  const std::vector<Probe> probes = resolveProbes(scene.probes, particles);
+  CollocationProbes recorder(probes, *shapes, particles, system);
+  record.setupSeconds = setupClock.seconds();
+
+  // What the case leaves out, and where its fixed faces start to matter.
+  const unsigned fixedFaces = allFaces(2) & ~faceBit(load.face);
+  const FirstReflection reflection = firstReflection(scene, particles, probes, fixedFaces);
+  std::ostringstream faces;
+  faces << std::setprecision(3) << settings.name
+        << ": RK collocation fixes (u = 0) every face but the loaded one, where the scene's [[boundary]] asks "
+           "otherwise (transmitting faces included): the first P wave they reflect reaches a probe at t = "
+        << reflection.time << " (" << reflection.path << ")"
+        << (reflection.time > study.errorWindow
+                ? ", after the error window " + scene::formatNumber(study.errorWindow) +
+                      ", so the errors do not see the difference; later samples do"
+                : ", INSIDE the error window " + scene::formatNumber(study.errorWindow) +
+                      ": the errors include reflections the scene's faces would not make");
+  result.notes.push_back(faces.str());
+  result.notes.push_back(settings.name + ": " + std::to_string(tractionRows) + " traction rows on the loaded face, " +
+                         std::to_string(system.boundaryRows().size() / 2 - static_cast<std::size_t>(tractionRows)) +
+                         " displacement rows; no energy ledger and no frames for RK collocation");
+  result.notes.push_back(settings.name +
+                         ": the traction rows are not symmetric, and some pairs of the operator's modes are complex "
+                         "and grow slowly (on data/scenes/lamb2d.toml e-folding in about 75 s, at every spacing "
+                         "measured: lib/studies/lamb3d/LambCollocationCase.hpp); runs far beyond the error window "
+                         "grow until the stability monitor stops them");
+
+  StabilityMonitor monitor(scene.stability.options(2, loadsQuietAfter(scene)));
+  ProgressReporter reporter(scene.integrator.endTime, nodeCount, progress);
+  TimeLoop loop;
+  loop.add(monitor);
+  loop.add(reporter);
+  loop.add(recorder, scene.output.probeEvery);
+  RunStatistics stats;
+  try {
+    stats = loop.run(*integrator, scene.integrator.endTime);
+  } catch (const InstabilityError& e) {
+    // The probes recorded up to the stop stay readable (without the exact columns); the monitor's
+    // "particle" is the interior unknown's point, which is said as the node it is.
+    recorder.writeCsv(folder + "/" + settings.name + "-probes.csv", std::vector<std::vector<Real>>(probes.size()));
+    if (e.particle() < 0 || 2 * e.particle() >= system.size()) throw;
+    const Index node = system.interiorRows()[static_cast<std::size_t>(2 * e.particle())] / 2;
+    std::ostringstream where;
+    where << e.what() << " [RK collocation: interior point " << e.particle() << " is node " << node << " at "
+          << formatPoint<2>(particles.position(node)) << "]";
+    throw InstabilityError(where.str(), e.step(), e.time(), static_cast<long>(node));
+  }
+  result.recordLoop(stats);
+  noteAllowedGrowth(result.notes, settings.name, {monitor.growthMessage()});
+
+  scoreLambProbes<2>(study, settings, particles, recorder, nullptr, folder, result);
+  record.peakMemoryMiB = peakMemoryMiB();
+  return result;
+}
+
+}  // namespace mfwave::lamb3d
