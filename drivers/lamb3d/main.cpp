@@ -32,10 +32,25 @@
 // fixed for RK collocation (the case's notes say when the first reflection reaches a probe). lamb3d
 // refuses reproducing_kernel at method.name (exit 2): the 3-D case is not implemented.
 //
+// lamb2d runs it by the updated-Lagrangian SPH for solids too (Li's primer; a large-deformation method
+// run at small amplitude, lib/studies/lamb3d/LambSolidCase.hpp): --set method.name=updated_lagrangian_sph
+// [--set method.ul_viscosity_alpha=1] [--set method.ul_viscosity_beta=0] [--set method.ul_gradient_correction=true]
+// [--set method.ul_tributary_volumes=true] [--set method.ul_amplitude=1e-4] (the defaults shown).
+//   ulsph_<dx>   one case per spacing (the scene's first, which also writes exact.csv)
+// The method's other options keep UpdatedLagrangianSphOptions' defaults (cubic spline, h / dx = 1.3,
+// continuity density, no artificial stress, no XSPH; LambSolidSpec::linearDefaults): its own [method]
+// keys (addUpdatedLagrangianSphKeys) share names with the very weak SPH's and cannot sit in this
+// schema. The very weak SPH's keys, the published / strong cases' keys and the scene's [integrator]
+// name and cfl are not used, with a note (leapfrog at the method's own step criteria);
+// study.free_block_* is refused. Every face is
+// free (no dashpots; the notes say when the first reflection reaches a probe). lamb3d refuses it at
+// method.name (exit 2).
+//
 //   lamb3d --scene data/scenes/lamb3d.toml [--set 'study.spacings=[0.5]'] [--out DIR]
 //   lamb2d --scene data/scenes/lamb2d.toml --set method.name=reproducing_kernel [--out DIR]
 
 #include "studies/lamb3d/LambCase.hpp"
+#include "studies/lamb3d/LambSolidSpec.hpp"
 
 #include "core/Error.hpp"
 #include "integrators/ConstrainedIntegrators.hpp"
@@ -81,6 +96,24 @@ SceneSchema lambSchema() {
       .when("name = reproducing_kernel")
       .describedAs("cubic B-spline support radius a / h (from about 2.77 on the 2-D interior rows have growing modes: "
                    "refused)");
+  // The updated-Lagrangian SPH for solids (lamb2d only; lamb3d refuses it at method.name). Only what
+  // the linear small-amplitude problem needs to set or to measure: the rest are the method's defaults.
+  schema.addChoice("method.name", "updated_lagrangian_sph");
+  schema.add("method.ul_amplitude", T::Number).withUnit("-").defaultsTo("1e-4").positive()
+      .when("name = updated_lagrangian_sph")
+      .describedAs("eps: the traction is eps times the scene's and the probes are divided by eps (the "
+                   "large-deformation method answers the linear problem)");
+  schema.add("method.ul_viscosity_alpha", T::Number).withUnit("-").defaultsTo("1.0").nonNegative()
+      .when("name = updated_lagrangian_sph")
+      .describedAs("Monaghan artificial viscosity alpha (1 measured best on lamb2d.toml at every spacing: it damps "
+                   "the particle-scale ringing of the free surface; 0 and 0.1 ring, 2 is no better)");
+  schema.add("method.ul_viscosity_beta", T::Number).withUnit("-").defaultsTo("0.0").nonNegative()
+      .when("name = updated_lagrangian_sph")
+      .describedAs("Monaghan artificial viscosity beta");
+  schema.add("method.ul_gradient_correction", T::Boolean).defaultsTo("true").when("name = updated_lagrangian_sph")
+      .describedAs("the kernel-gradient correction (Randles-Libersky) in every sum");
+  schema.add("method.ul_tributary_volumes", T::Boolean).defaultsTo("true").when("name = updated_lagrangian_sph")
+      .describedAs("face particles carry their tributary area as volume (dx^2 / 2, corners dx^2 / 4); false: dx^2");
   schema.add("study", T::Table).describedAs("the cases of the lamb3d study");
   schema.add("study.spacings", T::NumberArray).withUnit("m").defaultsToNote("[geometry.spacing]")
       .describedAs("lattice spacings of the accuracy-cost cases (h scales with them; the box and load are fixed)");
@@ -250,6 +283,55 @@ void readCollocationPlan(SceneReader& reader, Plan& plan) {
   }
 }
 
+// The updated-Lagrangian SPH plan (lamb2d, method.name = updated_lagrangian_sph): one case per
+// spacing, the scene's first (with exact.csv).
+void readSolidPlan(SceneReader& reader, Plan& plan) {
+  const Scene& scene = plan.study.scene;
+  if (kDimension != 2)
+    reader.fail("method.name", std::string(kProgram) +
+                                   " runs very_weak_sph only: the updated-Lagrangian SPH (updated_lagrangian_sph) is "
+                                   "implemented for the plane-strain problem, lamb2d");
+  if (scene.loads.size() != 1 || scene.loads[0].type != LoadType::SurfacePatch)
+    reader.fail("load", "the updated-Lagrangian SPH in " + std::string(kProgram) +
+                            " needs exactly one surface_patch load");
+  if (reader.has("study.free_block_lower") || reader.has("study.free_block_upper"))
+    reader.fail(reader.has("study.free_block_lower") ? "study.free_block_lower" : "study.free_block_upper",
+                "the free_block case compares the very weak SPH's transmitting faces; the updated-Lagrangian SPH "
+                "runs none (remove study.free_block_*)");
+  LambSolidSpec spec = LambSolidSpec::linearDefaults(scene.material.material());
+  spec.options.viscosity.alpha = reader.number("method.ul_viscosity_alpha");
+  spec.options.viscosity.beta = reader.number("method.ul_viscosity_beta");
+  spec.options.kernelGradientCorrection = reader.boolean("method.ul_gradient_correction");
+  spec.amplitude = reader.number("method.ul_amplitude");
+  spec.tributaryVolumes = reader.boolean("method.ul_tributary_volumes");
+  if (spec.amplitude > 0.01)
+    reader.fail("method.ul_amplitude", "is " + scene::formatNumber(spec.amplitude) +
+                                           ": above 0.01 the strains are no longer small and the case no longer "
+                                           "answers the linear problem it is scored against");
+  const std::vector<std::string> ignoredMethod = readIgnoredKeys(reader, veryWeakSphOptionKeys(reader.schema()));
+  if (!ignoredMethod.empty())
+    plan.notes.push_back("updated_lagrangian_sph ignores the very weak SPH's keys the scene sets: " +
+                         joined(ignoredMethod));
+  const std::vector<std::string> ignoredStudy = readIgnoredKeys(
+      reader, {"study.compare_published", "study.published_smoothing_rate", "study.strong_smoothing_rate"});
+  if (!ignoredStudy.empty())
+    plan.notes.push_back("updated_lagrangian_sph runs no published or strong_filter case; ignored: " +
+                         joined(ignoredStudy));
+  plan.notes.push_back("updated_lagrangian_sph steps by leapfrog at the method's own step criteria (0.3 h / (c_p "
+                       "(1 + 1.2 alpha)) and the force criterion, recomputed every step); the scene's "
+                       "integrator.name = " + scene.integrator.name + " and its cfl are not used");
+
+  const std::vector<GeometrySpec> grids = readGrids(reader, scene.geometry);
+  for (std::size_t i = 0; i < grids.size(); ++i) {
+    CaseSettings c;
+    c.name = caseName("ulsph", grids[i].spacing);
+    c.geometry = grids[i];
+    c.writeFrames = i == 0;
+    c.solid = spec;
+    plan.cases.push_back(c);
+  }
+}
+
 Plan readPlan(SceneReader& reader) {
   Plan plan;
   StudySettings& study = plan.study;
@@ -264,9 +346,13 @@ Plan readPlan(SceneReader& reader) {
     readCollocationPlan(reader, plan);
     return plan;
   }
+  if (scene.method.name == "updated_lagrangian_sph") {
+    readSolidPlan(reader, plan);
+    return plan;
+  }
   if (scene.method.name != "very_weak_sph")
     reader.fail("method.name", std::string(kProgram) + " runs the very_weak_sph method" +
-                                   (kDimension == 2 ? " or reproducing_kernel" : ""));
+                                   (kDimension == 2 ? ", reproducing_kernel or updated_lagrangian_sph" : ""));
   const VeryWeakSphSpec main = readVeryWeakSph(reader, scene.material.material());
   const bool comparePublished = reader.boolean("study.compare_published") && main.options.variant != VeryWeakSphVariant::Published;
   const VeryWeakSphSpec published = publishedSpec(main, reader.number("study.published_smoothing_rate"));
@@ -336,17 +422,20 @@ CaseTable<CaseResult> casesTable(const std::vector<ProbeResult>& probes) {
   CaseTable<CaseResult> t;
   // The very weak SPH's own figures are blank for an RK collocation case; its variant column says
   // "rk m=<order> a/h=<ratio>", mean_neighbours counts the nodes per collocation point and
-  // operator_nonzeros those of the collocation matrix A.
-  const auto veryWeakOnly = [](R r, TableCell value) { return r.settings.isCollocation() ? TableCell() : value; };
+  // operator_nonzeros those of the collocation matrix A. An updated-Lagrangian SPH case says
+  // "ul-sph alpha=<a> beta=<b>", fills h and mean_neighbours (of its last evaluation), its
+  // stable_step_estimate is the method's step at t = 0 and its dt the mean step; it has no operator.
+  const auto veryWeakOnly = [](R r, TableCell value) { return r.settings.isVeryWeak() ? value : TableCell(); };
+  const auto notSolid = [](R r, TableCell value) { return r.settings.isSolid() ? TableCell() : value; };
   t.column("case", [](R r) { return r.settings.name; }, TerminalColumn("case", 16).left())
       .column("variant", [](R r) { return r.settings.methodLabel(); })
       .column("smoothing_rate [1/s]", [veryWeakOnly](R r) { return veryWeakOnly(r, r.settings.method.smoothingRate); })
       .column("spacing [m]", [](R r) { return r.settings.geometry.spacing; }, TerminalColumn("dx", 8))
-      .column("h [m]", [veryWeakOnly](R r) { return veryWeakOnly(r, r.smoothingLength); })
+      .column("h [m]", [](R r) { return r.settings.isCollocation() ? TableCell() : TableCell(r.smoothingLength); })
       .column("particles", [](R r) { return r.record.particles; }, TerminalColumn("particles", 10))
       .column("ghosts", [veryWeakOnly](R r) { return veryWeakOnly(r, r.ghosts); })
       .column("mean_neighbours", [](R r) { return r.meanNeighbours; })
-      .column("operator_nonzeros", [](R r) { return r.operatorNonZeros; })
+      .column("operator_nonzeros", [notSolid](R r) { return notSolid(r, r.operatorNonZeros); })
       .column("operator [MiB]", [veryWeakOnly](R r) { return veryWeakOnly(r, r.operatorMiB); })
       .column("stable_step_estimate [s]", [](R r) { return r.record.stableTimeStep; })
       .column("stable_step_gershgorin [s]", [veryWeakOnly](R r) { return veryWeakOnly(r, r.stableStepGershgorin); })
@@ -399,8 +488,8 @@ int main(int argc, char** argv) {
   DriverCommandLine cli(kProgram,
                         kDimension == 3
                             ? "lamb3d: the Ding-Long-Wu 3-D Lamb problem by very weak form SPH, against the exact response"
-                            : "lamb2d: the plane-strain Lamb problem (a strip load) by very weak form SPH or RK "
-                              "collocation, against the exact response",
+                            : "lamb2d: the plane-strain Lamb problem (a strip load) by very weak form SPH, RK "
+                              "collocation or updated-Lagrangian SPH, against the exact response",
                         schema.describe());
   if (const auto exit = cli.parse(argc, argv)) return *exit;
 
@@ -421,7 +510,9 @@ int main(int argc, char** argv) {
 
     const CaseResult& paper = results.front();  // the scene's variant at its spacing
     const Scene& scene = plan.study.scene;
-    RunSummary summary(kProgram, scene.info.name, scene.method.name, scene.integrator.name);
+    // The updated-Lagrangian SPH steps by leapfrog whatever the scene's [integrator] says (readSolidPlan).
+    RunSummary summary(kProgram, scene.info.name, scene.method.name,
+                       paper.settings.isSolid() ? std::string("leapfrog") : scene.integrator.name);
     summary.files.add("cases.csv");
     summary.addCases(results);
     summary.totalsFromFirstCase();
@@ -431,7 +522,7 @@ int main(int argc, char** argv) {
         if (!p.hasExact) continue;
         const std::string stem = r.settings.name + "_" + p.name;
         summary.errors.push_back({stem + "_relative_l2", p.reported.relativeL2});
-        if (!r.settings.isCollocation() && r.settings.method.deconvolution)
+        if (r.settings.isVeryWeak() && r.settings.method.deconvolution)
           summary.errors.push_back({stem + "_relative_l2_raw", p.raw.relativeL2});
         summary.errors.push_back({stem + "_peak_error", p.reported.peakError});
         summary.errors.push_back({stem + "_arrival_error [s]", p.reported.arrivalError});
@@ -440,7 +531,7 @@ int main(int argc, char** argv) {
     for (const CaseResult& r : results) {
       summary.figures.push_back({r.settings.name + "_stable_step_estimate", r.record.stableTimeStep});
       summary.figures.push_back({r.settings.name + "_particle_steps_per_second", r.record.particleStepsPerSecond()});
-      if (r.settings.isCollocation()) continue;  // no energy ledger
+      if (!r.settings.isVeryWeak()) continue;  // no energy ledger
       summary.figures.push_back({r.settings.name + "_energy_final_fraction", r.energyFinalFraction});
       summary.figures.push_back({r.settings.name + "_energy_balance_drift", r.energyBalanceDrift});
     }

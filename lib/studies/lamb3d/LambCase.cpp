@@ -1,6 +1,7 @@
 #include "LambCase.hpp"
 #include "LambCollocationCase.hpp"
 #include "LambProbeScores.hpp"
+#include "LambSolidCase.hpp"
 
 #include "analysis/StableTimeStep.hpp"
 #include "core/Error.hpp"
@@ -150,8 +151,13 @@ CaseResult runCaseIn(const StudySettings& study, const CaseSettings& settings, c
 }  // namespace
 
 std::string CaseSettings::methodLabel() const {
-  if (!collocation) return method.variantName();
   std::ostringstream label;
+  if (solid) {
+    label << "ul-sph alpha=" << solid->options.viscosity.alpha << " beta=" << solid->options.viscosity.beta
+          << (solid->options.kernelGradientCorrection ? " kgc" : "");
+    return label.str();
+  }
+  if (!collocation) return method.variantName();
   label << "rk m=" << collocation->order << " a/h=" << collocation->supportRatio;
   return label.str();
 }
@@ -159,6 +165,7 @@ std::string CaseSettings::methodLabel() const {
 CaseResult runCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
                    bool progress) {
   if (settings.isCollocation()) return runCollocationCase(study, settings, folder, progress);
+  if (settings.isSolid()) return runSolidCase(study, settings, folder, progress);
   if (study.scene.info.dimension == 2) return runCaseIn<2>(study, settings, folder, progress);
   if (study.scene.info.dimension == 3) return runCaseIn<3>(study, settings, folder, progress);
   throw InputError("scene.dimension", "the Lamb study runs 2-D and 3-D scenes");

@@ -2,11 +2,12 @@
 // One run of the lamb3d / lamb2d study: a scene (possibly re-gridded, re-boxed or with other
 // boundaries) through the very weak form SPH and central differences, or (lamb2d) through RK
 // collocation (LambCollocationCase.hpp), its probes compared with the exact response of the
-// half-space.
+// half-space, or (lamb2d) through the updated-Lagrangian SPH for solids (LambSolidCase.hpp).
 
 #include "analysis/SignalComparison.hpp"
 #include "io/run/StudyCases.hpp"
 #include "io/scene/Scene.hpp"
+#include "studies/lamb3d/LambSolidSpec.hpp"
 #include "study/CollocationSpec.hpp"
 #include "study/VeryWeakSphSpec.hpp"
 
@@ -20,7 +21,7 @@ namespace mfwave::lamb3d {
 // What distinguishes one run from the scene's own set-up.
 struct CaseSettings {
   std::string name;                 // "galerkin_0.5", "published_0.25", "strong_filter", "free_block",
-                                    // "rk_m2_a2.5_0.125", ...
+                                    // "rk_m2_a2.5_0.125", "ulsph_0.25", ...
   GeometrySpec geometry;            // box and spacing of this run
   bool freeFaces = false;           // every face free (the large-block comparison)
   VeryWeakSphSpec method;           // variant, corrections, smoothing (rate at this spacing), deconvolution
@@ -30,9 +31,14 @@ struct CaseSettings {
   // Set: the case runs RK collocation with these shape functions instead of the very weak SPH
   // (`method` is then not used).
   std::optional<CollocationSpec> collocation;
+  // Set: the case runs the updated-Lagrangian SPH for solids (`method` is then not used).
+  std::optional<LambSolidSpec> solid;
 
   bool isCollocation() const { return collocation.has_value(); }
-  // The method of the cases table: the very weak SPH's variant ("galerkin") or "rk m=2 a/h=2.5".
+  bool isSolid() const { return solid.has_value(); }
+  bool isVeryWeak() const { return !isCollocation() && !isSolid(); }
+  // The method of the cases table: the very weak SPH's variant ("galerkin"), "rk m=2 a/h=2.5" or
+  // "ul-sph alpha=0 beta=0".
   std::string methodLabel() const;
 };
 
@@ -76,7 +82,8 @@ struct StudySettings {
 
 // Runs one case and writes "<folder>/<case>-probes.csv" (time, then raw, reported and exact
 // columns per probe) and, if asked, frames "<case>_NNNNNN.vtp" with "<case>.pvd". A collocation case
-// runs runCollocationCase (LambCollocationCase.hpp).
+// runs runCollocationCase (LambCollocationCase.hpp), an updated-Lagrangian SPH case runSolidCase
+// (LambSolidCase.hpp).
 CaseResult runCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
                    bool progress);
 

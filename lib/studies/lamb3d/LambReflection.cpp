@@ -1,0 +1,46 @@
+#include "studies/lamb3d/LambReflection.hpp"
+
+#include "particles/BoxFace.hpp"
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+namespace mfwave::lamb3d {
+
+FirstReflection firstReflection(const Scene& scene, const ParticleSet<2>& particles, const std::vector<Probe>& probes,
+                                unsigned faces) {
+  const LoadSpec& load = scene.loads[0];
+  const int normalAxis = faceAxis(load.face), along = 1 - normalAxis;
+  const Real cp = scene.material.material().pWaveSpeed();
+  const GeometrySpec& g = scene.geometry;
+  FirstReflection first;
+  for (const Probe& probe : probes) {
+    const Vec2 x = particles.position(probe.particle);
+    for (int face = 0; face < 4; ++face) {
+      if ((faces & faceBit(face)) == 0) continue;
+      const int axis = faceAxis(face);
+      const auto a = static_cast<std::size_t>(axis);
+      const Real wall = faceSign(face) < 0 ? g.lower[a] : g.upper[a];
+      Vec2 image = x;
+      image[axis] = 2 * wall - x[axis];
+      // the patch's nearest point to the image
+      Vec2 source;
+      source[normalAxis] = load.centre[static_cast<std::size_t>(normalAxis)];
+      const Real c = load.centre[static_cast<std::size_t>(along)];
+      const Real l = load.halfWidth[static_cast<std::size_t>(along)];
+      source[along] = std::clamp(image[along], c - l, c + l);
+      const Real time = (image - source).norm() / cp;
+      if (time < first.time) {
+        first.time = time;
+        std::ostringstream path;
+        path << std::setprecision(3) << (image - source).norm() << " / c_p from the load's patch via the "
+             << (faceSign(face) < 0 ? "-" : "+") << axisName(axis) << " face to probe " << probe.name;
+        first.path = path.str();
+      }
+    }
+  }
+  return first;
+}
+
+}  // namespace mfwave::lamb3d

@@ -1,0 +1,28 @@
+#pragma once
+// When the first wave the rectangle's other faces send back reaches a probe of the 2-D Lamb scene:
+// the RK collocation case (fixed faces) and the updated-Lagrangian SPH case (free faces) stand in
+// for the scene's transmitting faces with reflecting ones, and say from when their probes see it.
+
+#include "io/scene/Scene.hpp"
+#include "observers/ProbeRecorder.hpp"
+#include "particles/ParticleSet.hpp"
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace mfwave::lamb3d {
+
+struct FirstReflection {
+  Real time = std::numeric_limits<Real>::infinity();
+  std::string path;  // "13.5 / c_p from the load's patch via the +x face to probe receiver"
+};
+
+// The earliest arrival at a probe of a P wave that leaves the load's patch (a segment of its face),
+// reflects once off a face of `faces` (a BoxFace mask) and reaches the probe: the distance from the
+// patch to the probe's mirror image in that face, over c_p (the fastest wave, whatever the face's
+// condition). The scene's first load is the surface_patch.
+FirstReflection firstReflection(const Scene& scene, const ParticleSet<2>& particles, const std::vector<Probe>& probes,
+                                unsigned faces);
+
+}  // namespace mfwave::lamb3d
