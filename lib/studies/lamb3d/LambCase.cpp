@@ -1,6 +1,7 @@
 #include "LambCase.hpp"
 #include "LambCollocationCase.hpp"
 #include "LambProbeScores.hpp"
+#include "LambSpectralElementCase.hpp"
 
 #include "analysis/StableTimeStep.hpp"
 #include "core/Error.hpp"
@@ -24,6 +25,7 @@
 #include <cmath>
 #include <memory>
 #include <sstream>
+#include <string>
 
 namespace mfwave::lamb3d {
 
@@ -150,6 +152,7 @@ CaseResult runCaseIn(const StudySettings& study, const CaseSettings& settings, c
 }  // namespace
 
 std::string CaseSettings::methodLabel() const {
+  if (spectralElementOrder) return "sem N=" + std::to_string(*spectralElementOrder);
   if (!collocation) return method.variantName();
   std::ostringstream label;
   label << "rk m=" << collocation->order << " a/h=" << collocation->supportRatio;
@@ -159,6 +162,7 @@ std::string CaseSettings::methodLabel() const {
 CaseResult runCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
                    bool progress) {
   if (settings.isCollocation()) return runCollocationCase(study, settings, folder, progress);
+  if (settings.isSpectralElement()) return runSpectralElementCase(study, settings, folder, progress);
   if (study.scene.info.dimension == 2) return runCaseIn<2>(study, settings, folder, progress);
   if (study.scene.info.dimension == 3) return runCaseIn<3>(study, settings, folder, progress);
   throw InputError("scene.dimension", "the Lamb study runs 2-D and 3-D scenes");

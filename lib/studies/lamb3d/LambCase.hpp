@@ -30,9 +30,15 @@ struct CaseSettings {
   // Set: the case runs RK collocation with these shape functions instead of the very weak SPH
   // (`method` is then not used).
   std::optional<CollocationSpec> collocation;
+  // Set: the case runs the spectral-element method of this order N (LambSpectralElementCase.hpp)
+  // with elements N spacings wide (`method` is then not used).
+  std::optional<int> spectralElementOrder;
 
   bool isCollocation() const { return collocation.has_value(); }
-  // The method of the cases table: the very weak SPH's variant ("galerkin") or "rk m=2 a/h=2.5".
+  bool isSpectralElement() const { return spectralElementOrder.has_value(); }
+  bool isVeryWeakSph() const { return !isCollocation() && !isSpectralElement(); }
+  // The method of the cases table: the very weak SPH's variant ("galerkin"), "rk m=2 a/h=2.5" or
+  // "sem N=4".
   std::string methodLabel() const;
 };
 
@@ -76,7 +82,8 @@ struct StudySettings {
 
 // Runs one case and writes "<folder>/<case>-probes.csv" (time, then raw, reported and exact
 // columns per probe) and, if asked, frames "<case>_NNNNNN.vtp" with "<case>.pvd". A collocation case
-// runs runCollocationCase (LambCollocationCase.hpp).
+// runs runCollocationCase (LambCollocationCase.hpp), a spectral-element case runSpectralElementCase
+// (LambSpectralElementCase.hpp).
 CaseResult runCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
                    bool progress);
 
