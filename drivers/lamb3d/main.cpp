@@ -18,6 +18,12 @@
 // load (data/scenes/lamb2d.toml), scored against LambStripLoad at every receiver, surface or inside
 // (docs/studies/lamb2d.md).
 //
+// lamb2d also runs the same scene by the spectral-element method, the seismologists' reference
+// (GLL order N, elements N spacings wide, dashpots on the transmitting faces;
+// lib/studies/lamb3d/LambSpectralElementCase.hpp): --set method.name=spectral_element
+// [--set method.order=4].
+//   sem_n<order>_<dx>           one case per spacing (the scene's first, which also writes exact.csv)
+//
 // lamb2d also runs the same scene by RK collocation (Luo-Liu-Huang strong form, reproducing-kernel
 // shape functions; lib/studies/lamb3d/LambCollocationCase.hpp), so that the methods meet on one
 // problem: --set method.name=reproducing_kernel [--set method.order=2] [--set method.support_ratio=2.5].
@@ -30,7 +36,8 @@
 // SPH comparison). A support whose interior rows have growing modes is refused at
 // method.support_ratio (exit 2) unless stability.allow_growth. The scene's transmitting faces are
 // fixed for RK collocation (the case's notes say when the first reflection reaches a probe). lamb3d
-// refuses reproducing_kernel at method.name (exit 2): the 3-D case is not implemented.
+// refuses reproducing_kernel and spectral_element at method.name (exit 2): the 3-D cases are not
+// implemented.
 //
 // lamb2d runs it by the updated-Lagrangian SPH for solids too (Li's primer; a large-deformation method
 // run at small amplitude, lib/studies/lamb3d/LambSolidCase.hpp): --set method.name=updated_lagrangian_sph
@@ -90,8 +97,13 @@ SceneSchema lambSchema() {
   addVeryWeakSphKeys(schema);
   // RK collocation (lamb2d only; lamb3d refuses it at method.name).
   schema.addChoice("method.name", "reproducing_kernel");
-  schema.add("method.order", T::Integer).withUnit("-").defaultsTo("2").between(2, 3).when("name = reproducing_kernel")
-      .describedAs("RK basis order m (collocation needs second derivatives: m >= 2)");
+  // The spectral-element reference (lamb2d only): method.order is its GLL order N there.
+  schema.addChoice("method.name", "spectral_element");
+  schema.add("method.order", T::Integer).withUnit("-")
+      .defaultsToNote("2 (reproducing_kernel), 4 (spectral_element)").between(1, 8)
+      .when("name = reproducing_kernel or spectral_element")
+      .describedAs("RK basis order m (2 or 3: collocation needs second derivatives), or the spectral elements' GLL "
+                   "order N (1 .. 8; elements N spacings wide)");
   schema.add("method.support_ratio", T::Number).withUnit("-").defaultsTo("2.5").positive()
       .when("name = reproducing_kernel")
       .describedAs("cubic B-spline support radius a / h (from about 2.77 on the 2-D interior rows have growing modes: "
@@ -230,28 +242,43 @@ std::string collocationCaseName(const CollocationSpec& spec, Real dx) {
   return s.str();
 }
 
+// What every plan of a method other than the very weak SPH checks and says (lamb2d only): the
+// dimension, one surface_patch load, no free block (a very weak SPH comparison), and the very weak
+// SPH's and the published / strong cases' keys the scene sets, read (still checked) and ignored
+// with a note. `method` is the method.name, `label` how the messages name it.
+void readOtherMethodPlan(SceneReader& reader, Plan& plan, const std::string& method, const std::string& label) {
+  const Scene& scene = plan.study.scene;
+  if (kDimension != 2)
+    reader.fail("method.name", std::string(kProgram) + " runs very_weak_sph only: " + label + " (" + method +
+                                   ") is implemented for the plane-strain problem, lamb2d");
+  if (scene.loads.size() != 1 || scene.loads[0].type != LoadType::SurfacePatch)
+    reader.fail("load", label + " in " + std::string(kProgram) + " needs exactly one surface_patch load");
+  if (reader.has("study.free_block_lower") || reader.has("study.free_block_upper"))
+    reader.fail(reader.has("study.free_block_lower") ? "study.free_block_lower" : "study.free_block_upper",
+                "the free_block case compares the very weak SPH's transmitting faces; " + label +
+                    " runs none (remove study.free_block_*)");
+  const std::vector<std::string> ignoredMethod = readIgnoredKeys(reader, veryWeakSphOptionKeys(reader.schema()));
+  if (!ignoredMethod.empty())
+    plan.notes.push_back(method + " ignores the very weak SPH's keys the scene sets: " + joined(ignoredMethod));
+  const std::vector<std::string> ignoredStudy = readIgnoredKeys(
+      reader, {"study.compare_published", "study.published_smoothing_rate", "study.strong_smoothing_rate"});
+  if (!ignoredStudy.empty())
+    plan.notes.push_back(method + " runs no published or strong_filter case; ignored: " + joined(ignoredStudy));
+}
+
 // The RK collocation plan (lamb2d, method.name = reproducing_kernel): one case per spacing, the
 // scene's first (with exact.csv).
 void readCollocationPlan(SceneReader& reader, Plan& plan) {
   const Scene& scene = plan.study.scene;
-  if (kDimension != 2)
-    reader.fail("method.name", std::string(kProgram) +
-                                   " runs very_weak_sph only: RK collocation (reproducing_kernel) is implemented "
-                                   "for the plane-strain problem, lamb2d");
+  readOtherMethodPlan(reader, plan, "reproducing_kernel", "RK collocation");
   const CollocationSpec spec = readCollocationSpec(reader, scene.method.name, kProgram);
   const std::vector<std::string> integrators = constrainedIntegratorNames();
   if (std::find(integrators.begin(), integrators.end(), scene.integrator.name) == integrators.end())
     reader.fail("integrator.name", "RK collocation runs central_difference or newmark");
-  if (scene.loads.size() != 1 || scene.loads[0].type != LoadType::SurfacePatch)
-    reader.fail("load", "RK collocation in " + std::string(kProgram) + " needs exactly one surface_patch load");
   for (std::size_t i = 0; i < scene.boundaries.size(); ++i)
     if ((scene.boundaries[i].faceMask & faceBit(scene.loads[0].face)) != 0)
       reader.fail("boundary[" + std::to_string(i) + "].faces",
                   "RK collocation needs the loaded face free: its traction rows carry the load");
-  if (reader.has("study.free_block_lower") || reader.has("study.free_block_upper"))
-    reader.fail(reader.has("study.free_block_lower") ? "study.free_block_lower" : "study.free_block_upper",
-                "the free_block case compares the very weak SPH's transmitting faces; RK collocation runs none "
-                "(remove study.free_block_*)");
   // Growing interior modes grow at every step: refused here, before any work, naming the key.
   const CollocationGrowingModes modes =
       rkPlaneStrainGrowingModes(spec.order, spec.supportRatio, scene.material.material());
@@ -261,17 +288,6 @@ void readCollocationPlan(SceneReader& reader, Plan& plan) {
                                               ", or stability.allow_growth = true runs it on purpose");
     plan.notes.push_back("stability.allow_growth: ran although " + modes.what);
   }
-  // The very weak SPH's keys and the published / strong cases' keys the scene sets: read, ignored.
-  const std::vector<std::string> ignoredMethod = readIgnoredKeys(reader, veryWeakSphOptionKeys(reader.schema()));
-  if (!ignoredMethod.empty())
-    plan.notes.push_back("reproducing_kernel ignores the very weak SPH's keys the scene sets: " +
-                         joined(ignoredMethod));
-  const std::vector<std::string> ignoredStudy = readIgnoredKeys(
-      reader, {"study.compare_published", "study.published_smoothing_rate", "study.strong_smoothing_rate"});
-  if (!ignoredStudy.empty())
-    plan.notes.push_back("reproducing_kernel runs no published or strong_filter case; ignored: " +
-                         joined(ignoredStudy));
-
   const std::vector<GeometrySpec> grids = readGrids(reader, scene.geometry);
   for (std::size_t i = 0; i < grids.size(); ++i) {
     CaseSettings c;
@@ -287,17 +303,7 @@ void readCollocationPlan(SceneReader& reader, Plan& plan) {
 // spacing, the scene's first (with exact.csv).
 void readSolidPlan(SceneReader& reader, Plan& plan) {
   const Scene& scene = plan.study.scene;
-  if (kDimension != 2)
-    reader.fail("method.name", std::string(kProgram) +
-                                   " runs very_weak_sph only: the updated-Lagrangian SPH (updated_lagrangian_sph) is "
-                                   "implemented for the plane-strain problem, lamb2d");
-  if (scene.loads.size() != 1 || scene.loads[0].type != LoadType::SurfacePatch)
-    reader.fail("load", "the updated-Lagrangian SPH in " + std::string(kProgram) +
-                            " needs exactly one surface_patch load");
-  if (reader.has("study.free_block_lower") || reader.has("study.free_block_upper"))
-    reader.fail(reader.has("study.free_block_lower") ? "study.free_block_lower" : "study.free_block_upper",
-                "the free_block case compares the very weak SPH's transmitting faces; the updated-Lagrangian SPH "
-                "runs none (remove study.free_block_*)");
+  readOtherMethodPlan(reader, plan, "updated_lagrangian_sph", "the updated-Lagrangian SPH");
   LambSolidSpec spec = LambSolidSpec::linearDefaults(scene.material.material());
   spec.options.viscosity.alpha = reader.number("method.ul_viscosity_alpha");
   spec.options.viscosity.beta = reader.number("method.ul_viscosity_beta");
@@ -308,15 +314,6 @@ void readSolidPlan(SceneReader& reader, Plan& plan) {
     reader.fail("method.ul_amplitude", "is " + scene::formatNumber(spec.amplitude) +
                                            ": above 0.01 the strains are no longer small and the case no longer "
                                            "answers the linear problem it is scored against");
-  const std::vector<std::string> ignoredMethod = readIgnoredKeys(reader, veryWeakSphOptionKeys(reader.schema()));
-  if (!ignoredMethod.empty())
-    plan.notes.push_back("updated_lagrangian_sph ignores the very weak SPH's keys the scene sets: " +
-                         joined(ignoredMethod));
-  const std::vector<std::string> ignoredStudy = readIgnoredKeys(
-      reader, {"study.compare_published", "study.published_smoothing_rate", "study.strong_smoothing_rate"});
-  if (!ignoredStudy.empty())
-    plan.notes.push_back("updated_lagrangian_sph runs no published or strong_filter case; ignored: " +
-                         joined(ignoredStudy));
   plan.notes.push_back("updated_lagrangian_sph steps by leapfrog at the method's own step criteria (0.3 h / (c_p "
                        "(1 + 1.2 alpha)) and the force criterion, recomputed every step); the scene's "
                        "integrator.name = " + scene.integrator.name + " and its cfl are not used");
@@ -328,6 +325,64 @@ void readSolidPlan(SceneReader& reader, Plan& plan) {
     c.geometry = grids[i];
     c.writeFrames = i == 0;
     c.solid = spec;
+    plan.cases.push_back(c);
+  }
+}
+
+std::string spectralElementCaseName(int order, Real dx) {
+  std::ostringstream s;
+  s << "sem_n" << order << '_' << dx;
+  return s.str();
+}
+
+// Whether `length` is a whole number of `size`.
+bool wholeMultiple(Real length, Real size) {
+  const Real count = length / size;
+  return std::round(count) >= 1 && std::abs(count - std::round(count)) <= 1e-9 * std::max<Real>(1, count);
+}
+
+// The spectral-element plan (lamb2d, method.name = spectral_element): one case per spacing, elements
+// method.order spacings wide, the scene's spacing first (with exact.csv).
+void readSpectralElementPlan(SceneReader& reader, Plan& plan) {
+  const Scene& scene = plan.study.scene;
+  readOtherMethodPlan(reader, plan, "spectral_element", "the spectral-element reference");
+  const int order = static_cast<int>(reader.integer("method.order", 4));
+  if (scene.integrator.kind != IntegratorKind::CentralDifference)
+    reader.fail("integrator.name", "the spectral-element reference runs central_difference (its lumped mass makes "
+                                   "it explicit)");
+  for (std::size_t i = 0; i < scene.boundaries.size(); ++i) {
+    const BoundaryType type = scene.boundaries[i].type;
+    if (type != BoundaryType::Free && type != BoundaryType::Fixed && type != BoundaryType::Transmitting)
+      reader.fail("boundary[" + std::to_string(i) + "].type",
+                  "the spectral-element case runs free, fixed and transmitting faces");
+  }
+  const LoadSpec& load = scene.loads[0];
+  const auto along = static_cast<std::size_t>(1 - faceAxis(load.face));
+  const std::vector<GeometrySpec> grids = readGrids(reader, scene.geometry);
+  for (std::size_t i = 0; i < grids.size(); ++i) {
+    const GeometrySpec& g = grids[i];
+    const std::string key = i == 0 ? "geometry.spacing" : "study.spacings";
+    const Real size = order * g.spacing;
+    for (std::size_t a = 0; a < 2; ++a)
+      if (!wholeMultiple(g.upper[a] - g.lower[a], size))
+        reader.fail(key, "spectral elements of order " + std::to_string(order) + " at spacing " +
+                             scene::formatNumber(g.spacing) + " are " + scene::formatNumber(size) +
+                             " wide, which does not divide the box " + g.describeBox() +
+                             " (choose a spacing or method.order whose product divides it)");
+    // The strip's ends inside elements: the load vector is still exact, but the degree-N trace
+    // cannot follow the load's jump there (said, not refused: the coarsest study case has them).
+    for (const Real end : {load.centre[along] - load.halfWidth[along], load.centre[along] + load.halfWidth[along]})
+      if (end > g.lower[along] && !wholeMultiple(end - g.lower[along], size)) {
+        plan.notes.push_back(spectralElementCaseName(order, g.spacing) + ": the loaded strip's end " +
+                             scene::formatNumber(end) + " falls inside an element " + scene::formatNumber(size) +
+                             " wide (its load vector is integrated exactly on the loaded part of the edge)");
+        break;
+      }
+    CaseSettings c;
+    c.name = spectralElementCaseName(order, g.spacing);
+    c.geometry = g;
+    c.writeFrames = i == 0;
+    c.spectralElementOrder = order;
     plan.cases.push_back(c);
   }
 }
@@ -350,9 +405,14 @@ Plan readPlan(SceneReader& reader) {
     readSolidPlan(reader, plan);
     return plan;
   }
+  if (scene.method.name == "spectral_element") {
+    readSpectralElementPlan(reader, plan);
+    return plan;
+  }
   if (scene.method.name != "very_weak_sph")
     reader.fail("method.name", std::string(kProgram) + " runs the very_weak_sph method" +
-                                   (kDimension == 2 ? ", reproducing_kernel or updated_lagrangian_sph" : ""));
+                                   (kDimension == 2 ? ", reproducing_kernel, updated_lagrangian_sph or spectral_element"
+                                                    : ""));
   const VeryWeakSphSpec main = readVeryWeakSph(reader, scene.material.material());
   const bool comparePublished = reader.boolean("study.compare_published") && main.options.variant != VeryWeakSphVariant::Published;
   const VeryWeakSphSpec published = publishedSpec(main, reader.number("study.published_smoothing_rate"));
@@ -425,20 +485,27 @@ CaseTable<CaseResult> casesTable(const std::vector<ProbeResult>& probes) {
   // operator_nonzeros those of the collocation matrix A. An updated-Lagrangian SPH case says
   // "ul-sph alpha=<a> beta=<b>", fills h and mean_neighbours (of its last evaluation), its
   // stable_step_estimate is the method's step at t = 0 and its dt the mean step; it has no operator.
-  const auto veryWeakOnly = [](R r, TableCell value) { return r.settings.isVeryWeak() ? value : TableCell(); };
+  // A spectral-element case ("sem N=<order>") fills particles (GLL nodes), operator_nonzeros (its one
+  // element matrix), the Gershgorin step and the energy ledger.
+  const auto veryWeakOnly = [](R r, TableCell value) { return r.settings.isVeryWeakSph() ? value : TableCell(); };
   const auto notSolid = [](R r, TableCell value) { return r.settings.isSolid() ? TableCell() : value; };
+  const auto withLedger = [](R r, TableCell value) {
+    return r.settings.isVeryWeakSph() || r.settings.isSpectralElement() ? value : TableCell();
+  };
   t.column("case", [](R r) { return r.settings.name; }, TerminalColumn("case", 16).left())
       .column("variant", [](R r) { return r.settings.methodLabel(); })
       .column("smoothing_rate [1/s]", [veryWeakOnly](R r) { return veryWeakOnly(r, r.settings.method.smoothingRate); })
       .column("spacing [m]", [](R r) { return r.settings.geometry.spacing; }, TerminalColumn("dx", 8))
-      .column("h [m]", [](R r) { return r.settings.isCollocation() ? TableCell() : TableCell(r.smoothingLength); })
+      .column("h [m]", [](R r) {
+        return r.settings.isVeryWeakSph() || r.settings.isSolid() ? TableCell(r.smoothingLength) : TableCell();
+      })
       .column("particles", [](R r) { return r.record.particles; }, TerminalColumn("particles", 10))
       .column("ghosts", [veryWeakOnly](R r) { return veryWeakOnly(r, r.ghosts); })
       .column("mean_neighbours", [](R r) { return r.meanNeighbours; })
       .column("operator_nonzeros", [notSolid](R r) { return notSolid(r, r.operatorNonZeros); })
       .column("operator [MiB]", [veryWeakOnly](R r) { return veryWeakOnly(r, r.operatorMiB); })
       .column("stable_step_estimate [s]", [](R r) { return r.record.stableTimeStep; })
-      .column("stable_step_gershgorin [s]", [veryWeakOnly](R r) { return veryWeakOnly(r, r.stableStepGershgorin); })
+      .column("stable_step_gershgorin [s]", [withLedger](R r) { return withLedger(r, r.stableStepGershgorin); })
       .column("dt [s]", [](R r) { return r.record.timeStep; }, TerminalColumn("dt", 9))
       .column("steps", [](R r) { return r.record.steps; }, TerminalColumn("steps", 7))
       .column("assembly [s]", [](R r) { return r.record.setupSeconds; })
@@ -450,8 +517,8 @@ CaseTable<CaseResult> casesTable(const std::vector<ProbeResult>& probes) {
       .column("peak_memory_bytes_per_particle",
               [](R r) { return r.record.peakMemoryMiB * 1048576.0 / static_cast<Real>(r.record.particles); })
       .column("particle_steps_per_second", [](R r) { return r.record.particleStepsPerSecond(); })
-      .column("energy_final_fraction", [veryWeakOnly](R r) { return veryWeakOnly(r, r.energyFinalFraction); })
-      .column("energy_balance_drift", [veryWeakOnly](R r) { return veryWeakOnly(r, r.energyBalanceDrift); });
+      .column("energy_final_fraction", [withLedger](R r) { return withLedger(r, r.energyFinalFraction); })
+      .column("energy_balance_drift", [withLedger](R r) { return withLedger(r, r.energyBalanceDrift); });
   for (std::size_t k = 0; k < probes.size(); ++k)
     for (const bool reported : {false, true}) {
       const std::string stem = probes[k].name + (reported ? "_reported" : "_raw");
@@ -489,7 +556,7 @@ int main(int argc, char** argv) {
                         kDimension == 3
                             ? "lamb3d: the Ding-Long-Wu 3-D Lamb problem by very weak form SPH, against the exact response"
                             : "lamb2d: the plane-strain Lamb problem (a strip load) by very weak form SPH, RK "
-                              "collocation or updated-Lagrangian SPH, against the exact response",
+                              "collocation, updated-Lagrangian SPH or spectral elements, against the exact response",
                         schema.describe());
   if (const auto exit = cli.parse(argc, argv)) return *exit;
 
@@ -522,7 +589,7 @@ int main(int argc, char** argv) {
         if (!p.hasExact) continue;
         const std::string stem = r.settings.name + "_" + p.name;
         summary.errors.push_back({stem + "_relative_l2", p.reported.relativeL2});
-        if (r.settings.isVeryWeak() && r.settings.method.deconvolution)
+        if (r.settings.isVeryWeakSph() && r.settings.method.deconvolution)
           summary.errors.push_back({stem + "_relative_l2_raw", p.raw.relativeL2});
         summary.errors.push_back({stem + "_peak_error", p.reported.peakError});
         summary.errors.push_back({stem + "_arrival_error [s]", p.reported.arrivalError});
@@ -531,7 +598,7 @@ int main(int argc, char** argv) {
     for (const CaseResult& r : results) {
       summary.figures.push_back({r.settings.name + "_stable_step_estimate", r.record.stableTimeStep});
       summary.figures.push_back({r.settings.name + "_particle_steps_per_second", r.record.particleStepsPerSecond()});
-      if (!r.settings.isVeryWeak()) continue;  // no energy ledger
+      if (r.settings.isCollocation() || r.settings.isSolid()) continue;  // no energy ledger
       summary.figures.push_back({r.settings.name + "_energy_final_fraction", r.energyFinalFraction});
       summary.figures.push_back({r.settings.name + "_energy_balance_drift", r.energyBalanceDrift});
     }

@@ -1,5 +1,7 @@
 #include "study/CollocationSpec.hpp"
 
+#include <string>
+
 #include "analysis/InteriorStability.hpp"
 #include "analysis/MethodLatticeStencils.hpp"
 #include "methods/collocation/RadialBasisShapeFunctions.hpp"
@@ -21,7 +23,12 @@ std::string CollocationSpec::describe() const {
 CollocationSpec readCollocationSpec(SceneReader& reader, const std::string& methodName, const std::string& program) {
   CollocationSpec spec;
   if (methodName == "reproducing_kernel") {
-    spec.order = static_cast<int>(reader.integer("method.order"));
+    // The fallback 2 is every schema's default; a schema that shares method.order with another
+    // method (lamb2d: the spectral elements' N) registers a wider range, so the RK range is checked here.
+    spec.order = static_cast<int>(reader.integer("method.order", 2));
+    if (spec.order < 2 || spec.order > 3)
+      reader.fail("method.order", "RK collocation needs basis order m = 2 or 3 (second derivatives), got " +
+                                      std::to_string(spec.order));
     spec.supportRatio = reader.number("method.support_ratio");
   } else if (methodName == "radial_basis") {
     spec.kind = CollocationShapeKind::RadialBasis;

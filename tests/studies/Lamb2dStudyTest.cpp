@@ -6,7 +6,9 @@
 // The same scene by RK collocation (method.name = reproducing_kernel) converges at every receiver;
 // a support with growing modes, the free block and RK collocation in 3-D are refused. The
 // updated-Lagrangian SPH (method.name = updated_lagrangian_sph, at small amplitude) runs it too, its
-// errors falling from dx = 0.5 to 0.25; lamb3d refuses it.
+// errors falling from dx = 0.5 to 0.25; lamb3d refuses it. So does the spectral-element reference
+// (method.name = spectral_element); elements that do not divide the box and spectral elements in 3-D
+// are refused.
 #include "support/StudyRun.hpp"
 
 #include <gtest/gtest.h>
@@ -219,4 +221,61 @@ TEST(Lamb2dStudy, Lamb3dRefusesTheUpdatedLagrangianSphNamingTheKey) {
   EXPECT_EQ(run.exitCode, 2) << run.log;
   EXPECT_NE(run.log.find("method.name"), std::string::npos) << run.log;
   EXPECT_NE(run.log.find("lamb2d"), std::string::npos) << run.log;
+}
+
+// The spectral-element reference on the same scene (method.name = spectral_element, N = 4, elements
+// of 4 spacings): the errors at each receiver (measured, deterministic), the surface receiver well
+// below the very weak SPH's at 0.125 (0.061), the energy ledger's figures and the case's label.
+TEST(Lamb2dStudy, SpectralElementsRunTheSameSceneAsTheReference) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-lamb2d-sem";
+  fs::remove_all(out);
+  const auto run = runLamb2d("--set method.name=spectral_element --set 'study.spacings=[0.25,0.125]' "
+                             "--set output.vtk=false --out " + out.string(),
+                             "sem");
+  ASSERT_TRUE(run.exited);
+  ASSERT_EQ(run.exitCode, 0) << run.log;
+  for (const char* file : {"cases.csv", "exact.csv", "sem_n4_0.25-probes.csv", "sem_n4_0.125-probes.csv"})
+    EXPECT_TRUE(fs::exists(out / file)) << file;
+  EXPECT_TRUE(mfwave::testing::summaryDisagreements(out).empty());
+  const auto e = summaryNumbers(out / "summary.json", "errors");
+  // Measured (docs/studies/lamb2d.md).
+  EXPECT_NEAR(e.at("sem_n4_0.25_centre_relative_l2"), 0.146, 0.004);
+  EXPECT_NEAR(e.at("sem_n4_0.25_receiver_relative_l2"), 0.0834, 0.003);
+  EXPECT_NEAR(e.at("sem_n4_0.25_buried_relative_l2"), 0.117, 0.004);
+  EXPECT_NEAR(e.at("sem_n4_0.125_centre_relative_l2"), 0.0851, 0.003);
+  EXPECT_NEAR(e.at("sem_n4_0.125_receiver_relative_l2"), 0.0201, 0.001);
+  EXPECT_NEAR(e.at("sem_n4_0.125_buried_relative_l2"), 0.104, 0.004);
+  EXPECT_LT(e.at("sem_n4_0.125_receiver_relative_l2"), 0.5 * 0.061);
+  const auto f = summaryNumbers(out / "summary.json", "figures");
+  EXPECT_NEAR(f.at("sem_n4_0.125_stable_step_estimate") / f.at("sem_n4_0.25_stable_step_estimate"), 0.5, 0.01);
+  EXPECT_LT(f.at("sem_n4_0.125_energy_final_fraction"), 1.0);
+  std::ifstream cases(out / "cases.csv");
+  std::string header, first;
+  std::getline(cases, header);
+  std::getline(cases, first);
+  EXPECT_EQ(first.rfind("sem_n4_0.25,sem N=4,,0.25,,2145,,", 0), 0u) << first;
+  const std::string summary = [&] {
+    std::ifstream in(out / "summary.json");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }();
+  EXPECT_NE(summary.find("spectral_element ignores the very weak SPH's keys the scene sets: method.variant"),
+            std::string::npos);
+  EXPECT_NE(summary.find("falls inside an element"), std::string::npos);  // the strip's ends at dx = 0.25
+}
+
+TEST(Lamb2dStudy, SpectralElementsRefuseElementsThatDoNotDivideTheBoxAndLamb3d) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-lamb2d-sem-refused";
+  const auto odd = runLamb2d("--set method.name=spectral_element --set method.order=3 --set geometry.spacing=0.5 "
+                             "--set 'study.spacings=[0.5]' --out " + out.string(),
+                             "sem-odd");
+  ASSERT_TRUE(odd.exited);
+  EXPECT_EQ(odd.exitCode, 2) << odd.log;
+  EXPECT_NE(odd.log.find("geometry.spacing"), std::string::npos) << odd.log;
+  const auto three = runStudy(LAMB3D_EXECUTABLE, std::string(SCENES_FOLDER) + "/lamb3d.toml",
+                              "--set method.name=spectral_element --out " + out.string(), "lamb3d-sem");
+  ASSERT_TRUE(three.exited);
+  EXPECT_EQ(three.exitCode, 2) << three.log;
+  EXPECT_NE(three.log.find("method.name"), std::string::npos) << three.log;
 }

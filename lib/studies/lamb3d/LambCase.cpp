@@ -2,6 +2,7 @@
 #include "LambCollocationCase.hpp"
 #include "LambProbeScores.hpp"
 #include "LambSolidCase.hpp"
+#include "LambSpectralElementCase.hpp"
 
 #include "analysis/StableTimeStep.hpp"
 #include "core/Error.hpp"
@@ -25,6 +26,7 @@
 #include <cmath>
 #include <memory>
 #include <sstream>
+#include <string>
 
 namespace mfwave::lamb3d {
 
@@ -151,6 +153,7 @@ CaseResult runCaseIn(const StudySettings& study, const CaseSettings& settings, c
 }  // namespace
 
 std::string CaseSettings::methodLabel() const {
+  if (spectralElementOrder) return "sem N=" + std::to_string(*spectralElementOrder);
   std::ostringstream label;
   if (solid) {
     label << "ul-sph alpha=" << solid->options.viscosity.alpha << " beta=" << solid->options.viscosity.beta
@@ -166,6 +169,7 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
                    bool progress) {
   if (settings.isCollocation()) return runCollocationCase(study, settings, folder, progress);
   if (settings.isSolid()) return runSolidCase(study, settings, folder, progress);
+  if (settings.isSpectralElement()) return runSpectralElementCase(study, settings, folder, progress);
   if (study.scene.info.dimension == 2) return runCaseIn<2>(study, settings, folder, progress);
   if (study.scene.info.dimension == 3) return runCaseIn<3>(study, settings, folder, progress);
   throw InputError("scene.dimension", "the Lamb study runs 2-D and 3-D scenes");

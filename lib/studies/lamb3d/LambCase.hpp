@@ -33,12 +33,16 @@ struct CaseSettings {
   std::optional<CollocationSpec> collocation;
   // Set: the case runs the updated-Lagrangian SPH for solids (`method` is then not used).
   std::optional<LambSolidSpec> solid;
+  // Set: the case runs the spectral-element method of this order N (LambSpectralElementCase.hpp)
+  // with elements N spacings wide (`method` is then not used).
+  std::optional<int> spectralElementOrder;
 
   bool isCollocation() const { return collocation.has_value(); }
   bool isSolid() const { return solid.has_value(); }
-  bool isVeryWeak() const { return !isCollocation() && !isSolid(); }
-  // The method of the cases table: the very weak SPH's variant ("galerkin"), "rk m=2 a/h=2.5" or
-  // "ul-sph alpha=0 beta=0".
+  bool isSpectralElement() const { return spectralElementOrder.has_value(); }
+  bool isVeryWeakSph() const { return !isCollocation() && !isSolid() && !isSpectralElement(); }
+  // The method of the cases table: the very weak SPH's variant ("galerkin"), "rk m=2 a/h=2.5",
+  // "ul-sph alpha=1 beta=0 kgc" or "sem N=4".
   std::string methodLabel() const;
 };
 
@@ -83,7 +87,7 @@ struct StudySettings {
 // Runs one case and writes "<folder>/<case>-probes.csv" (time, then raw, reported and exact
 // columns per probe) and, if asked, frames "<case>_NNNNNN.vtp" with "<case>.pvd". A collocation case
 // runs runCollocationCase (LambCollocationCase.hpp), an updated-Lagrangian SPH case runSolidCase
-// (LambSolidCase.hpp).
+// (LambSolidCase.hpp), a spectral-element case runSpectralElementCase (LambSpectralElementCase.hpp).
 CaseResult runCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
                    bool progress);
 
