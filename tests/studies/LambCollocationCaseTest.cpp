@@ -5,9 +5,8 @@
 // window, or inside it when the window is longer) and the files; a 3-D scene is refused.
 
 #include "core/Error.hpp"
-#include "io/scene/LoadScene.hpp"
+#include "LambCaseScene.hpp"
 #include "studies/lamb3d/LambCollocationCase.hpp"
-#include "study/VeryWeakSphSpec.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,22 +18,8 @@ namespace mfwave::lamb3d {
 namespace {
 
 namespace fs = std::filesystem;
-
-StudySettings lamb2dStudy(const std::vector<std::string>& overrides, Real errorWindow) {
-  SceneSchema schema = SceneSchema::common();
-  addVeryWeakSphKeys(schema);
-  schema.add("study", ValueType::Table);
-  for (const char* key : {"study.spacings", "study.free_block_lower", "study.free_block_upper"})
-    schema.add(key, ValueType::NumberArray);
-  for (const char* key : {"study.error_window", "study.published_smoothing_rate", "study.strong_smoothing_rate"})
-    schema.add(key, ValueType::Number);
-  schema.add("study.compare_published", ValueType::Boolean);
-  SceneReader reader = loadScene(std::string(SCENES_FOLDER) + "/lamb2d.toml", overrides, schema);
-  StudySettings study;
-  study.scene = readScene(reader);
-  study.errorWindow = errorWindow;
-  return study;
-}
+using testing::anyNoteHas;
+using testing::lamb2dCaseStudy;
 
 CaseSettings rkCase(const Scene& scene) {
   CaseSettings c;
@@ -48,14 +33,8 @@ CaseSettings rkCase(const Scene& scene) {
   return c;
 }
 
-bool anyNoteHas(const std::vector<std::string>& notes, const std::string& text) {
-  for (const std::string& n : notes)
-    if (n.find(text) != std::string::npos) return true;
-  return false;
-}
-
 TEST(LambCollocationCase, RunsThePlaneStrainLambProblemAndScoresEveryProbe) {
-  const StudySettings study = lamb2dStudy({"geometry.spacing=0.5"}, 6.0);
+  const StudySettings study = lamb2dCaseStudy({"geometry.spacing=0.5"}, 6.0);
   const fs::path folder = fs::temp_directory_path() / "mfwave-lamb-collocation-case";
   fs::remove_all(folder);
   fs::create_directories(folder);
@@ -87,7 +66,7 @@ TEST(LambCollocationCase, RunsThePlaneStrainLambProblemAndScoresEveryProbe) {
 }
 
 TEST(LambCollocationCase, SaysWhenTheFixedFacesReflectIntoTheErrorWindowAndRefuses3d) {
-  const StudySettings study = lamb2dStudy({"geometry.spacing=0.5", "integrator.end_time=8.0"}, 8.0);
+  const StudySettings study = lamb2dCaseStudy({"geometry.spacing=0.5", "integrator.end_time=8.0"}, 8.0);
   const fs::path folder = fs::temp_directory_path() / "mfwave-lamb-collocation-window";
   fs::create_directories(folder);
   const CaseResult r = runCollocationCase(study, rkCase(study.scene), folder.string(), false);

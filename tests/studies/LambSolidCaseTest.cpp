@@ -6,9 +6,8 @@
 // scene is refused.
 
 #include "core/Error.hpp"
-#include "io/scene/LoadScene.hpp"
+#include "LambCaseScene.hpp"
 #include "studies/lamb3d/LambSolidCase.hpp"
-#include "study/VeryWeakSphSpec.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,22 +19,8 @@ namespace mfwave::lamb3d {
 namespace {
 
 namespace fs = std::filesystem;
-
-StudySettings lamb2dSolidStudy(const std::vector<std::string>& overrides, Real errorWindow) {
-  SceneSchema schema = SceneSchema::common();
-  addVeryWeakSphKeys(schema);
-  schema.add("study", ValueType::Table);
-  for (const char* key : {"study.spacings", "study.free_block_lower", "study.free_block_upper"})
-    schema.add(key, ValueType::NumberArray);
-  for (const char* key : {"study.error_window", "study.published_smoothing_rate", "study.strong_smoothing_rate"})
-    schema.add(key, ValueType::Number);
-  schema.add("study.compare_published", ValueType::Boolean);
-  SceneReader reader = loadScene(std::string(SCENES_FOLDER) + "/lamb2d.toml", overrides, schema);
-  StudySettings study;
-  study.scene = readScene(reader);
-  study.errorWindow = errorWindow;
-  return study;
-}
+using testing::anyNoteHas;
+using testing::lamb2dCaseStudy;
 
 CaseSettings solidCase(const Scene& scene) {
   CaseSettings c;
@@ -46,14 +31,8 @@ CaseSettings solidCase(const Scene& scene) {
   return c;
 }
 
-bool anySolidNoteHas(const std::vector<std::string>& notes, const std::string& text) {
-  for (const std::string& n : notes)
-    if (n.find(text) != std::string::npos) return true;
-  return false;
-}
-
 TEST(LambSolidCase, TheStripsTotalForceIsItsWidthTimesTheLoad) {
-  const StudySettings study = lamb2dSolidStudy({"geometry.spacing=0.5"}, 6.0);
+  const StudySettings study = lamb2dCaseStudy({"geometry.spacing=0.5"}, 6.0);
   const Scene& scene = study.scene;
   const ParticleSet<2> particles = lambSolidParticles(scene.geometry, true);
   ASSERT_EQ(particles.size(), 33 * 17);  // no ghosts
@@ -89,7 +68,7 @@ TEST(LambSolidCase, TheStripsTotalForceIsItsWidthTimesTheLoad) {
 }
 
 TEST(LambSolidCase, RunsThePlaneStrainLambProblemAtSmallAmplitudeAndScoresEveryProbe) {
-  const StudySettings study = lamb2dSolidStudy({"geometry.spacing=0.5"}, 6.0);
+  const StudySettings study = lamb2dCaseStudy({"geometry.spacing=0.5"}, 6.0);
   const fs::path folder = fs::temp_directory_path() / "mfwave-lamb-solid-case";
   fs::remove_all(folder);
   fs::create_directories(folder);
@@ -111,12 +90,12 @@ TEST(LambSolidCase, RunsThePlaneStrainLambProblemAtSmallAmplitudeAndScoresEveryP
   EXPECT_NEAR(r.probes[1].reported.relativeL2, 0.8627, 0.02);  // receiver
   EXPECT_NEAR(r.probes[2].reported.relativeL2, 0.6706, 0.015);  // buried
   EXPECT_EQ(r.record.primaryError, "largest_relative_l2");
-  EXPECT_TRUE(anySolidNoteHas(r.notes, "small amplitude: the traction is 0.0001 times the scene's"));
-  EXPECT_TRUE(anySolidNoteHas(r.notes, "acts on 3 particles of the loaded face with a total length 1 "));
+  EXPECT_TRUE(anyNoteHas(r.notes, "small amplitude: the traction is 0.0001 times the scene's"));
+  EXPECT_TRUE(anyNoteHas(r.notes, "acts on 3 particles of the loaded face with a total length 1 "));
   EXPECT_TRUE(
-      anySolidNoteHas(r.notes, "reaches a probe at t = 7.79 (13.5 / c_p from the load's patch via the +x face"));
-  EXPECT_TRUE(anySolidNoteHas(r.notes, "after the error window 6"));
-  EXPECT_TRUE(anySolidNoteHas(r.notes, "artificial viscosity alpha = 1, beta = 0"));
+      anyNoteHas(r.notes, "reaches a probe at t = 7.79 (13.5 / c_p from the load's patch via the +x face"));
+  EXPECT_TRUE(anyNoteHas(r.notes, "after the error window 6"));
+  EXPECT_TRUE(anyNoteHas(r.notes, "artificial viscosity alpha = 1, beta = 0"));
   EXPECT_EQ(r.files, (std::vector<std::string>{"exact.csv", "ulsph_0.5-probes.csv"}));
   for (const std::string& file : r.files) EXPECT_TRUE(fs::exists(folder / file)) << file;
   fs::remove_all(folder);

@@ -6,9 +6,8 @@
 // (docs/studies/lamb2d.md), not the element's accuracy.
 
 #include "core/Error.hpp"
-#include "io/scene/LoadScene.hpp"
+#include "LambCaseScene.hpp"
 #include "studies/lamb3d/LambSpectralElementCase.hpp"
-#include "study/VeryWeakSphSpec.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,22 +19,8 @@ namespace mfwave::lamb3d {
 namespace {
 
 namespace fs = std::filesystem;
-
-StudySettings lamb2dStudy(const std::vector<std::string>& overrides) {
-  SceneSchema schema = SceneSchema::common();
-  addVeryWeakSphKeys(schema);
-  schema.add("study", ValueType::Table);
-  for (const char* key : {"study.spacings", "study.free_block_lower", "study.free_block_upper"})
-    schema.add(key, ValueType::NumberArray);
-  for (const char* key : {"study.error_window", "study.published_smoothing_rate", "study.strong_smoothing_rate"})
-    schema.add(key, ValueType::Number);
-  schema.add("study.compare_published", ValueType::Boolean);
-  SceneReader reader = loadScene(std::string(SCENES_FOLDER) + "/lamb2d.toml", overrides, schema);
-  StudySettings study;
-  study.scene = readScene(reader);
-  study.errorWindow = 6.0;
-  return study;
-}
+using testing::anyNoteHas;
+using testing::lamb2dCaseStudy;
 
 CaseSettings semCase(const Scene& scene, int order) {
   CaseSettings c;
@@ -53,7 +38,7 @@ fs::path freshFolder(const std::string& name) {
 }
 
 TEST(LambSpectralElementCase, RunsThePlaneStrainLambProblemAndScoresEveryProbe) {
-  const StudySettings study = lamb2dStudy({"geometry.spacing=0.25"});
+  const StudySettings study = lamb2dCaseStudy({"geometry.spacing=0.25"});
   const fs::path folder = freshFolder("mfwave-lamb-sem-case");
   const CaseResult r = runSpectralElementCase(study, semCase(study.scene, 4), folder.string(), false);
   EXPECT_EQ(r.record.particles, 65 * 33);  // 16 x 8 elements of order 4
@@ -78,7 +63,7 @@ TEST(LambSpectralElementCase, RunsThePlaneStrainLambProblemAndScoresEveryProbe) 
 }
 
 TEST(LambSpectralElementCase, RefusesASpacingWhoseElementsDoNotDivideTheBox) {
-  const StudySettings study = lamb2dStudy({"geometry.spacing=0.5"});
+  const StudySettings study = lamb2dCaseStudy({"geometry.spacing=0.5"});
   const fs::path folder = freshFolder("mfwave-lamb-sem-case-bad");
   try {
     runSpectralElementCase(study, semCase(study.scene, 3), folder.string(), false);  // 1.5 does not divide 16

@@ -1,17 +1,16 @@
 #include "LambCase.hpp"
+#include "LambCaseLoop.hpp"
 #include "LambCollocationCase.hpp"
 #include "LambProbeScores.hpp"
 #include "LambSolidCase.hpp"
 #include "LambSpectralElementCase.hpp"
 
-#include "analysis/StableTimeStep.hpp"
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
 #include "integrators/IntegratorFactory.hpp"
 #include "io/run/ProgressReporter.hpp"
 #include "io/scene/BuildParticles.hpp"
 #include "io/scene/Faces.hpp"
-#include "io/scene/StepLimitCheck.hpp"
 #include "io/vtk/FrameOutputs.hpp"
 #include "io/vtk/PngFrameRenderer.hpp"
 #include "io/vtk/VtkFrameWriter.hpp"
@@ -57,22 +56,8 @@ CaseResult runCaseIn(const StudySettings& study, const CaseSettings& settings, c
   result.operatorNonZeros = problem.storedStiffnessEntries();
   result.operatorMiB = problem.operatorMiB();
 
-  // time step: a fraction of the operator's stable central-difference step
-  const StableTimeStep stable = centralDifferenceStableStep(system, 1e-6, 5000);
-  record.stableTimeStep = stable.estimate();
-  result.stableStepGershgorin = stable.safe();
-  const Real stableStep = stable.usable();
-  if (!stable.converged)
-    result.notes.push_back(settings.name + ": power iteration did not converge; the Gershgorin step is used");
-  const Real dt = scene.integrator.timeStepFor(stableStep);
-  record.timeStep = dt;
-  record.simulatedTime = scene.integrator.endTime;
-  // The step against the integrator's own limit before any work (exit 2 above it).
-  const StepLimitCheck check =
-      checkStepLimit(scene.integrator, scene.stability, 2 / stableStep, dt, stableStep,
-                     stable.converged ? "a power iteration on the assembled operator" : "the Gershgorin bound",
-                     "in case " + settings.name);
-  if (!check.note.empty()) result.notes.push_back(check.note);
+  // time step: a fraction of the operator's stable central-difference step (exit 2 above the limit)
+  const Real dt = chooseLambTimeStep(system, scene, "the assembled operator", result);
 
   // the energy ledger, which also stops growth after the loads (LinearEnergyLedger)
   const Scene caseScene = [&] {
@@ -80,19 +65,11 @@ CaseResult runCaseIn(const StudySettings& study, const CaseSettings& settings, c
     if (settings.freeFaces) s.boundaries.clear();
     return s;
   }();
-  LinearEnergyLedgerOptions ledgerOptions;
-  ledgerOptions.quietAfter = loadsQuietAfter(caseScene);
-  // Half the slowest shear period of the block, 4 L / c_s, bounds the envelope's window.
-  Real side = 0;
-  for (std::size_t a = 0; a < D; ++a) side = std::max(side, settings.geometry.upper[a] - settings.geometry.lower[a]);
-  ledgerOptions.envelopeWindow = 2 * side / spec.options.material.sWaveSpeed();
-  ledgerOptions.growthFactor = scene.stability.energyGrowthFactor;
   // Prescribed displacements do work through reactions the ledger does not see.
   const bool movingFaces = facesWith(caseScene.boundaries, BoundaryType::Displacement) != 0;
-  ledgerOptions.balanceLimit = movingFaces ? 0 : scene.stability.energyBalanceLimit;
-  ledgerOptions.components = D;
-  ledgerOptions.likelyCause = veryWeakSphGrowthCause(spec.options.variant);
-  ledgerOptions.stop = !scene.stability.allowGrowth;
+  const LinearEnergyLedgerOptions ledgerOptions =
+      lambLedgerOptions(caseScene, settings.geometry, D, spec.options.material, movingFaces,
+                        veryWeakSphGrowthCause(spec.options.variant));
   LinearEnergyLedger ledger(system, ledgerOptions);
 
   // integrator: central differences with the smoothing (eq. 33) as its velocity filter and eq. (30)
@@ -122,26 +99,7 @@ CaseResult runCaseIn(const StudySettings& study, const CaseSettings& settings, c
   loop.add(reporter);
   loop.add(recorder, scene.output.probeEvery);
   frames.attachTo(loop, scene.output.every);
-  const std::string energyFile = settings.name + "-energy.csv";
-  RunStatistics stats;
-  try {
-    stats = loop.run(*integrator, scene.integrator.endTime);
-  } catch (const InstabilityError&) {
-    // What was recorded up to the stop stays readable: the probes (without the exact columns) and
-    // the energy ledger.
-    recorder.writeCsv(folder + "/" + settings.name + "-probes.csv", std::vector<std::vector<Real>>(probes.size()));
-    if (scene.output.energy) ledger.series().writeCsv(folder + "/" + energyFile);
-    throw;
-  }
-  result.recordLoop(stats);
-  result.energyFinalFraction = ledger.finalEnergyFraction();
-  result.energyBalanceDrift = ledger.largestBalanceDrift();
-  result.energyGrowth = ledger.growthMessage();
-  noteAllowedGrowth(result.notes, settings.name, {result.energyGrowth, monitor.growthMessage()});
-  if (scene.output.energy) {
-    ledger.series().writeCsv(folder + "/" + energyFile);
-    result.files.push_back(energyFile);
-  }
+  runLambLoopWithLedger(loop, *integrator, scene, recorder, ledger, monitor, folder, result);
 
   // errors against the exact half-space response, the probes' CSV and the figure case's exact.csv
   scoreLambProbes<D>(study, settings, particles, recorder, &problem.kernel(), folder, result);

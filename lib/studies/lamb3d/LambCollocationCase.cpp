@@ -180,17 +180,10 @@ CaseResult runCollocationCase(const StudySettings& study, const CaseSettings& se
   // What the case leaves out, and where its fixed faces start to matter.
   const unsigned fixedFaces = allFaces(2) & ~faceBit(load.face);
   const FirstReflection reflection = firstReflection(scene, particles, probes, fixedFaces);
-  std::ostringstream faces;
-  faces << std::setprecision(3) << settings.name
-        << ": RK collocation fixes (u = 0) every face but the loaded one, where the scene's [[boundary]] asks "
-           "otherwise (transmitting faces included): the first P wave they reflect reaches a probe at t = "
-        << reflection.time << " (" << reflection.path << ")"
-        << (reflection.time > study.errorWindow
-                ? ", after the error window " + scene::formatNumber(study.errorWindow) +
-                      ", so the errors do not see the difference; later samples do"
-                : ", INSIDE the error window " + scene::formatNumber(study.errorWindow) +
-                      ": the errors include reflections the scene's faces would not make");
-  result.notes.push_back(faces.str());
+  result.notes.push_back(reflectionNote(settings.name,
+                                       "RK collocation fixes (u = 0) every face but the loaded one, where the scene's "
+                                       "[[boundary]] asks otherwise (transmitting faces included)",
+                                       reflection, study.errorWindow));
   result.notes.push_back(settings.name + ": " + std::to_string(tractionRows) + " traction rows on the loaded face, " +
                          std::to_string(system.boundaryRows().size() / 2 - static_cast<std::size_t>(tractionRows)) +
                          " displacement rows; no energy ledger and no frames for RK collocation");

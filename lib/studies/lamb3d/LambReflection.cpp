@@ -1,5 +1,6 @@
 #include "studies/lamb3d/LambReflection.hpp"
 
+#include "io/scene/Format.hpp"
 #include "particles/BoxFace.hpp"
 
 #include <algorithm>
@@ -41,6 +42,19 @@ FirstReflection firstReflection(const Scene& scene, const ParticleSet<2>& partic
     }
   }
   return first;
+}
+
+std::string reflectionNote(const std::string& caseName, const std::string& what, const FirstReflection& reflection,
+                           Real errorWindow) {
+  std::ostringstream note;
+  note << std::setprecision(3) << caseName << ": " << what
+       << ": the first P wave they reflect reaches a probe at t = " << reflection.time << " (" << reflection.path << ")"
+       << (reflection.time > errorWindow
+               ? ", after the error window " + scene::formatNumber(errorWindow) +
+                     ", so the errors do not see the difference; later samples do"
+               : ", INSIDE the error window " + scene::formatNumber(errorWindow) +
+                     ": the errors include reflections the scene's faces would not make");
+  return note.str();
 }
 
 }  // namespace mfwave::lamb3d

@@ -25,4 +25,10 @@ struct FirstReflection {
 FirstReflection firstReflection(const Scene& scene, const ParticleSet<2>& particles, const std::vector<Probe>& probes,
                                 unsigned faces);
 
+// The case's note on the faces that stand in for the scene's: "<case>: <what>: the first P wave they
+// reflect reaches a probe at t = <time> (<path>), after the error window <w>, so the errors do not
+// see the difference; later samples do" (or that it arrives INSIDE the window, and what that means).
+std::string reflectionNote(const std::string& caseName, const std::string& what, const FirstReflection& reflection,
+                           Real errorWindow);
+
 }  // namespace mfwave::lamb3d

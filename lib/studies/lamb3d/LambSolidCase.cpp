@@ -185,18 +185,12 @@ CaseResult runSolidCase(const StudySettings& study, const CaseSettings& settings
         << "; the end particles carry the half of their segment inside it)";
   result.notes.push_back(force.str());
   const FirstReflection reflection = firstReflection(scene, physical, probes, allFaces(D) & ~faceBit(load.face));
-  std::ostringstream faces;
-  faces << std::setprecision(3) << settings.name
-        << ": the updated-Lagrangian SPH leaves every face free (no dashpot), where the scene's [[boundary]] asks "
-           "otherwise (transmitting faces included): the first P wave they reflect reaches a probe at t = "
-        << reflection.time << " (" << reflection.path << ")"
-        << (reflection.time > study.errorWindow
-                ? ", after the error window " + scene::formatNumber(study.errorWindow) +
-                      ", so the errors do not see the difference; later samples do"
-                : ", INSIDE the error window " + scene::formatNumber(study.errorWindow) +
-                      ": the errors include reflections the scene's faces would not make")
-        << "; the free body drifts with the load's net impulse once the waves reach its faces";
-  result.notes.push_back(faces.str());
+  result.notes.push_back(
+      reflectionNote(settings.name,
+                     "the updated-Lagrangian SPH leaves every face free (no dashpot), where the scene's [[boundary]] "
+                     "asks otherwise (transmitting faces included)",
+                     reflection, study.errorWindow) +
+      "; the free body drifts with the load's net impulse once the waves reach its faces");
 
   RunStatistics stats;
   try {

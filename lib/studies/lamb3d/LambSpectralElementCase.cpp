@@ -1,19 +1,18 @@
 #include "studies/lamb3d/LambSpectralElementCase.hpp"
 
-#include "analysis/StableTimeStep.hpp"
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
 #include "integrators/IntegratorFactory.hpp"
 #include "io/run/ProgressReporter.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/scene/Format.hpp"
-#include "io/scene/StepLimitCheck.hpp"
 #include "methods/spectral_element/SpectralElementElasticity.hpp"
 #include "observers/LinearEnergyLedger.hpp"
 #include "observers/ReportedProbes.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
 #include "particles/BoxFace.hpp"
+#include "studies/lamb3d/LambCaseLoop.hpp"
 #include "studies/lamb3d/LambProbeScores.hpp"
 
 #include <algorithm>
@@ -127,34 +126,13 @@ CaseResult runSpectralElementCase(const StudySettings& study, const CaseSettings
   result.meanNeighbours = 0;
   result.operatorNonZeros = system.elementStiffness().size();  // the one element matrix, all that is stored
 
-  // time step: a fraction of the operator's stable central-difference step
-  const StableTimeStep stable = centralDifferenceStableStep(system, 1e-6, 5000);
-  record.stableTimeStep = stable.estimate();
-  result.stableStepGershgorin = stable.safe();
-  const Real stableStep = stable.usable();
-  if (!stable.converged)
-    result.notes.push_back(settings.name + ": power iteration did not converge; the Gershgorin step is used");
-  const Real dt = scene.integrator.timeStepFor(stableStep);
-  record.timeStep = dt;
-  record.simulatedTime = scene.integrator.endTime;
-  const StepLimitCheck check =
-      checkStepLimit(scene.integrator, scene.stability, 2 / stableStep, dt, stableStep,
-                     stable.converged ? "a power iteration on M^-1 K of the spectral elements" : "the Gershgorin bound",
-                     "in case " + settings.name);
-  if (!check.note.empty()) result.notes.push_back(check.note);
+  // time step: a fraction of the operator's stable central-difference step (exit 2 above the limit)
+  const Real dt = chooseLambTimeStep(system, scene, "M^-1 K of the spectral elements", result);
 
   // the energy ledger, which also stops growth after the loads (as in the very weak SPH case)
-  LinearEnergyLedgerOptions ledgerOptions;
-  ledgerOptions.quietAfter = loadsQuietAfter(scene);
-  Real side = 0;
-  for (std::size_t a = 0; a < 2; ++a) side = std::max(side, settings.geometry.upper[a] - settings.geometry.lower[a]);
-  ledgerOptions.envelopeWindow = 2 * side / scene.material.material().sWaveSpeed();
-  ledgerOptions.growthFactor = scene.stability.energyGrowthFactor;
-  ledgerOptions.balanceLimit = scene.stability.energyBalanceLimit;
-  ledgerOptions.components = 2;
-  ledgerOptions.likelyCause = "the spectral-element operator is symmetric with a diagonal mass: growth means a step "
-                              "above the limit";
-  ledgerOptions.stop = !scene.stability.allowGrowth;
+  const LinearEnergyLedgerOptions ledgerOptions = lambLedgerOptions(
+      scene, settings.geometry, 2, scene.material.material(), false,
+      "the spectral-element operator is symmetric with a diagonal mass: growth means a step above the limit");
   LinearEnergyLedger ledger(system, ledgerOptions);
 
   const std::unique_ptr<SecondOrderIntegrator> integrator =
@@ -190,24 +168,7 @@ CaseResult runSpectralElementCase(const StudySettings& study, const CaseSettings
   loop.add(ledger);
   loop.add(reporter);
   loop.add(recorder, scene.output.probeEvery);
-  const std::string energyFile = settings.name + "-energy.csv";
-  RunStatistics stats;
-  try {
-    stats = loop.run(*integrator, scene.integrator.endTime);
-  } catch (const InstabilityError&) {
-    recorder.writeCsv(folder + "/" + settings.name + "-probes.csv", std::vector<std::vector<Real>>(probes.size()));
-    if (scene.output.energy) ledger.series().writeCsv(folder + "/" + energyFile);
-    throw;
-  }
-  result.recordLoop(stats);
-  result.energyFinalFraction = ledger.finalEnergyFraction();
-  result.energyBalanceDrift = ledger.largestBalanceDrift();
-  result.energyGrowth = ledger.growthMessage();
-  noteAllowedGrowth(result.notes, settings.name, {result.energyGrowth, monitor.growthMessage()});
-  if (scene.output.energy) {
-    ledger.series().writeCsv(folder + "/" + energyFile);
-    result.files.push_back(energyFile);
-  }
+  runLambLoopWithLedger(loop, *integrator, scene, recorder, ledger, monitor, folder, result);
 
   scoreLambProbes<2>(study, settings, particles, recorder, nullptr, folder, result);
   record.peakMemoryMiB = peakMemoryMiB();

@@ -1,0 +1,38 @@
+#pragma once
+// The lamb2d scene (data/scenes/lamb2d.toml) read as the Lamb case tests need it, without the
+// driver: the very weak SPH's [method] keys and the study keys the scene sets registered, so that
+// every method's case (RK collocation, the UL-SPH, spectral elements) runs the shipped scene.
+
+#include "io/scene/LoadScene.hpp"
+#include "studies/lamb3d/LambCase.hpp"
+#include "study/VeryWeakSphSpec.hpp"
+
+#include <string>
+#include <vector>
+
+namespace mfwave::lamb3d::testing {
+
+inline StudySettings lamb2dCaseStudy(const std::vector<std::string>& overrides, Real errorWindow = 6.0) {
+  SceneSchema schema = SceneSchema::common();
+  addVeryWeakSphKeys(schema);
+  schema.add("study", ValueType::Table);
+  for (const char* key : {"study.spacings", "study.free_block_lower", "study.free_block_upper"})
+    schema.add(key, ValueType::NumberArray);
+  for (const char* key : {"study.error_window", "study.published_smoothing_rate", "study.strong_smoothing_rate"})
+    schema.add(key, ValueType::Number);
+  schema.add("study.compare_published", ValueType::Boolean);
+  SceneReader reader = loadScene(std::string(SCENES_FOLDER) + "/lamb2d.toml", overrides, schema);
+  StudySettings study;
+  study.scene = readScene(reader);
+  study.errorWindow = errorWindow;
+  return study;
+}
+
+// Whether one of a case's notes contains `text`.
+inline bool anyNoteHas(const std::vector<std::string>& notes, const std::string& text) {
+  for (const std::string& n : notes)
+    if (n.find(text) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace mfwave::lamb3d::testing
