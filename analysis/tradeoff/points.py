@@ -115,6 +115,38 @@ def lamb2d(dx, variant="galerkin", kernel="cubic_spline", ratio=1.0, cfl=0.5):
     return lamb3d(dx, variant, kernel, ratio, cfl, dimension=2)
 
 
+def lamb2d_rk(dx, order=2, ratio=2.5, integrator="central_difference", cfl=0.5):
+    """The 2-D Lamb problem by RK collocation (lamb2d, method.name = reproducing_kernel): traction
+    rows on the free face, the other faces fixed (their first reflection reaches a receiver after
+    the error window), one spacing."""
+    sets = (f"method.name=reproducing_kernel", f"method.order={order}", f"method.support_ratio={ratio}",
+            f"geometry.spacing={dx}", f"study.spacings=[{dx}]", "output.vtk=false",
+            f"integrator.name={integrator}", f"integrator.cfl={cfl}")
+    return Point("lamb_2d", "RKCM", "lamb2d", "lamb2d.toml", f"dx={dx:g}", f"cubic_b_spline_m{order}",
+                 f"{ratio:g}", integrator, cfl, sets,
+                 drop=("study.free_block_lower", "study.free_block_upper"))
+
+
+def lamb2d_ulsph(dx, alpha=1.0):
+    """The 2-D Lamb problem by the updated-Lagrangian SPH at small amplitude (lamb2d, method.name =
+    updated_lagrangian_sph): cubic spline h/dx 1.3, kernel-gradient correction, Monaghan viscosity
+    alpha, leapfrog at the method's own step criteria (it takes no step fraction: 1 here)."""
+    sets = ("method.name=updated_lagrangian_sph", f"method.ul_viscosity_alpha={alpha}", f"geometry.spacing={dx}",
+            f"study.spacings=[{dx}]", "output.vtk=false")
+    return Point("lamb_2d", f"UL-SPH alpha {alpha:g}", "lamb2d", "lamb2d.toml", f"dx={dx:g}", "cubic_spline",
+                 "1.3", "leapfrog", 1.0, sets, drop=("study.free_block_lower", "study.free_block_upper"))
+
+
+def lamb2d_sem(dx, order=4, cfl=0.5):
+    """The 2-D Lamb problem by the spectral-element reference (lamb2d, method.name = spectral_element):
+    GLL order N on square elements N spacings wide (so dx is the mean node spacing, as for the
+    lattice methods), dashpots on the transmitting faces, central difference."""
+    sets = ("method.name=spectral_element", f"method.order={order}", f"geometry.spacing={dx}",
+            f"study.spacings=[{dx}]", "output.vtk=false", f"integrator.cfl={cfl}")
+    return Point("lamb_2d", "SEM", "lamb2d", "lamb2d.toml", f"dx={dx:g}", f"gll_n{order}", "-",
+                 "central_difference", cfl, sets, drop=("study.free_block_lower", "study.free_block_upper"))
+
+
 PLANE_WAVE_METHODS = {"finite_difference": "FD", "vwsph_consistent": "VW-SPH consistent",
                       "vwsph_published": "VW-SPH published", "vwsph_galerkin": "VW-SPH galerkin", "rkcm": "RKCM"}
 
@@ -147,7 +179,7 @@ def _dedupe(points):
 
 
 def default_sweep():
-    """179 points, about 2 minutes on 2 idle cores (the largest, lamb3d's Galerkin variant at dx = 0.0625, about 40 s)."""
+    """201 points, about 4 minutes on 2 idle cores (the largest: lamb3d's Galerkin variant at dx = 0.0625, about 40 s; the UL-SPH on lamb2d at 0.0625, about 30 s; RK collocation on lamb2d at 0.125, about 20 s)."""
     pts = []
     # Standing wave, finite differences: every integrator over resolutions, then step fractions
     # (1.0 is the 1-D "magic" step of central differences; 1.05 is above the limit and fails).
@@ -190,6 +222,17 @@ def default_sweep():
     pts += [lamb2d(dx, variant="consistent") for dx in (0.5, 0.25, 0.125, 0.0625, 0.03125)]
     pts += [lamb2d(dx, variant="published") for dx in (0.5, 0.25, 0.125)]
     pts += [lamb2d(dx, cfl=0.9) for dx in (0.125, 0.0625)]
+    # 2-D Lamb problem, RK collocation (m = 2, a/h = 2.5; 2.2 the narrowest stable support, Newmark).
+    pts += [lamb2d_rk(dx) for dx in (0.5, 0.25, 0.125)]
+    pts += [lamb2d_rk(dx, ratio=2.2) for dx in (0.25, 0.125)]
+    pts += [lamb2d_rk(0.25, integrator="newmark"), lamb2d_rk(0.25, cfl=0.9)]
+    # 2-D Lamb problem, the updated-Lagrangian SPH at small amplitude (alpha = 1, its measured best; 0 beside).
+    pts += [lamb2d_ulsph(dx) for dx in (0.5, 0.25, 0.125, 0.0625)]
+    pts += [lamb2d_ulsph(0.125, alpha=0.0)]
+    # 2-D Lamb problem, the spectral-element reference: order 4 over spacings, orders 1, 2, 8, fraction 0.9.
+    pts += [lamb2d_sem(dx) for dx in (0.5, 0.25, 0.125, 0.0625, 0.03125)]
+    pts += [lamb2d_sem(0.125, order=n) for n in (1, 2, 8)]
+    pts += [lamb2d_sem(dx, cfl=0.9) for dx in (0.125, 0.0625)]
     # Plane wave in a periodic box: every linear method on the same problem.
     pts += [planewave(c, m) for m in ("finite_difference", "vwsph_consistent", "vwsph_published", "vwsph_galerkin")
             for c in (16, 32, 64, 128, 256)]
@@ -204,7 +247,7 @@ def default_sweep():
 
 
 def full_sweep():
-    """The default points and 191 more: finer resolutions, more kernels and fractions (about 10 minutes on 2 cores)."""
+    """The default points and 201 more: finer resolutions, more kernels and fractions (about 15 minutes on 2 cores; RK collocation on lamb2d at dx = 0.0625 alone takes 3 minutes)."""
     pts = default_sweep()
     for integ in ("central_difference", "leapfrog", "newmark", "arkode"):
         pts += [wave1d(c, integ) for c in (4096, 8192)]
@@ -239,6 +282,9 @@ def full_sweep():
             for c in (32, 128, 512)]
     pts += [lamb2d(0.015625), lamb2d(0.015625, variant="consistent")]
     pts += [lamb2d(dx, kernel=k, variant="consistent") for k in ("wendland_c2", "quintic_spline") for dx in (0.125, 0.0625)]
+    pts += [lamb2d_rk(0.0625), lamb2d_rk(0.125, order=3, ratio=3.3), lamb2d_rk(0.125, integrator="newmark")]
+    pts += [lamb2d_ulsph(dx, alpha=0.0) for dx in (0.25, 0.0625)]
+    pts += [lamb2d_sem(0.015625)] + [lamb2d_sem(dx, order=n) for n in (2, 8) for dx in (0.0625, 0.03125)]
     return _dedupe(pts)
 
 
