@@ -18,8 +18,9 @@
 // load (data/scenes/lamb2d.toml), scored against LambStripLoad at every receiver, surface or inside
 // (docs/studies/lamb2d.md).
 //
-// lamb2d also runs the same scene by the spectral-element method, the seismologists' reference
-// (GLL order N, elements N spacings wide, dashpots on the transmitting faces;
+// lamb2d and lamb3d also run the same scene by the spectral-element method, the seismologists'
+// reference (GLL order N, elements N spacings wide, sum-factorised stiffness, dashpots on the
+// transmitting faces;
 // lib/studies/lamb3d/LambSpectralElementCase.hpp): --set method.name=spectral_element
 // [--set method.order=4].
 //   sem_n<order>_<dx>           one case per spacing (the scene's first, which also writes exact.csv)
@@ -36,8 +37,8 @@
 // SPH comparison). A support whose interior rows have growing modes is refused at
 // method.support_ratio (exit 2) unless stability.allow_growth. The scene's transmitting faces are
 // fixed for RK collocation (the case's notes say when the first reflection reaches a probe). lamb3d
-// refuses reproducing_kernel and spectral_element at method.name (exit 2): the 3-D cases are not
-// implemented.
+// refuses reproducing_kernel and updated_lagrangian_sph at method.name (exit 2): their 3-D cases are
+// not implemented.
 //
 // lamb2d runs it by the updated-Lagrangian SPH for solids too (Li's primer; a large-deformation method
 // run at small amplitude, lib/studies/lamb3d/LambSolidCase.hpp): --set method.name=updated_lagrangian_sph
@@ -97,7 +98,7 @@ SceneSchema lambSchema() {
   addVeryWeakSphKeys(schema);
   // RK collocation (lamb2d only; lamb3d refuses it at method.name).
   schema.addChoice("method.name", "reproducing_kernel");
-  // The spectral-element reference (lamb2d only): method.order is its GLL order N there.
+  // The spectral-element reference (lamb2d and lamb3d): method.order is its GLL order N there.
   schema.addChoice("method.name", "spectral_element");
   schema.add("method.order", T::Integer).withUnit("-")
       .defaultsToNote("2 (reproducing_kernel), 4 (spectral_element)").between(1, 8)
@@ -242,18 +243,24 @@ std::string collocationCaseName(const CollocationSpec& spec, Real dx) {
   return s.str();
 }
 
-// What every plan of a method other than the very weak SPH checks and says (lamb2d only): the
-// dimension, one surface_patch load, no free block (a very weak SPH comparison), and the very weak
-// SPH's and the published / strong cases' keys the scene sets, read (still checked) and ignored
-// with a note. `method` is the method.name, `label` how the messages name it.
+// What every plan of a method other than the very weak SPH checks and says: the dimension (lamb2d
+// runs them all, lamb3d only the spectral elements), one surface_patch load, no free block in
+// lamb2d (a very weak SPH comparison; lamb3d's scene sets one, which the spectral elements read and
+// ignore with a note), and the very weak SPH's and the published / strong cases' keys the scene
+// sets, read (still checked) and ignored with a note. `method` is the method.name, `label` how the
+// messages name it.
 void readOtherMethodPlan(SceneReader& reader, Plan& plan, const std::string& method, const std::string& label) {
   const Scene& scene = plan.study.scene;
-  if (kDimension != 2)
-    reader.fail("method.name", std::string(kProgram) + " runs very_weak_sph only: " + label + " (" + method +
-                                   ") is implemented for the plane-strain problem, lamb2d");
+  if (kDimension != 2 && method != "spectral_element")
+    reader.fail("method.name", std::string(kProgram) + " runs very_weak_sph and spectral_element: " + label + " (" +
+                                   method + ") is implemented for the plane-strain problem, lamb2d");
   if (scene.loads.size() != 1 || scene.loads[0].type != LoadType::SurfacePatch)
     reader.fail("load", label + " in " + std::string(kProgram) + " needs exactly one surface_patch load");
-  if (reader.has("study.free_block_lower") || reader.has("study.free_block_upper"))
+  if (kDimension == 3) {
+    const std::vector<std::string> block = readIgnoredKeys(reader, {"study.free_block_lower", "study.free_block_upper"});
+    if (!block.empty())
+      plan.notes.push_back(method + " runs no free_block case (a very weak SPH comparison); ignored: " + joined(block));
+  } else if (reader.has("study.free_block_lower") || reader.has("study.free_block_upper"))
     reader.fail(reader.has("study.free_block_lower") ? "study.free_block_lower" : "study.free_block_upper",
                 "the free_block case compares the very weak SPH's transmitting faces; " + label +
                     " runs none (remove study.free_block_*)");
@@ -341,7 +348,7 @@ bool wholeMultiple(Real length, Real size) {
   return std::round(count) >= 1 && std::abs(count - std::round(count)) <= 1e-9 * std::max<Real>(1, count);
 }
 
-// The spectral-element plan (lamb2d, method.name = spectral_element): one case per spacing, elements
+// The spectral-element plan (lamb2d or lamb3d, method.name = spectral_element): one case per spacing, elements
 // method.order spacings wide, the scene's spacing first (with exact.csv).
 void readSpectralElementPlan(SceneReader& reader, Plan& plan) {
   const Scene& scene = plan.study.scene;
@@ -357,27 +364,33 @@ void readSpectralElementPlan(SceneReader& reader, Plan& plan) {
                   "the spectral-element case runs free, fixed and transmitting faces");
   }
   const LoadSpec& load = scene.loads[0];
-  const auto along = static_cast<std::size_t>(1 - faceAxis(load.face));
+  const auto normal = static_cast<std::size_t>(faceAxis(load.face));
   const std::vector<GeometrySpec> grids = readGrids(reader, scene.geometry);
   for (std::size_t i = 0; i < grids.size(); ++i) {
     const GeometrySpec& g = grids[i];
     const std::string key = i == 0 ? "geometry.spacing" : "study.spacings";
     const Real size = order * g.spacing;
-    for (std::size_t a = 0; a < 2; ++a)
+    for (std::size_t a = 0; a < static_cast<std::size_t>(kDimension); ++a)
       if (!wholeMultiple(g.upper[a] - g.lower[a], size))
         reader.fail(key, "spectral elements of order " + std::to_string(order) + " at spacing " +
                              scene::formatNumber(g.spacing) + " are " + scene::formatNumber(size) +
                              " wide, which does not divide the box " + g.describeBox() +
                              " (choose a spacing or method.order whose product divides it)");
-    // The strip's ends inside elements: the load vector is still exact, but the degree-N trace
+    // The load's edges inside elements: the load vector is still exact, but the degree-N trace
     // cannot follow the load's jump there (said, not refused: the coarsest study case has them).
-    for (const Real end : {load.centre[along] - load.halfWidth[along], load.centre[along] + load.halfWidth[along]})
-      if (end > g.lower[along] && !wholeMultiple(end - g.lower[along], size)) {
-        plan.notes.push_back(spectralElementCaseName(order, g.spacing) + ": the loaded strip's end " +
-                             scene::formatNumber(end) + " falls inside an element " + scene::formatNumber(size) +
-                             " wide (its load vector is integrated exactly on the loaded part of the edge)");
-        break;
-      }
+    bool noted = false;
+    for (std::size_t along = 0; along < static_cast<std::size_t>(kDimension) && !noted; ++along) {
+      if (along == normal) continue;
+      for (const Real end : {load.centre[along] - load.halfWidth[along], load.centre[along] + load.halfWidth[along]})
+        if (end > g.lower[along] && !wholeMultiple(end - g.lower[along], size)) {
+          plan.notes.push_back(spectralElementCaseName(order, g.spacing) + ": the loaded " +
+                               (kDimension == 2 ? "strip's end " : "square's edge ") + scene::formatNumber(end) +
+                               " falls inside an element " + scene::formatNumber(size) +
+                               " wide (its load vector is integrated exactly on the loaded part of the face)");
+          noted = true;
+          break;
+        }
+    }
     CaseSettings c;
     c.name = spectralElementCaseName(order, g.spacing);
     c.geometry = g;
@@ -412,7 +425,7 @@ Plan readPlan(SceneReader& reader) {
   if (scene.method.name != "very_weak_sph")
     reader.fail("method.name", std::string(kProgram) + " runs the very_weak_sph method" +
                                    (kDimension == 2 ? ", reproducing_kernel, updated_lagrangian_sph or spectral_element"
-                                                    : ""));
+                                                    : " or spectral_element"));
   const VeryWeakSphSpec main = readVeryWeakSph(reader, scene.material.material());
   const bool comparePublished = reader.boolean("study.compare_published") && main.options.variant != VeryWeakSphVariant::Published;
   const VeryWeakSphSpec published = publishedSpec(main, reader.number("study.published_smoothing_rate"));

@@ -1,24 +1,34 @@
 #pragma once
-// Plane-strain isotropic elasticity by the spectral-element method (SEM, as in SPECFEM2D:
-// Komatitsch & Vilotte 1998, Komatitsch & Tromp 1999): a structured mesh of equal square elements
-// covering an axis-aligned rectangle, Gauss-Lobatto-Legendre (GLL) nodes of order N in each
-// direction, the tensor-product Lagrange basis on them and GLL quadrature. Because the quadrature
-// points are the interpolation nodes, M is diagonal (lumped) without any lumping step, and an
-// explicit central difference needs no solve.
+// Isotropic elasticity by the spectral-element method (SEM, as in SPECFEM2D / SPECFEM3D:
+// Komatitsch & Vilotte 1998, Komatitsch & Tromp 1999), plane strain (D = 2) or 3-D (D = 3), one
+// implementation for both: a structured mesh of equal square / cubic elements covering an
+// axis-aligned box, Gauss-Lobatto-Legendre (GLL) nodes of order N along each axis, the
+// tensor-product Lagrange basis on them and GLL quadrature. Because the quadrature points are the
+// interpolation nodes, M is diagonal (lumped) without any lumping step, and an explicit central
+// difference needs no solve.
 //
-//   unknowns      two displacement components per global GLL node, interleaved (u[2 p + c]), nodes
-//                 numbered row by row (p = j * nodesX + i), as the lattice systems lay them out
-//   stiffness     ONE element matrix K_e (every element is the same square with the same material),
-//                 K_e = sum over GLL points of B^T D B w J; K u is matrix-free: per element gather,
-//                 multiply by K_e, scatter-add, elements in a fixed order (bitwise reproducible)
+//   unknowns      D displacement components per global GLL node, interleaved (u[D p + c]), nodes
+//                 numbered x fastest, then y, then z (p = (k ny + j) nx + i), as the lattice
+//                 systems lay them out
+//   stiffness     matrix-free by sum factorisation (Deville, Fischer & Mund 2002, ch. 4; Komatitsch
+//                 & Tromp 1999): per element the displacement gradient at the GLL points by the 1-D
+//                 derivative matrix along each axis, the stress there (lambda tr(eps) I + 2 mu eps)
+//                 times the quadrature weight and Jacobian, and the transposed derivative products
+//                 back to the nodes: O(D^2 (N + 1)^(D + 1)) per element instead of the dense element
+//                 matrix's (D (N + 1)^D)^2. Every element is the same cube with the same material, so
+//                 one set of reference data serves all; elements in a fixed order (bitwise
+//                 reproducible). The dense K_e is assembled column by column from that product:
+//                 on request in 3-D (elementStiffness(), tests and the Gershgorin bound), and kept
+//                 in 2-D, where its 50-square (N = 4) dense product is the faster one.
 //   faces         free (natural), fixed (u = 0: those unknowns are masked out of K, f and the
 //                 acceleration, so K stays symmetric), absorbing (Lysmer & Kuhlemeyer 1969
 //                 dashpots: C diagonal, rho c_p on the normal and rho c_s on the tangential
-//                 component, times the node's GLL weight times the edge Jacobian h / 2)
-//   loads         tractions T(x) f(t) on a segment |x - centre| < halfWidth of a face, integrated
-//                 against each basis function exactly (GLL on the face's element edges when the
-//                 segment's ends are element boundaries; Gauss-Legendre on the loaded part of an
-//                 edge when an end falls inside an element)
+//                 components, times the node's face GLL weights times the face Jacobian (h/2)^(D-1))
+//   loads         tractions T f(t) on a rectangle |x_t - centre_t| < halfWidth_t (t the face's
+//                 tangential axes) of a face, integrated against each basis function exactly:
+//                 tensor Gauss-Legendre of N + 1 points per axis over the loaded part of each face
+//                 element (the face's GLL rule would do when the rectangle's edges are element
+//                 boundaries; the Gauss rule is exact also when an edge falls inside an element)
 
 #include "core/Material.hpp"
 #include "particles/ParticleSet.hpp"
@@ -32,32 +42,42 @@ namespace mfwave {
 
 enum class SpectralElementFace { Free, Fixed, Absorbing };
 
+template <int D>
 struct SpectralElementTraction {
-  int face = 3;           // BoxFace number (0 -x, 1 +x, 2 -y, 3 +y)
-  Real centre = 0;        // along the face
-  Real halfWidth = 0;     // the loaded segment |x - centre| < halfWidth
-  Vec2 traction = Vec2::Zero();  // Pa, constant on the segment
-  std::function<Real(Real)> history;  // f(t)
+  int face = 2 * D - 1;                  // BoxFace number (0 -x, 1 +x, 2 -y, 3 +y, 4 -z, 5 +z)
+  Vec<D> centre = Vec<D>::Zero();        // on the face (the normal component is not read)
+  Vec<D> halfWidth = Vec<D>::Zero();     // along the tangential axes (the normal component is not read)
+  Vec<D> traction = Vec<D>::Zero();      // Pa, constant on the rectangle
+  std::function<Real(Real)> history;     // f(t)
 };
 
+template <int D>
 struct SpectralElementSettings {
-  Vec2 lower = Vec2::Zero(), upper = Vec2::Zero();
+  Vec<D> lower = Vec<D>::Zero(), upper = Vec<D>::Zero();
   Real elementSize = 1;
   int order = 4;  // N: N + 1 GLL nodes per element edge
   Material material = Material::fromLame(1, 1, 1);
-  std::array<SpectralElementFace, 4> faces{SpectralElementFace::Free, SpectralElementFace::Free,
-                                           SpectralElementFace::Free, SpectralElementFace::Free};
-  std::vector<SpectralElementTraction> tractions;
+  std::array<SpectralElementFace, 2 * D> faces = uniformFaces(SpectralElementFace::Free);
+  std::vector<SpectralElementTraction<D>> tractions;
+
+  static std::array<SpectralElementFace, 2 * D> uniformFaces(SpectralElementFace kind) {
+    std::array<SpectralElementFace, 2 * D> f{};
+    f.fill(kind);
+    return f;
+  }
 };
 
+template <int D>
 class SpectralElementElasticity : public LinearOperatorSystem {
  public:
-  // Throws InputError("order") outside 1..8, InputError("elementSize") when the rectangle is not a
-  // whole number of elements, InputError("traction") for a segment outside its face, of no width,
-  // or a traction without history.
-  explicit SpectralElementElasticity(SpectralElementSettings settings);
+  using Nodes = std::array<Index, D>;
 
-  Index size() const override { return 2 * nodeCount(); }
+  // Throws InputError("order") outside 1..8, InputError("elementSize") when the box is not a
+  // whole number of elements, InputError("traction") for a rectangle outside its face, of no
+  // width, or a traction without history.
+  explicit SpectralElementElasticity(SpectralElementSettings<D> settings);
+
+  Index size() const override { return D * nodeCount(); }
   bool hasDamping() const override { return hasDamping_; }
   void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) override;
 
@@ -72,20 +92,25 @@ class SpectralElementElasticity : public LinearOperatorSystem {
   Vector stiffnessAbsoluteRowSums() const override;
   std::unique_ptr<CentredDampingSolve> centredDamping(Real dt, const std::vector<Index>& prescribedDofs) const override;
 
-  Index nodeCount() const { return nodes_[0] * nodes_[1]; }
-  std::array<Index, 2> nodesPerAxis() const { return nodes_; }
-  std::array<Index, 2> elementsPerAxis() const { return elements_; }
-  Vec2 nodePosition(Index node) const;
+  Index nodeCount() const;
+  Nodes nodesPerAxis() const { return nodes_; }
+  Nodes elementsPerAxis() const { return elements_; }
+  Index elementCount() const;
+  Vec<D> nodePosition(Index node) const;
   // The global node at x, or -1 when no node is within 1e-9 element sizes of it.
-  Index nodeAt(const Vec2& x) const;
+  Index nodeAt(const Vec<D>& x) const;
   // The GLL nodes as particles: volume = the lumped mass over rho, face bits of the box faces a
   // node lies on (what the probes and the Lamb scores read).
-  ParticleSet<2> nodeParticles() const;
-  const Eigen::MatrixXd& elementStiffness() const { return elementStiffness_; }
+  ParticleSet<D> nodeParticles() const;
+  // The dense element matrix, D (N + 1)^D square, local dof D l + c with l = a + (N + 1)(b + (N + 1) c),
+  // assembled column by column from the sum-factorised element product (tests, Gershgorin).
+  Eigen::MatrixXd elementStiffness() const;
+  // y_e = K_e x_e for one element's local vectors (layout as elementStiffness()), by sum factorisation.
+  void elementProduct(const Real* x, Real* y) const;
   const Vector& dampingDiagonal() const { return damping_; }
   // 1 for the unknowns a fixed face holds at zero.
   const std::vector<char>& fixedDofs() const { return fixed_; }
-  const SpectralElementSettings& settings() const { return settings_; }
+  const SpectralElementSettings<D>& settings() const { return settings_; }
   // The GLL points of the reference element [-1, 1].
   const std::vector<Real>& referenceNodes() const { return gllNodes_; }
 
@@ -93,25 +118,33 @@ class SpectralElementElasticity : public LinearOperatorSystem {
   void residual(Real t, const Real* u, const Real* v, Real* r) const;
 
  private:
-  Index globalNode(Index ex, Index ey, int a, int b) const {
-    return (ey * settings_.order + b) * nodes_[0] + ex * settings_.order + a;
-  }
-  void buildElementStiffness();
+  void buildReferenceData();
   void buildMassAndDamping();
   void buildLoads();
+  // The first global node of element `e` (its local node 0).
+  Index elementBase(Index e) const;
+  // elementProduct on planar local vectors (component c at c (N + 1)^D + l), what the loop uses.
+  void planarElementProduct(const Real* x, Real* y) const;
   // y += sign * K x over every element (x read with its fixed unknowns as zero), fixed rows left alone.
   void addStiffnessProduct(const Real* x, Real* y, Real sign) const;
 
-  SpectralElementSettings settings_;
-  std::array<Index, 2> elements_{0, 0}, nodes_{0, 0};
+  SpectralElementSettings<D> settings_;
+  Nodes elements_{}, nodes_{};
+  Index pointsPerElement_ = 0;                   // (N + 1)^D
   std::vector<Real> gllNodes_, gllWeights_;
-  std::array<std::vector<Real>, 2> axisCoordinates_;  // the global nodes' coordinates along each axis
-  std::vector<Index> localOffsets_;      // local node b (N + 1) + a -> b nodesX + a
-  Eigen::MatrixXd elementStiffness_;     // 2 (N + 1)^2 square, local dof 2 (b (N + 1) + a) + c
-  Vector mass_, damping_;                // diagonals
+  std::array<std::vector<Real>, D> axisCoordinates_;  // the global nodes' coordinates along each axis
+  std::vector<Index> localOffsets_;              // local node l -> its global node minus the element's first
+  std::vector<Real> derivative_;                 // (2 / h) D_ij = dl_j/dx at node i, row major (N + 1)^2
+  std::vector<Real> pointWeights_;               // GLL weight product times the Jacobian (h / 2)^D per point
+  std::array<std::vector<int>, D> lineIndex_;    // per axis and local point: its index along that axis
+  Eigen::MatrixXd denseElement_;                 // 2-D only: K_e cached for the faster dense product
+  Vector mass_, damping_;                        // diagonals
   std::vector<char> fixed_;
-  std::vector<Vector> loadVectors_;      // per traction: integral of T phi_i over its segment
+  std::vector<Vector> loadVectors_;              // per traction: integral of T phi_i over its rectangle
   bool hasDamping_ = false;
 };
+
+extern template class SpectralElementElasticity<2>;
+extern template class SpectralElementElasticity<3>;
 
 }  // namespace mfwave

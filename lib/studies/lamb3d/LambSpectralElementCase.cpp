@@ -31,23 +31,33 @@ namespace {
 // the nodal value; raw and reported are the same).
 class SpectralElementProbes : public ReportedProbes {
  public:
-  using ReportedProbes::ReportedProbes;
+  SpectralElementProbes(std::vector<Probe> probes, int dimension) : ReportedProbes(std::move(probes)), dimension_(dimension) {}
 
   void observe(const StateView& s) override {
     if (!beginSample(s.time)) return;
     for (std::size_t i = 0; i < probes().size(); ++i) {
       const Probe& p = probes()[i];
       const Vector& field = p.quantity == ProbeQuantity::Velocity ? s.velocity : s.displacement;
-      const Real value = field[2 * p.particle + p.component];
+      const Real value = field[dimension_ * p.particle + p.component];
       add(i, value, value);
     }
   }
+
+ private:
+  int dimension_;
 };
 
+template <int D>
+std::vector<Real> pointOf(const Vec<D>& x) {
+  std::vector<Real> p;
+  for (int d = 0; d < D; ++d) p.push_back(x[d]);
+  return p;
+}
+
 // The scene's faces for the SEM: transmitting -> dashpots, fixed -> u = 0, free -> natural.
-std::array<SpectralElementFace, 4> spectralElementFaces(const Scene& scene) {
-  std::array<SpectralElementFace, 4> faces{SpectralElementFace::Free, SpectralElementFace::Free,
-                                           SpectralElementFace::Free, SpectralElementFace::Free};
+template <int D>
+std::array<SpectralElementFace, 2 * D> spectralElementFaces(const Scene& scene) {
+  std::array<SpectralElementFace, 2 * D> faces = SpectralElementSettings<D>::uniformFaces(SpectralElementFace::Free);
   for (std::size_t i = 0; i < scene.boundaries.size(); ++i) {
     const BoundarySpec& b = scene.boundaries[i];
     SpectralElementFace kind = SpectralElementFace::Free;
@@ -60,42 +70,42 @@ std::array<SpectralElementFace, 4> spectralElementFaces(const Scene& scene) {
                          "the spectral-element case runs free, fixed and transmitting faces, not " +
                              boundaryTypeName(b.type));
     }
-    for (int face = 0; face < 4; ++face)
+    for (int face = 0; face < 2 * D; ++face)
       if ((b.faceMask & faceBit(face)) != 0) faces[static_cast<std::size_t>(face)] = kind;
   }
   return faces;
 }
 
-SpectralElementSettings spectralElementSettings(const Scene& scene, const CaseSettings& settings) {
+template <int D>
+SpectralElementSettings<D> spectralElementSettings(const Scene& scene, const CaseSettings& settings) {
   const LoadSpec& load = scene.loads[0];
   const int order = *settings.spectralElementOrder;
-  SpectralElementSettings s;
+  SpectralElementSettings<D> s;
   const GeometrySpec& g = settings.geometry;
-  s.lower = Vec2(g.lower[0], g.lower[1]);
-  s.upper = Vec2(g.upper[0], g.upper[1]);
+  SpectralElementTraction<D> traction;
+  traction.face = load.face;
+  for (int d = 0; d < D; ++d) {
+    const auto k = static_cast<std::size_t>(d);
+    s.lower[d] = g.lower[k];
+    s.upper[d] = g.upper[k];
+    traction.centre[d] = load.centre[k];
+    traction.halfWidth[d] = load.halfWidth[k];
+    traction.traction[d] = load.traction[k];
+  }
   s.order = order;
   s.elementSize = order * g.spacing;
   s.material = scene.material.material();
-  s.faces = spectralElementFaces(scene);
-  const auto along = static_cast<std::size_t>(1 - faceAxis(load.face));
-  SpectralElementTraction traction;
-  traction.face = load.face;
-  traction.centre = load.centre[along];
-  traction.halfWidth = load.halfWidth[along];
-  traction.traction = Vec2(load.traction[0], load.traction[1]);
+  s.faces = spectralElementFaces<D>(scene);
   const TimeFunction history = load.timeFunction;
   traction.history = [history](Real t) { return history(t); };
   s.tractions.push_back(std::move(traction));
   return s;
 }
 
-}  // namespace
-
-CaseResult runSpectralElementCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
-                                  bool progress) {
+template <int D>
+CaseResult runSpectralElementCaseIn(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
+                                    bool progress) {
   const Scene& scene = study.scene;
-  if (scene.info.dimension != 2)
-    throw InputError("method.name", "the spectral-element case runs the 2-D Lamb problem (lamb2d) only");
   if (scene.loads.size() != 1 || scene.loads[0].type != LoadType::SurfacePatch)
     throw InputError("load", "the spectral-element case needs exactly one surface_patch load");
   if (!settings.spectralElementOrder) throw InputError("method.order", "the spectral-element case needs its order");
@@ -107,9 +117,9 @@ CaseResult runSpectralElementCase(const StudySettings& study, const CaseSettings
 
   const int order = *settings.spectralElementOrder;
   const Real elementSize = order * settings.geometry.spacing;
-  std::unique_ptr<SpectralElementElasticity> built;
+  std::unique_ptr<SpectralElementElasticity<D>> built;
   try {
-    built = std::make_unique<SpectralElementElasticity>(spectralElementSettings(scene, settings));
+    built = std::make_unique<SpectralElementElasticity<D>>(spectralElementSettings<D>(scene, settings));
   } catch (const InputError& e) {
     std::ostringstream problem;
     if (e.key() == "elementSize") {
@@ -120,18 +130,21 @@ CaseResult runSpectralElementCase(const StudySettings& study, const CaseSettings
     if (e.key() == "traction") throw InputError("load.half_width", e.problem());
     throw;
   }
-  SpectralElementElasticity& system = *built;
-  const ParticleSet<2> particles = system.nodeParticles();
+  SpectralElementElasticity<D>& system = *built;
+  const ParticleSet<D> particles = system.nodeParticles();
   record.particles = system.nodeCount();
   result.meanNeighbours = 0;
-  result.operatorNonZeros = system.elementStiffness().size();  // the one element matrix, all that is stored
+  // all that is stored of K: the one dense element matrix in 2-D, the (N + 1)^2 derivative matrix
+  // of the sum-factorised product in 3-D
+  const Index elementDofs = D * (D == 2 ? (order + 1) * (order + 1) : (order + 1) * (order + 1) * (order + 1));
+  result.operatorNonZeros = D == 2 ? elementDofs * elementDofs : static_cast<Index>((order + 1) * (order + 1));
 
   // time step: a fraction of the operator's stable central-difference step (exit 2 above the limit)
   const Real dt = chooseLambTimeStep(system, scene, "M^-1 K of the spectral elements", result);
 
   // the energy ledger, which also stops growth after the loads (as in the very weak SPH case)
   const LinearEnergyLedgerOptions ledgerOptions = lambLedgerOptions(
-      scene, settings.geometry, 2, scene.material.material(), false,
+      scene, settings.geometry, D, scene.material.material(), false,
       "the spectral-element operator is symmetric with a diagonal mass: growth means a step above the limit");
   LinearEnergyLedger ledger(system, ledgerOptions);
 
@@ -142,26 +155,28 @@ CaseResult runSpectralElementCase(const StudySettings& study, const CaseSettings
   const std::vector<Probe> probes = resolveProbes(scene.probes, particles);
   for (std::size_t i = 0; i < probes.size(); ++i) {
     if (!scene.probes[i].position) continue;
-    const Vec2 wanted((*scene.probes[i].position)[0], (*scene.probes[i].position)[1]);
+    Vec<D> wanted;
+    for (int d = 0; d < D; ++d) wanted[d] = (*scene.probes[i].position)[static_cast<std::size_t>(d)];
     const Real offset = (particles.position(probes[i].particle) - wanted).norm();
     if (offset > 1e-9 * elementSize) {
       std::ostringstream note;
       note << std::setprecision(3) << settings.name << ": probe " << probes[i].name << " reads the GLL node "
-           << offset << " from its position (" << scene::formatPoint({particles.position(probes[i].particle)[0], particles.position(probes[i].particle)[1]}) << ")";
+           << offset << " from its position (" << scene::formatPoint(pointOf<D>(particles.position(probes[i].particle))) << ")";
       result.notes.push_back(note.str());
     }
   }
-  SpectralElementProbes recorder(probes);
+  SpectralElementProbes recorder(probes, D);
   record.setupSeconds = setupClock.seconds();
   {
     std::ostringstream note;
-    note << settings.name << ": spectral elements of order " << order << ", " << system.elementsPerAxis()[0] << " x "
-         << system.elementsPerAxis()[1] << " elements of side " << elementSize << ", " << system.nodeCount()
+    note << settings.name << ": spectral elements of order " << order << ", ";
+    for (int d = 0; d < D; ++d) note << (d > 0 ? " x " : "") << system.elementsPerAxis()[static_cast<std::size_t>(d)];
+    note << " elements of side " << elementSize << ", " << system.nodeCount()
          << " GLL nodes; the scene's transmitting faces are Lysmer-Kuhlemeyer dashpots on the nodes";
     result.notes.push_back(note.str());
   }
 
-  StabilityMonitor monitor(scene.stability.options(2, ledgerOptions.quietAfter));
+  StabilityMonitor monitor(scene.stability.options(D, ledgerOptions.quietAfter));
   ProgressReporter reporter(scene.integrator.endTime, system.nodeCount(), progress);
   TimeLoop loop;
   loop.add(monitor);
@@ -170,9 +185,18 @@ CaseResult runSpectralElementCase(const StudySettings& study, const CaseSettings
   loop.add(recorder, scene.output.probeEvery);
   runLambLoopWithLedger(loop, *integrator, scene, recorder, ledger, monitor, folder, result);
 
-  scoreLambProbes<2>(study, settings, particles, recorder, nullptr, folder, result);
+  scoreLambProbes<D>(study, settings, particles, recorder, nullptr, folder, result);
   record.peakMemoryMiB = peakMemoryMiB();
   return result;
+}
+
+}  // namespace
+
+CaseResult runSpectralElementCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
+                                  bool progress) {
+  if (study.scene.info.dimension == 2) return runSpectralElementCaseIn<2>(study, settings, folder, progress);
+  if (study.scene.info.dimension == 3) return runSpectralElementCaseIn<3>(study, settings, folder, progress);
+  throw InputError("scene.dimension", "the spectral-element case runs 2-D and 3-D scenes");
 }
 
 }  // namespace mfwave::lamb3d

@@ -1,4 +1,4 @@
-// lib/methods/spectral_element/SpectralElementElasticity in motion: central difference (leapfrog
+// lib/methods/spectral_element/SpectralElementElasticity<2> in motion: central difference (leapfrog
 // form) on free and fixed faces keeps its discrete energy to rounding over many periods; absorbing
 // faces only remove energy; the lowest P mode of a 1-D-like box converges to its exact frequency
 // at order 2N, i.e. at least N.
@@ -17,7 +17,7 @@ namespace mfwave {
 namespace {
 
 // The central-difference step limit 2 / omega_max of M^-1 K, by power iteration.
-Real criticalStep(SpectralElementElasticity& system) {
+Real criticalStep(SpectralElementElasticity<2>& system) {
   const Vector m = system.lumpedMass();
   Vector x = Vector::Ones(system.size()), kx;
   for (Index i = 0; i < x.size(); ++i) x[i] = std::sin(0.37 * static_cast<Real>(i) + 0.1);
@@ -35,7 +35,7 @@ Real criticalStep(SpectralElementElasticity& system) {
 // conserved energy 1/2 v_{n+1/2}^T M v_{n+1/2} + 1/2 u_n^T K u_{n+1} stays constant, and the
 // plain kinetic + strain energy at whole steps stays within O((omega dt)^2) of it.
 TEST(SpectralElementDynamics, CentralDifferenceConservesEnergyOnFreeAndFixedFaces) {
-  SpectralElementSettings s;
+  SpectralElementSettings<2> s;
   s.lower = Vec2(0, 0);
   s.upper = Vec2(2, 1);
   s.elementSize = 0.5;
@@ -43,7 +43,7 @@ TEST(SpectralElementDynamics, CentralDifferenceConservesEnergyOnFreeAndFixedFace
   s.material = Material::fromLame(1, 1, 1);
   s.faces = {SpectralElementFace::Fixed, SpectralElementFace::Free, SpectralElementFace::Free,
              SpectralElementFace::Fixed};
-  SpectralElementElasticity system(s);
+  SpectralElementElasticity<2> system(s);
   const Real dt = 0.5 * criticalStep(system);
   const Index n = system.nodeCount();
   Vector u(system.size()), v = Vector::Zero(system.size()), a(system.size());
@@ -85,7 +85,7 @@ TEST(SpectralElementDynamics, CentralDifferenceConservesEnergyOnFreeAndFixedFace
 
 // Absorbing faces on three sides: the energy never grows and the dashpots remove most of it.
 TEST(SpectralElementDynamics, AbsorbingFacesOnlyRemoveEnergy) {
-  SpectralElementSettings s;
+  SpectralElementSettings<2> s;
   s.lower = Vec2(-2, -2);
   s.upper = Vec2(2, 0);
   s.elementSize = 0.5;
@@ -93,7 +93,7 @@ TEST(SpectralElementDynamics, AbsorbingFacesOnlyRemoveEnergy) {
   s.material = Material::fromLame(1, 1, 1);
   s.faces = {SpectralElementFace::Absorbing, SpectralElementFace::Absorbing, SpectralElementFace::Absorbing,
              SpectralElementFace::Free};
-  SpectralElementElasticity system(s);
+  SpectralElementElasticity<2> system(s);
   const Real dt = 0.5 * criticalStep(system);
   Vector u(system.size()), v = Vector::Zero(system.size());
   for (Index p = 0; p < system.nodeCount(); ++p) {
@@ -137,7 +137,7 @@ TEST(SpectralElementDynamics, AbsorbingFacesOnlyRemoveEnergy) {
 // free), omega = pi c_p / 4, c_p = sqrt(2 mu / rho). Its discrete frequency from the dense
 // eigenproblem at two element sizes.
 Real axialModeError(int order, Real elementSize) {
-  SpectralElementSettings s;
+  SpectralElementSettings<2> s;
   s.lower = Vec2(0, 0);
   s.upper = Vec2(4, 1);
   s.elementSize = elementSize;
@@ -145,7 +145,7 @@ Real axialModeError(int order, Real elementSize) {
   s.material = Material::fromLame(0, 1, 1);
   s.faces = {SpectralElementFace::Fixed, SpectralElementFace::Fixed, SpectralElementFace::Free,
              SpectralElementFace::Free};
-  const SpectralElementElasticity system(s);
+  const SpectralElementElasticity<2> system(s);
   std::vector<Index> free;
   for (Index dof = 0; dof < system.size(); ++dof)
     if (!system.fixedDofs()[static_cast<std::size_t>(dof)]) free.push_back(dof);

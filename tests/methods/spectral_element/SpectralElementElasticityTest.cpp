@@ -14,8 +14,8 @@
 namespace mfwave {
 namespace {
 
-SpectralElementSettings box(int order, Real elementSize, Vec2 lower = Vec2(-1, -1), Vec2 upper = Vec2(2, 1)) {
-  SpectralElementSettings s;
+SpectralElementSettings<2> box(int order, Real elementSize, Vec2 lower = Vec2(-1, -1), Vec2 upper = Vec2(2, 1)) {
+  SpectralElementSettings<2> s;
   s.lower = lower;
   s.upper = upper;
   s.elementSize = elementSize;
@@ -26,7 +26,7 @@ SpectralElementSettings box(int order, Real elementSize, Vec2 lower = Vec2(-1, -
 
 TEST(SpectralElementElasticity, ElementStiffnessIsSymmetricAndAnnihilatesRigidMotions) {
   for (int order = 1; order <= 8; ++order) {
-    const SpectralElementElasticity system(box(order, 0.5, Vec2(0, 0), Vec2(0.5, 0.5)));
+    const SpectralElementElasticity<2> system(box(order, 0.5, Vec2(0, 0), Vec2(0.5, 0.5)));
     const Eigen::MatrixXd& k = system.elementStiffness();
     const Real scale = k.cwiseAbs().maxCoeff();
     EXPECT_LE((k - k.transpose()).cwiseAbs().maxCoeff(), 1e-14 * scale) << "order " << order;
@@ -59,8 +59,8 @@ TEST(SpectralElementElasticity, ElementStiffnessIsSymmetricAndAnnihilatesRigidMo
 
 TEST(SpectralElementElasticity, UniformStrainLeavesOnlyBoundaryTractions) {
   for (int order : {1, 2, 4, 7}) {
-    const SpectralElementSettings settings = box(order, 0.5);
-    const SpectralElementElasticity system(settings);
+    const SpectralElementSettings<2> settings = box(order, 0.5);
+    const SpectralElementElasticity<2> system(settings);
     const Real lambda = settings.material.lambda(), mu = settings.material.mu();
     // u = G x with a general displacement gradient G
     Mat2 g;
@@ -97,17 +97,17 @@ TEST(SpectralElementElasticity, UniformStrainLeavesOnlyBoundaryTractions) {
 }
 
 TEST(SpectralElementElasticity, MassDashpotsAndStripLoadIntegrateWhatTheyShould) {
-  SpectralElementSettings s = box(4, 0.5, Vec2(-2, -1), Vec2(2, 0));
+  SpectralElementSettings<2> s = box(4, 0.5, Vec2(-2, -1), Vec2(2, 0));
   s.faces = {SpectralElementFace::Absorbing, SpectralElementFace::Absorbing, SpectralElementFace::Absorbing,
              SpectralElementFace::Free};
-  SpectralElementTraction load;
+  SpectralElementTraction<2> load;
   load.face = 3;
-  load.centre = 0;
-  load.halfWidth = 0.5;
+  load.centre = Vec2(0, 0);
+  load.halfWidth = Vec2(0.5, 0);
   load.traction = Vec2(0.25, -1);
   load.history = [](Real t) { return 2 * t; };
   s.tractions.push_back(load);
-  const SpectralElementElasticity system(s);
+  const SpectralElementElasticity<2> system(s);
   EXPECT_EQ(system.nodeCount(), (8 * 4 + 1) * (2 * 4 + 1));
   const Vector m = system.lumpedMass();
   EXPECT_NEAR(m.sum(), 2 * s.material.density() * 4 * 1, 1e-12);  // two components
@@ -145,10 +145,10 @@ TEST(SpectralElementElasticity, MassDashpotsAndStripLoadIntegrateWhatTheyShould)
 }
 
 TEST(SpectralElementElasticity, FixedFacesAreMaskedSymmetrically) {
-  SpectralElementSettings s = box(3, 0.5);
+  SpectralElementSettings<2> s = box(3, 0.5);
   s.faces[0] = SpectralElementFace::Fixed;
   s.faces[2] = SpectralElementFace::Fixed;
-  const SpectralElementElasticity system(s);
+  const SpectralElementElasticity<2> system(s);
   // K symmetric on the whole vector space: x^T K y = y^T K x for random x, y
   const Vector x = Vector::Random(system.size()), y = Vector::Random(system.size());
   Vector kx, ky;
@@ -172,24 +172,24 @@ TEST(SpectralElementElasticity, FixedFacesAreMaskedSymmetrically) {
 }
 
 TEST(SpectralElementElasticity, RefusesBadInput) {
-  EXPECT_THROW(SpectralElementElasticity(box(0, 0.5)), InputError);
-  EXPECT_THROW(SpectralElementElasticity(box(9, 0.5)), InputError);
+  EXPECT_THROW(SpectralElementElasticity<2>(box(0, 0.5)), InputError);
+  EXPECT_THROW(SpectralElementElasticity<2>(box(9, 0.5)), InputError);
   try {
-    SpectralElementElasticity system(box(4, 0.4));  // 3 / 0.4 is not whole
+    SpectralElementElasticity<2> system(box(4, 0.4));  // 3 / 0.4 is not whole
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "elementSize");
   }
-  SpectralElementSettings s = box(4, 0.5);
-  SpectralElementTraction load;
+  SpectralElementSettings<2> s = box(4, 0.5);
+  SpectralElementTraction<2> load;
   load.face = 3;
-  load.centre = 1.8;
-  load.halfWidth = 0.5;  // ends at 2.3, beyond the face's end at 2
+  load.centre = Vec2(1.8, 0);
+  load.halfWidth = Vec2(0.5, 0);  // ends at 2.3, beyond the face's end at 2
   load.traction = Vec2(0, 1);
   load.history = [](Real) { return 1.0; };
   s.tractions.push_back(load);
   try {
-    SpectralElementElasticity system(s);
+    SpectralElementElasticity<2> system(s);
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "traction");
@@ -200,15 +200,15 @@ TEST(SpectralElementElasticity, RefusesBadInput) {
 // (total force, first moment), and with ends on element boundaries it is the GLL rule's.
 TEST(SpectralElementElasticity, StripLoadIsExactWithEndsInsideElements) {
   for (int order : {1, 2, 4, 8}) {
-    SpectralElementSettings s = box(order, 1.0, Vec2(-3, -2), Vec2(3, 0));
-    SpectralElementTraction load;
+    SpectralElementSettings<2> s = box(order, 1.0, Vec2(-3, -2), Vec2(3, 0));
+    SpectralElementTraction<2> load;
     load.face = 3;
-    load.centre = 0.2;
-    load.halfWidth = 0.55;  // [-0.35, 0.75]
+    load.centre = Vec2(0.2, 0);
+    load.halfWidth = Vec2(0.55, 0);  // [-0.35, 0.75]
     load.traction = Vec2(0, -2);
     load.history = [](Real) { return 1.0; };
     s.tractions.push_back(load);
-    const SpectralElementElasticity system(s);
+    const SpectralElementElasticity<2> system(s);
     Vector f;
     system.force(0, f);
     Real total = 0, moment = 0;
