@@ -137,14 +137,20 @@ def lamb2d_ulsph(dx, alpha=1.0):
                  "1.3", "leapfrog", 1.0, sets, drop=("study.free_block_lower", "study.free_block_upper"))
 
 
-def lamb2d_sem(dx, order=4, cfl=0.5):
-    """The 2-D Lamb problem by the spectral-element reference (lamb2d, method.name = spectral_element):
-    GLL order N on square elements N spacings wide (so dx is the mean node spacing, as for the
-    lattice methods), dashpots on the transmitting faces, central difference."""
+def lamb2d_sem(dx, order=4, cfl=0.5, dimension=2):
+    """A Lamb problem by the spectral-element reference (lamb2d or, with dimension=3, lamb3d;
+    method.name = spectral_element): GLL order N on square / cubic elements N spacings wide (so dx
+    is the mean node spacing, as for the lattice methods), dashpots on the transmitting faces,
+    central difference."""
     sets = ("method.name=spectral_element", f"method.order={order}", f"geometry.spacing={dx}",
             f"study.spacings=[{dx}]", "output.vtk=false", f"integrator.cfl={cfl}")
-    return Point("lamb_2d", "SEM", "lamb2d", "lamb2d.toml", f"dx={dx:g}", f"gll_n{order}", "-",
+    name = f"lamb{dimension}d"
+    return Point(f"lamb_{dimension}d", "SEM", name, f"{name}.toml", f"dx={dx:g}", f"gll_n{order}", "-",
                  "central_difference", cfl, sets, drop=("study.free_block_lower", "study.free_block_upper"))
+
+
+def lamb3d_sem(dx, order=4, cfl=0.5):
+    return lamb2d_sem(dx, order, cfl, dimension=3)
 
 
 PLANE_WAVE_METHODS = {"finite_difference": "FD", "vwsph_consistent": "VW-SPH consistent",
@@ -179,7 +185,7 @@ def _dedupe(points):
 
 
 def default_sweep():
-    """201 points, about 4 minutes on 2 idle cores (the largest: lamb3d's Galerkin variant at dx = 0.0625, about 40 s; the UL-SPH on lamb2d at 0.0625, about 30 s; RK collocation on lamb2d at 0.125, about 20 s)."""
+    """206 points, about 4 minutes on 2 idle cores (the largest: lamb3d's Galerkin variant at dx = 0.0625, about 40 s; the UL-SPH on lamb2d at 0.0625, about 30 s; RK collocation on lamb2d at 0.125, about 20 s)."""
     pts = []
     # Standing wave, finite differences: every integrator over resolutions, then step fractions
     # (1.0 is the 1-D "magic" step of central differences; 1.05 is above the limit and fails).
@@ -217,6 +223,9 @@ def default_sweep():
     pts += [lamb3d(dx, variant="published") for dx in (0.5, 0.25)]
     pts += [lamb3d(dx, kernel="wendland_c2") for dx in (0.5, 0.25)]
     pts += [lamb3d(dx, cfl=0.9) for dx in (0.5, 0.25)]
+    # 3-D Lamb problem, the spectral-element reference (the box, 7 wide, takes elements of 1 and 0.5).
+    pts += [lamb3d_sem(0.5, order=2), lamb3d_sem(0.25), lamb3d_sem(0.125), lamb3d_sem(0.125, order=2),
+            lamb3d_sem(0.25, cfl=0.9)]
     # 2-D Lamb problem (strip load), very weak form SPH: every variant over spacings.
     pts += [lamb2d(dx) for dx in (0.5, 0.25, 0.125, 0.0625, 0.03125)]
     pts += [lamb2d(dx, variant="consistent") for dx in (0.5, 0.25, 0.125, 0.0625, 0.03125)]
@@ -247,7 +256,7 @@ def default_sweep():
 
 
 def full_sweep():
-    """The default points and 201 more: finer resolutions, more kernels and fractions (about 15 minutes on 2 cores; RK collocation on lamb2d at dx = 0.0625 alone takes 3 minutes)."""
+    """The default points and 204 more: finer resolutions, more kernels and fractions (about 15 minutes on 2 cores; RK collocation on lamb2d at dx = 0.0625 alone takes 3 minutes)."""
     pts = default_sweep()
     for integ in ("central_difference", "leapfrog", "newmark", "arkode"):
         pts += [wave1d(c, integ) for c in (4096, 8192)]
@@ -284,6 +293,7 @@ def full_sweep():
     pts += [lamb2d(dx, kernel=k, variant="consistent") for k in ("wendland_c2", "quintic_spline") for dx in (0.125, 0.0625)]
     pts += [lamb2d_rk(0.0625), lamb2d_rk(0.125, order=3, ratio=3.3), lamb2d_rk(0.125, integrator="newmark")]
     pts += [lamb2d_ulsph(dx, alpha=0.0) for dx in (0.25, 0.0625)]
+    pts += [lamb3d_sem(0.0625), lamb3d_sem(0.125, cfl=0.9), lamb3d_sem(0.0625, order=2)]
     pts += [lamb2d_sem(0.015625)] + [lamb2d_sem(dx, order=n) for n in (2, 8) for dx in (0.0625, 0.03125)]
     return _dedupe(pts)
 
