@@ -445,37 +445,63 @@ void SpectralElementElasticity<D>::buildLoads() {
 }
 
 template <int D>
-void SpectralElementElasticity<D>::addStiffnessProduct(const Real* x, Real* y, Real sign) const {
+int SpectralElementElasticity<D>::elementColour(Index e) const {
+  int colour = 0;
+  for (int d = 0; d < D; ++d) {
+    const auto k = static_cast<std::size_t>(d);
+    colour |= static_cast<int>((e % elements_[k]) % 2) << d;
+    e /= elements_[k];
+  }
+  return colour;
+}
+
+template <int D>
+void SpectralElementElasticity<D>::addElementProduct(Index e, const Real* x, Real* y, Real sign, Real* gathered,
+                                                     Real* product) const {
   const Index local = pointsPerElement_;
-  std::vector<Real> gathered(static_cast<std::size_t>(D * local)), product(gathered.size());
   const char* fixed = fixed_.data();
   const Index* offsets = localOffsets_.data();
-  // elements in a fixed order, single-threaded: the result is bitwise reproducible
-  for (Index e = 0; e < elementCount(); ++e) {
-    const Index base = elementBase(e);
-    if (denseElement_.size() > 0) {  // the cached K_e (interleaved local dofs)
-      for (Index l = 0; l < local; ++l) {
-        const Index dof = D * (base + offsets[l]);
-        for (int c = 0; c < D; ++c) gathered[static_cast<std::size_t>(D * l + c)] = fixed[dof + c] ? 0.0 : x[dof + c];
-      }
-      Eigen::Map<Vector>(product.data(), D * local).noalias() =
-          denseElement_ * Eigen::Map<const Vector>(gathered.data(), D * local);
-      for (Index l = 0; l < local; ++l) {
-        const Index dof = D * (base + offsets[l]);
-        for (int c = 0; c < D; ++c)
-          if (!fixed[dof + c]) y[dof + c] += sign * product[static_cast<std::size_t>(D * l + c)];
-      }
-      continue;
-    }
+  const Index base = elementBase(e);
+  if (denseElement_.size() > 0) {  // the cached K_e (interleaved local dofs)
     for (Index l = 0; l < local; ++l) {
       const Index dof = D * (base + offsets[l]);
-      for (int c = 0; c < D; ++c) gathered[static_cast<std::size_t>(c * local + l)] = fixed[dof + c] ? 0.0 : x[dof + c];
+      for (int c = 0; c < D; ++c) gathered[D * l + c] = fixed[dof + c] ? 0.0 : x[dof + c];
     }
-    planarElementProduct(gathered.data(), product.data());
+    Eigen::Map<Vector>(product, D * local).noalias() = denseElement_ * Eigen::Map<const Vector>(gathered, D * local);
     for (Index l = 0; l < local; ++l) {
       const Index dof = D * (base + offsets[l]);
       for (int c = 0; c < D; ++c)
-        if (!fixed[dof + c]) y[dof + c] += sign * product[static_cast<std::size_t>(c * local + l)];
+        if (!fixed[dof + c]) y[dof + c] += sign * product[D * l + c];
+    }
+    return;
+  }
+  for (Index l = 0; l < local; ++l) {
+    const Index dof = D * (base + offsets[l]);
+    for (int c = 0; c < D; ++c) gathered[c * local + l] = fixed[dof + c] ? 0.0 : x[dof + c];
+  }
+  planarElementProduct(gathered, product);
+  for (Index l = 0; l < local; ++l) {
+    const Index dof = D * (base + offsets[l]);
+    for (int c = 0; c < D; ++c)
+      if (!fixed[dof + c]) y[dof + c] += sign * product[c * local + l];
+  }
+}
+
+template <int D>
+void SpectralElementElasticity<D>::addStiffnessProduct(const Real* x, Real* y, Real sign) const {
+  // Elements coloured by the parity of their index along each axis: two elements of one colour are
+  // two or more elements apart along some axis, so they share no node, and every unknown receives
+  // at most one contribution per colour. The colours run in a fixed order, so each unknown's sum is
+  // formed in the same order on any number of threads: the product is bitwise thread-independent.
+  const Index count = elementCount();
+  const auto buffer = static_cast<std::size_t>(D * pointsPerElement_);
+  for (int colour = 0; colour < (1 << D); ++colour) {
+#pragma omp parallel if (count >= kParallelElements)
+    {
+      std::vector<Real> gathered(buffer), product(buffer);
+#pragma omp for schedule(static)
+      for (Index e = 0; e < count; ++e)
+        if (elementColour(e) == colour) addElementProduct(e, x, y, sign, gathered.data(), product.data());
     }
   }
 }

@@ -125,8 +125,16 @@ class SpectralElementElasticity : public LinearOperatorSystem {
   Index elementBase(Index e) const;
   // elementProduct on planar local vectors (component c at c (N + 1)^D + l), what the loop uses.
   void planarElementProduct(const Real* x, Real* y) const;
-  // y += sign * K x over every element (x read with its fixed unknowns as zero), fixed rows left alone.
+  // y += sign * K x over every element (x read with its fixed unknowns as zero), fixed rows left alone;
+  // OpenMP over the elements of one colour at a time (elementColour), bitwise thread-independent.
   void addStiffnessProduct(const Real* x, Real* y, Real sign) const;
+  // y += sign * K_e x_e for element e; `gathered` and `product` hold D (N + 1)^D values each.
+  void addElementProduct(Index e, const Real* x, Real* y, Real sign, Real* gathered, Real* product) const;
+  // The parity of the element's index along each axis, one bit per axis: elements of one colour
+  // share no node.
+  int elementColour(Index e) const;
+  // Below this many elements the product runs on one thread (a parallel region costs more).
+  static constexpr Index kParallelElements = 64;
 
   SpectralElementSettings<D> settings_;
   Nodes elements_{}, nodes_{};
