@@ -70,6 +70,7 @@
 #include "io/run/SceneDriver.hpp"
 #include "io/scene/Format.hpp"
 #include "io/scene/LoadScene.hpp"
+#include "methods/spectral_element/SpectralElementElasticity.hpp"
 #include "particles/BoxFace.hpp"
 #include "study/CollocationSpec.hpp"
 #include "study/VeryWeakSphScene.hpp"
@@ -342,11 +343,6 @@ std::string spectralElementCaseName(int order, Real dx) {
   return s.str();
 }
 
-// Whether `length` is a whole number of `size`.
-bool wholeMultiple(Real length, Real size) {
-  const Real count = length / size;
-  return std::round(count) >= 1 && std::abs(count - std::round(count)) <= 1e-9 * std::max<Real>(1, count);
-}
 
 // The spectral-element plan (lamb2d or lamb3d, method.name = spectral_element): one case per spacing, elements
 // method.order spacings wide, the scene's spacing first (with exact.csv).
@@ -371,7 +367,7 @@ void readSpectralElementPlan(SceneReader& reader, Plan& plan) {
     const std::string key = i == 0 ? "geometry.spacing" : "study.spacings";
     const Real size = order * g.spacing;
     for (std::size_t a = 0; a < static_cast<std::size_t>(kDimension); ++a)
-      if (!wholeMultiple(g.upper[a] - g.lower[a], size))
+      if (wholeElements(g.upper[a] - g.lower[a], size) < 0)
         reader.fail(key, "spectral elements of order " + std::to_string(order) + " at spacing " +
                              scene::formatNumber(g.spacing) + " are " + scene::formatNumber(size) +
                              " wide, which does not divide the box " + g.describeBox() +
@@ -382,7 +378,7 @@ void readSpectralElementPlan(SceneReader& reader, Plan& plan) {
     for (std::size_t along = 0; along < static_cast<std::size_t>(kDimension) && !noted; ++along) {
       if (along == normal) continue;
       for (const Real end : {load.centre[along] - load.halfWidth[along], load.centre[along] + load.halfWidth[along]})
-        if (end > g.lower[along] && !wholeMultiple(end - g.lower[along], size)) {
+        if (end > g.lower[along] && wholeElements(end - g.lower[along], size) < 0) {
           plan.notes.push_back(spectralElementCaseName(order, g.spacing) + ": the loaded " +
                                (kDimension == 2 ? "strip's end " : "square's edge ") + scene::formatNumber(end) +
                                " falls inside an element " + scene::formatNumber(size) +

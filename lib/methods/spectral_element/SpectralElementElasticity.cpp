@@ -13,13 +13,6 @@ namespace mfwave {
 
 namespace {
 
-// The number of elements of size h in `length`, or -1 when it is not a whole number.
-Index wholeElements(Real length, Real h) {
-  const Real count = length / h;
-  const Real rounded = std::round(count);
-  if (rounded < 1 || std::abs(count - rounded) > 1e-9 * std::max<Real>(1, count)) return -1;
-  return static_cast<Index>(rounded);
-}
 
 // Calls f(index) for every multi-index below `extent`, axis 0 fastest (the node numbering's order).
 template <int D, class F>
@@ -76,6 +69,13 @@ class SpectralElementCentredDamping : public CentredDampingSolve {
 };
 
 }  // namespace
+
+Index wholeElements(Real length, Real h) {
+  const Real count = length / h;
+  const Real rounded = std::round(count);
+  if (rounded < 1 || std::abs(count - rounded) > 1e-9 * std::max<Real>(1, count)) return -1;
+  return static_cast<Index>(rounded);
+}
 
 template <int D>
 SpectralElementElasticity<D>::SpectralElementElasticity(SpectralElementSettings<D> settings)

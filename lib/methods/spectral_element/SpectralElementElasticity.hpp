@@ -67,6 +67,10 @@ struct SpectralElementSettings {
   }
 };
 
+// The number of elements of size h in `length`, or -1 when it is not a whole number of them (to
+// 1e-9 relative): what the mesh requires of the box, and what a study checks before building one.
+Index wholeElements(Real length, Real h);
+
 template <int D>
 class SpectralElementElasticity : public LinearOperatorSystem {
  public:
