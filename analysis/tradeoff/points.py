@@ -154,15 +154,21 @@ def lamb3d_sem(dx, order=4, cfl=0.5):
 
 
 PLANE_WAVE_METHODS = {"finite_difference": "FD", "vwsph_consistent": "VW-SPH consistent",
-                      "vwsph_published": "VW-SPH published", "vwsph_galerkin": "VW-SPH galerkin", "rkcm": "RKCM"}
+                      "vwsph_published": "VW-SPH published", "vwsph_galerkin": "VW-SPH galerkin", "rkcm": "RKCM",
+                      "ulsph": "UL-SPH alpha 0", "ulsph_corrected": "UL-SPH corrected alpha 0",
+                      "spectral_element": "SEM"}
 
 
 def planewave(cells, method="vwsph_consistent", kernel="cubic_spline", ratio=1.3, integrator="central_difference",
-              cfl=0.5):
-    """A P wave, two wavelengths across the periodic unit square, over two periods (planewave driver)."""
+              cfl=0.5, order=4):
+    """A P wave, two wavelengths across the periodic unit square, over two periods (planewave driver).
+    ulsph / ulsph_corrected: the updated-Lagrangian SPH linearised about rest (viscosity off, hence
+    "alpha 0"); spectral_element: GLL order `order` on periodic elements `order` cells wide."""
     if method == "rkcm":
         kernel_name, support = "cubic_b_spline_m2", ratio
         sets = [f"study.rk_support_ratio={ratio}"]
+    elif method == "spectral_element":
+        kernel_name, support, sets = f"gll_n{order}", "-", [f"study.sem_order={order}"]
     elif method in ("finite_difference", "vwsph_galerkin"):
         kernel_name, support, sets = ("-" if method == "finite_difference" else "tent"), "-", []
     else:
@@ -252,6 +258,12 @@ def default_sweep():
             for c in (32, 128)]
     pts += [planewave(c, m, integrator=i) for m in ("finite_difference", "vwsph_consistent")
             for i in ("newmark", "arkode") for c in (32, 128)]
+    # ... the updated-Lagrangian SPH linearised about rest, plain and kernel-gradient corrected, and
+    # the spectral elements (order 4 over resolutions, orders 2 and 8, the step fraction 0.9).
+    pts += [planewave(c, m) for m in ("ulsph", "ulsph_corrected") for c in (16, 32, 64, 128, 256)]
+    pts += [planewave(c, "spectral_element") for c in (16, 32, 64, 128)]
+    pts += [planewave(c, "spectral_element", order=n) for n in (2, 8) for c in (32, 64)]
+    pts += [planewave(c, "spectral_element", cfl=0.9) for c in (32, 64)]
     return _dedupe(pts)
 
 
@@ -287,6 +299,8 @@ def full_sweep():
                                                                              ("quintic_spline", 1.0))
             for c in (16, 64, 256)]
     pts += [planewave(c, "rkcm", ratio=r, integrator="newmark") for r in (2.2, 2.5) for c in (256,)]
+    pts += [planewave(c, m) for m in ("ulsph", "ulsph_corrected") for c in (512,)]
+    pts += [planewave(256, "spectral_element")] + [planewave(128, "spectral_element", order=n) for n in (2, 8)]
     pts += [planewave(c, m, cfl=f) for m in ("finite_difference", "vwsph_consistent") for f in (0.25, 0.75)
             for c in (32, 128, 512)]
     pts += [lamb2d(0.015625), lamb2d(0.015625, variant="consistent")]

@@ -1,10 +1,11 @@
 // planewave: a plane P or S wave in a periodic box, for the linear methods (finite differences,
-// very weak SPH published and consistent, RK collocation), against the exact solution
+// very weak SPH published, consistent and Galerkin, RK collocation, the updated-Lagrangian SPH
+// linearised about rest, the spectral elements), against the exact solution
 // u = U e cos(k . x - omega t). The operator is the method's interior row repeated on the periodic
-// lattice (lib/analysis/PeriodicLattice.hpp), assembled once as a sparse matrix, so the box has no
-// boundary and the error is the method's and the integrator's dispersion alone. The step is a
-// fraction of the central-difference limit 2 / omega_max of the whole discrete spectrum (FFT,
-// DispersionSpectrum). One of the speed-accuracy sweep's reference problems
+// lattice (lib/analysis/PeriodicLattice.hpp), or the spectral elements with periodic faces, so the
+// box has no boundary and the error is the method's and the integrator's dispersion alone. The step
+// is a fraction of the central-difference limit 2 / omega_max of the whole discrete spectrum (FFT,
+// DispersionSpectrum; a power iteration for the spectral elements). One of the speed-accuracy sweep's reference problems
 // (docs/studies/tradeoff.md).
 //
 //   planewave [--scene data/scenes/planewave.toml] [--set study.cells=64] [--out DIR]
@@ -39,8 +40,11 @@ SceneSchema planeWaveSchema() {
   schema.add("study.dimension", ValueType::Integer).withUnit("-").defaultsTo("2").between(1, 3).describedAs(
       "dimension of the periodic box");
   schema.add("study.method", ValueType::String).defaultsTo("\"vwsph_consistent\"")
-      .oneOf({"finite_difference", "vwsph_published", "vwsph_consistent", "vwsph_galerkin", "rkcm"})
-      .describedAs("method (rkcm has a consistent mass, which explicit integrators solve every step)");
+      .oneOf({"finite_difference", "vwsph_published", "vwsph_consistent", "vwsph_galerkin", "rkcm", "ulsph",
+              "ulsph_corrected", "spectral_element"})
+      .describedAs("method (rkcm has a consistent mass, which explicit integrators solve every step; ulsph and "
+                   "ulsph_corrected are the updated-Lagrangian SPH linearised about rest, viscosity off; "
+                   "spectral_element is the GLL spectral-element reference on periodic elements)");
   schema.add("study.cells", ValueType::Integer).withUnit("-").defaultsTo("32").atLeast(8).describedAs(
       "lattice nodes per axis (even); dx = 1 / cells, the box is the unit cube");
   schema.add("study.wavelengths", ValueType::Integer).withUnit("-").defaultsTo("2").atLeast(1).describedAs(
@@ -62,6 +66,8 @@ SceneSchema planeWaveSchema() {
       "RK collocation basis order");
   schema.add("study.rk_support_ratio", ValueType::Number).withUnit("-").defaultsTo("2.5").positive().describedAs(
       "RK support a / dx");
+  schema.add("study.sem_order", ValueType::Integer).withUnit("-").defaultsTo("4").between(1, 8).describedAs(
+      "spectral_element: GLL order N (elements N spacings wide; cells a multiple of 2 N)");
   schema.add("integrator", ValueType::Table).describedAs("time integration");
   schema.add("integrator.name", ValueType::String).defaultsTo("\"central_difference\"")
       .oneOf(secondOrderIntegratorNames()).describedAs("time integrator");
@@ -131,6 +137,7 @@ int main(int argc, char** argv) {
     s.lattice.smoothingLengthRatio = reader.number("study.smoothing_length_ratio");
     s.lattice.rkOrder = static_cast<int>(reader.integer("study.rk_order"));
     s.lattice.rkSupportRatio = reader.number("study.rk_support_ratio");
+    s.semOrder = static_cast<int>(reader.integer("study.sem_order"));
     s.integrator = reader.string("integrator.name");
     s.cfl = reader.number("integrator.cfl");
     const std::string sceneFolder = reader.string("output.folder");

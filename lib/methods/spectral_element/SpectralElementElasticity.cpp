@@ -92,8 +92,19 @@ SpectralElementElasticity<D>::SpectralElementElasticity(SpectralElementSettings<
       problem << "the side " << length << " along axis " << axis << " is not a whole number of elements of size " << h;
       throw InputError("elementSize", problem.str());
     }
-    elements_[static_cast<std::size_t>(axis)] = count;
-    nodes_[static_cast<std::size_t>(axis)] = count * n + 1;
+    const auto a = static_cast<std::size_t>(axis);
+    const bool lowerPeriodic = settings_.faces[2 * a] == SpectralElementFace::Periodic;
+    const bool upperPeriodic = settings_.faces[2 * a + 1] == SpectralElementFace::Periodic;
+    if (lowerPeriodic != upperPeriodic)
+      throw InputError("faces", "axis " + std::to_string(axis) + " is periodic on one face only (both or neither)");
+    periodic_[a] = lowerPeriodic;
+    // Elements of one parity colour share no node (addStiffnessProduct); around a periodic axis the
+    // first and last elements are neighbours, so their parities must differ (or be the one element).
+    if (periodic_[a] && count > 1 && count % 2 != 0)
+      throw InputError("elementSize", "the periodic axis " + std::to_string(axis) + " has " + std::to_string(count) +
+                                          " elements: an even number (or one) is needed");
+    elements_[a] = count;
+    nodes_[a] = periodic_[a] ? count * n : count * n + 1;
   }
   const QuadratureRule rule = gaussLobattoLegendre(n);
   gllNodes_ = rule.nodes;
@@ -105,7 +116,7 @@ SpectralElementElasticity<D>::SpectralElementElasticity(SpectralElementSettings<
       for (int a = 0; a <= n; ++a)
         coordinates[static_cast<std::size_t>(e * n + a)] =
             settings_.lower[axis] + h * (static_cast<Real>(e) + 0.5 * (1 + gllNodes_[static_cast<std::size_t>(a)]));
-    coordinates.back() = settings_.upper[axis];
+    if (!periodic_[static_cast<std::size_t>(axis)]) coordinates.back() = settings_.upper[axis];
   }
   buildReferenceData();
   // In 2-D the element matrix is small (50 square for N = 4) and its dense product, vectorised by
@@ -316,16 +327,34 @@ Index SpectralElementElasticity<D>::elementBase(Index e) const {
 }
 
 template <int D>
+void SpectralElementElasticity<D>::elementNodes(Index e, Index* nodes) const {
+  const Index base = elementBase(e);
+  for (Index l = 0; l < pointsPerElement_; ++l) nodes[l] = base + localOffsets_[static_cast<std::size_t>(l)];
+  Index stride = 1;
+  for (int d = 0; d < D; ++d) {
+    const auto k = static_cast<std::size_t>(d);
+    const Index along = e % elements_[k];
+    e /= elements_[k];
+    // the last element's far line is the axis' first: one axis length back
+    if (periodic_[k] && along == elements_[k] - 1)
+      for (Index l = 0; l < pointsPerElement_; ++l)
+        if (lineIndex_[k][static_cast<std::size_t>(l)] == settings_.order) nodes[l] -= nodes_[k] * stride;
+    stride *= nodes_[k];
+  }
+}
+
+template <int D>
 void SpectralElementElasticity<D>::buildMassAndDamping() {
   const int n = settings_.order;
   const Real h = settings_.elementSize;
   const Real rho = settings_.material.density();
   // Komatitsch & Tromp 1999: GLL quadrature on the GLL nodes makes M diagonal, rho w_a w_b (w_c) J.
   mass_ = Vector::Zero(size());
+  std::vector<Index> nodes(static_cast<std::size_t>(pointsPerElement_));
   for (Index e = 0; e < elementCount(); ++e) {
-    const Index base = elementBase(e);
+    elementNodes(e, nodes.data());
     for (Index l = 0; l < pointsPerElement_; ++l) {
-      const Index node = base + localOffsets_[static_cast<std::size_t>(l)];
+      const Index node = nodes[static_cast<std::size_t>(l)];
       for (int c = 0; c < D; ++c) mass_[D * node + c] += rho * pointWeights_[static_cast<std::size_t>(l)];
     }
   }
@@ -342,10 +371,10 @@ void SpectralElementElasticity<D>::buildMassAndDamping() {
     const Index line = faceSign(face) < 0 ? 0 : nodes_[a] - 1;
     const int localLine = faceSign(face) < 0 ? 0 : n;
     for (Index e = 0; e < elementCount(); ++e) {
-      const Index base = elementBase(e);
+      elementNodes(e, nodes.data());
       for (Index l = 0; l < pointsPerElement_; ++l) {
         if (lineIndex_[a][static_cast<std::size_t>(l)] != localLine) continue;
-        const Index node = base + localOffsets_[static_cast<std::size_t>(l)];
+        const Index node = nodes[static_cast<std::size_t>(l)];
         // the node's index along the axis: only the elements touching the face contribute
         Index rest = node;
         for (int d = 0; d < axis; ++d) rest /= nodes_[static_cast<std::size_t>(d)];
@@ -379,6 +408,7 @@ void SpectralElementElasticity<D>::buildLoads() {
     if (!t.history) throw InputError("traction", "needs a time function");
     const int axis = faceAxis(t.face);
     const auto a = static_cast<std::size_t>(axis);
+    if (periodic_[a]) throw InputError("traction", "face " + std::to_string(t.face) + " is periodic: it is no boundary");
     for (int d = 0; d < D; ++d) {
       if (d == axis) continue;
       const Real start = t.centre[d] - t.halfWidth[d], end = t.centre[d] + t.halfWidth[d];
@@ -410,7 +440,8 @@ void SpectralElementElasticity<D>::buildLoads() {
       Index linear = 0;
       for (int d = D - 1; d >= 0; --d)
         linear = linear * elements_[static_cast<std::size_t>(d)] + element[static_cast<std::size_t>(d)];
-      const Index base = elementBase(linear);
+      std::vector<Index> nodes(static_cast<std::size_t>(pointsPerElement_));
+      elementNodes(linear, nodes.data());
       // tensor Gauss points over the loaded box (one point along the normal axis)
       Nodes gaussExtent{};
       gaussExtent.fill(static_cast<Index>(gauss.nodes.size()));
@@ -433,7 +464,7 @@ void SpectralElementElasticity<D>::buildLoads() {
             if (d != axis)
               phi *= lagrange(gllNodes_, xi[static_cast<std::size_t>(d)],
                               lineIndex_[static_cast<std::size_t>(d)][static_cast<std::size_t>(l)]);
-          const Index node = base + localOffsets_[static_cast<std::size_t>(l)];
+          const Index node = nodes[static_cast<std::size_t>(l)];
           for (int c = 0; c < D; ++c) load[D * node + c] += t.traction[c] * phi;
         }
       });
@@ -457,31 +488,30 @@ int SpectralElementElasticity<D>::elementColour(Index e) const {
 
 template <int D>
 void SpectralElementElasticity<D>::addElementProduct(Index e, const Real* x, Real* y, Real sign, Real* gathered,
-                                                     Real* product) const {
+                                                     Real* product, Index* nodes) const {
   const Index local = pointsPerElement_;
   const char* fixed = fixed_.data();
-  const Index* offsets = localOffsets_.data();
-  const Index base = elementBase(e);
+  elementNodes(e, nodes);
   if (denseElement_.size() > 0) {  // the cached K_e (interleaved local dofs)
     for (Index l = 0; l < local; ++l) {
-      const Index dof = D * (base + offsets[l]);
+      const Index dof = D * nodes[l];
       for (int c = 0; c < D; ++c) gathered[D * l + c] = fixed[dof + c] ? 0.0 : x[dof + c];
     }
     Eigen::Map<Vector>(product, D * local).noalias() = denseElement_ * Eigen::Map<const Vector>(gathered, D * local);
     for (Index l = 0; l < local; ++l) {
-      const Index dof = D * (base + offsets[l]);
+      const Index dof = D * nodes[l];
       for (int c = 0; c < D; ++c)
         if (!fixed[dof + c]) y[dof + c] += sign * product[D * l + c];
     }
     return;
   }
   for (Index l = 0; l < local; ++l) {
-    const Index dof = D * (base + offsets[l]);
+    const Index dof = D * nodes[l];
     for (int c = 0; c < D; ++c) gathered[c * local + l] = fixed[dof + c] ? 0.0 : x[dof + c];
   }
   planarElementProduct(gathered, product);
   for (Index l = 0; l < local; ++l) {
-    const Index dof = D * (base + offsets[l]);
+    const Index dof = D * nodes[l];
     for (int c = 0; c < D; ++c)
       if (!fixed[dof + c]) y[dof + c] += sign * product[c * local + l];
   }
@@ -499,9 +529,11 @@ void SpectralElementElasticity<D>::addStiffnessProduct(const Real* x, Real* y, R
 #pragma omp parallel if (count >= kParallelElements)
     {
       std::vector<Real> gathered(buffer), product(buffer);
+      std::vector<Index> nodes(static_cast<std::size_t>(pointsPerElement_));
 #pragma omp for schedule(static)
       for (Index e = 0; e < count; ++e)
-        if (elementColour(e) == colour) addElementProduct(e, x, y, sign, gathered.data(), product.data());
+        if (elementColour(e) == colour)
+          addElementProduct(e, x, y, sign, gathered.data(), product.data(), nodes.data());
     }
   }
 }
@@ -565,13 +597,13 @@ Vector SpectralElementElasticity<D>::stiffnessAbsoluteRowSums() const {
   const Eigen::MatrixXd absolute = elementStiffness().cwiseAbs();
   const Vector rowSums = absolute.rowwise().sum();
   Vector sums = Vector::Zero(size());
-  std::vector<Index> dofs(static_cast<std::size_t>(local));
+  std::vector<Index> dofs(static_cast<std::size_t>(local)), nodes(static_cast<std::size_t>(pointsPerElement_));
   for (Index e = 0; e < elementCount(); ++e) {
-    const Index base = elementBase(e);
+    elementNodes(e, nodes.data());
     bool anyFixed = false;
     for (Index l = 0; l < pointsPerElement_; ++l)
       for (int c = 0; c < D; ++c) {
-        const Index dof = D * (base + localOffsets_[static_cast<std::size_t>(l)]) + c;
+        const Index dof = D * nodes[static_cast<std::size_t>(l)] + c;
         dofs[static_cast<std::size_t>(D * l + c)] = dof;
         anyFixed = anyFixed || fixed_[static_cast<std::size_t>(dof)] != 0;
       }
@@ -634,6 +666,7 @@ ParticleSet<D> SpectralElementElasticity<D>::nodeParticles() const {
     for (int d = 0; d < D; ++d) {
       const Index i = rest % nodes_[static_cast<std::size_t>(d)];
       rest /= nodes_[static_cast<std::size_t>(d)];
+      if (periodic_[static_cast<std::size_t>(d)]) continue;  // no face along a periodic axis
       if (i == 0) faces |= faceBit(2 * d);
       if (i == nodes_[static_cast<std::size_t>(d)] - 1) faces |= faceBit(2 * d + 1);
     }

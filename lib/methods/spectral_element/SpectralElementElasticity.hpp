@@ -23,7 +23,10 @@
 //   faces         free (natural), fixed (u = 0: those unknowns are masked out of K, f and the
 //                 acceleration, so K stays symmetric), absorbing (Lysmer & Kuhlemeyer 1969
 //                 dashpots: C diagonal, rho c_p on the normal and rho c_s on the tangential
-//                 components, times the node's face GLL weights times the face Jacobian (h/2)^(D-1))
+//                 components, times the node's face GLL weights times the face Jacobian (h/2)^(D-1)),
+//                 periodic (both faces of an axis: the last element's far nodes are the first
+//                 element's near ones, so the axis has elements * N nodes and no face; the plane-wave
+//                 study's periodic box)
 //   loads         tractions T f(t) on a rectangle |x_t - centre_t| < halfWidth_t (t the face's
 //                 tangential axes) of a face, integrated against each basis function exactly:
 //                 tensor Gauss-Legendre of N + 1 points per axis over the loaded part of each face
@@ -40,7 +43,7 @@
 
 namespace mfwave {
 
-enum class SpectralElementFace { Free, Fixed, Absorbing };
+enum class SpectralElementFace { Free, Fixed, Absorbing, Periodic };
 
 template <int D>
 struct SpectralElementTraction {
@@ -77,8 +80,10 @@ class SpectralElementElasticity : public LinearOperatorSystem {
   using Nodes = std::array<Index, D>;
 
   // Throws InputError("order") outside 1..8, InputError("elementSize") when the box is not a
-  // whole number of elements, InputError("traction") for a rectangle outside its face, of no
-  // width, or a traction without history.
+  // whole number of elements (or, along a periodic axis, an odd number above one: the parity
+  // colouring of the element loop needs the first and last elements to differ in colour),
+  // InputError("faces") for an axis periodic on one face only, InputError("traction") for a
+  // rectangle outside its face, of no width, on a periodic face, or a traction without history.
   explicit SpectralElementElasticity(SpectralElementSettings<D> settings);
 
   Index size() const override { return D * nodeCount(); }
@@ -127,13 +132,18 @@ class SpectralElementElasticity : public LinearOperatorSystem {
   void buildLoads();
   // The first global node of element `e` (its local node 0).
   Index elementBase(Index e) const;
+  // The global node of each of element e's (N + 1)^D local nodes: elementBase(e) + the local
+  // offset, wrapped along periodic axes for the last element's far nodes.
+  void elementNodes(Index e, Index* nodes) const;
   // elementProduct on planar local vectors (component c at c (N + 1)^D + l), what the loop uses.
   void planarElementProduct(const Real* x, Real* y) const;
   // y += sign * K x over every element (x read with its fixed unknowns as zero), fixed rows left alone;
   // OpenMP over the elements of one colour at a time (elementColour), bitwise thread-independent.
   void addStiffnessProduct(const Real* x, Real* y, Real sign) const;
-  // y += sign * K_e x_e for element e; `gathered` and `product` hold D (N + 1)^D values each.
-  void addElementProduct(Index e, const Real* x, Real* y, Real sign, Real* gathered, Real* product) const;
+  // y += sign * K_e x_e for element e; `gathered` and `product` hold D (N + 1)^D values each,
+  // `nodes` (N + 1)^D.
+  void addElementProduct(Index e, const Real* x, Real* y, Real sign, Real* gathered, Real* product,
+                         Index* nodes) const;
   // The parity of the element's index along each axis, one bit per axis: elements of one colour
   // share no node.
   int elementColour(Index e) const;
@@ -142,6 +152,7 @@ class SpectralElementElasticity : public LinearOperatorSystem {
 
   SpectralElementSettings<D> settings_;
   Nodes elements_{}, nodes_{};
+  std::array<bool, D> periodic_{};               // per axis
   Index pointsPerElement_ = 0;                   // (N + 1)^D
   std::vector<Real> gllNodes_, gllWeights_;
   std::array<std::vector<Real>, D> axisCoordinates_;  // the global nodes' coordinates along each axis
