@@ -8,6 +8,7 @@ packages=(
   libsundials-dev libeigen3-dev libsuitesparse-dev libfftw3-dev libvtk9-dev
   libgtest-dev libbenchmark-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libx11-dev xvfb xauth python3-matplotlib python3-numpy
+  clang libclang-rt-14-dev libomp-dev
 )
 
 missing=()

@@ -1,10 +1,10 @@
 #include "core/TimeFunction.hpp"
 
+#include "core/BoundedRead.hpp"
 #include "core/Error.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -73,8 +73,11 @@ TimeFunction TimeFunction::tabulated(std::vector<Real> times, std::vector<Real> 
 }
 
 TimeFunction TimeFunction::fromCsv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("file", "cannot open time-function table '" + path + "'");
+  return fromCsvText(readBoundedFile(path, kMaxTableBytes, "file", "the time-function table"), path);
+}
+
+TimeFunction TimeFunction::fromCsvText(const std::string& text, const std::string& path) {
+  std::istringstream in(text);
   std::vector<Real> times, values;
   std::string line;
   int lineNumber = 0;

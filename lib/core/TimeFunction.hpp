@@ -27,9 +27,12 @@ class TimeFunction {
   // Piecewise linear through (times[i], values[i]); times strictly increasing, at least 2 points;
   // held constant at the end values outside the table.
   static TimeFunction tabulated(std::vector<Real> times, std::vector<Real> values);
-  // A CSV file with two numeric columns (time, value); one header line is allowed; '#' starts a
-  // comment. Errors name the file and the line.
+  // A CSV file with two numeric columns (time, value); header lines before the data are skipped;
+  // '#' starts a comment. Errors name the file and the line. At most kMaxTableBytes
+  // (core/BoundedRead.hpp) are read.
   static TimeFunction fromCsv(const std::string& path);
+  // The same for the table's text; `source` names it in messages.
+  static TimeFunction fromCsvText(const std::string& text, const std::string& source);
 
   Real operator()(Real t) const;
   Kind kind() const { return kind_; }

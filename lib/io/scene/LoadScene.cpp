@@ -1,11 +1,10 @@
 #include "io/scene/LoadScene.hpp"
 
+#include "core/BoundedRead.hpp"
 #include "io/scene/KeyDepth.hpp"
 #include "io/scene/Override.hpp"
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
 namespace mfwave {
 namespace {
@@ -20,6 +19,9 @@ SceneReader finish(toml::table&& table, const std::string& sourceName, const std
 }
 
 toml::table parseText(const std::string& text, const std::string& sourceName) {
+  if (text.size() > kMaxSceneBytes)
+    throw SceneError(sourceName, "(syntax)", "the scene text is larger than the limit of " +
+                                                 std::to_string(kMaxSceneBytes) + " bytes");
   checkKeyDepth(text, sourceName);  // before toml++, which would overflow the stack on a deep key
   try {
     return toml::parse(text, std::string_view(sourceName));
@@ -34,14 +36,12 @@ toml::table parseText(const std::string& text, const std::string& sourceName) {
 
 SceneReader loadScene(const std::string& path, const std::vector<std::string>& overrides, SceneSchema schema) {
   namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec))
-    throw SceneError("", "--scene", "cannot read the scene file '" + path + "': " +
-                                        (fs::exists(path, ec) ? "not a regular file" : "no such file"));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError("", "--scene", "cannot read the scene file '" + path + "'");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw SceneError("", "--scene", "cannot read the scene file '" + path + "'");
+  std::string text;
+  try {
+    text = readBoundedFile(path, kMaxSceneBytes, "--scene", "the scene file");
+  } catch (const InputError& e) {
+    throw SceneError("", "--scene", e.problem());
+  }
   const fs::path parent = fs::path(path).parent_path();
   return finish(parseText(text, path), path, overrides, std::move(schema),
                 parent.empty() ? std::string(".") : parent.string());
