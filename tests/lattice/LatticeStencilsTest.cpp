@@ -4,10 +4,10 @@
 #include "core/Error.hpp"
 #include "lattice/LatticeStencils.hpp"
 
+#include "support/OnThreads.hpp"
 #include "support/RandomVector.hpp"
 
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <random>
 
@@ -74,13 +74,12 @@ TEST(LatticeStencils, RunsGiveThePerNodeRowsBitsOnAnyThreadCount) {
   Vector perNode(x.size());
   for (Index p = 0; p < types.nodeCount(); ++p)
     stencils.rowProduct(types.typeOf(types.node(p)), p, x.data(), perNode.data() + 2 * p);
-  const int threads = omp_get_max_threads();
-  Vector one, two;
-  omp_set_num_threads(1);
-  stencils.multiply(x, one);
-  omp_set_num_threads(2);
-  stencils.multiply(x, two);
-  omp_set_num_threads(threads);
+  const auto product = [&] {
+    Vector y;
+    stencils.multiply(x, y);
+    return y;
+  };
+  const Vector one = testing::onThreads(1, product), two = testing::onThreads(2, product);
   EXPECT_LE((one - perNode).cwiseAbs().maxCoeff(), 1e-14 * perNode.cwiseAbs().maxCoeff());
   EXPECT_EQ((one - two).cwiseAbs().maxCoeff(), 0.0) << "1 against 2 threads";
 }

@@ -7,10 +7,10 @@
 
 #include "methods/spectral_element/GaussLobattoLegendre.hpp"
 #include "methods/spectral_element/SpectralElementElasticity.hpp"
+#include "support/OnThreads.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <array>
 #include <chrono>
@@ -403,13 +403,12 @@ void expectThreadIndependentProduct(const Vec<D>& upper) {
   ASSERT_GE(system.elementCount(), 64);
   Vector x(system.size());
   for (Index i = 0; i < x.size(); ++i) x[i] = std::sin(0.37 * static_cast<Real>(i) + 0.1);
-  const int threadsBefore = omp_get_max_threads();
-  Vector serial, parallel;
-  omp_set_num_threads(1);
-  system.applyStiffness(x, serial);
-  omp_set_num_threads(2);
-  system.applyStiffness(x, parallel);
-  omp_set_num_threads(threadsBefore);
+  const auto product = [&] {
+    Vector y;
+    system.applyStiffness(x, y);
+    return y;
+  };
+  const Vector serial = testing::onThreads(1, product), parallel = testing::onThreads(2, product);
   ASSERT_EQ(serial.size(), parallel.size());
   for (Index i = 0; i < serial.size(); ++i) ASSERT_EQ(serial[i], parallel[i]) << "unknown " << i;
   EXPECT_GT(serial.norm(), 0);

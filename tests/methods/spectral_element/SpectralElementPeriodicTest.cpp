@@ -5,14 +5,12 @@
 
 #include "core/Error.hpp"
 #include "methods/spectral_element/SpectralElementElasticity.hpp"
+#include "support/OnThreads.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace mfwave {
 namespace {
@@ -93,22 +91,17 @@ TEST(SpectralElementPeriodic, PlaneWaveFrequenciesConvergeAtOrderTwoN) {
 }
 
 TEST(SpectralElementPeriodic, ProductIsBitwiseTheSameOnOneAndTwoThreads) {
-#ifdef _OPENMP
   // 8^3 = 512 elements: above the one-thread threshold
   const SpectralElementElasticity<3> system(periodicBox<3>(2, 0.125));
   Vector x(system.size());
   for (Index i = 0; i < x.size(); ++i) x[i] = std::sin(0.37 * static_cast<Real>(i)) + 0.1 * std::cos(1.3 * i);
-  const int before = omp_get_max_threads();
-  Vector one, two;
-  omp_set_num_threads(1);
-  system.applyStiffness(x, one);
-  omp_set_num_threads(2);
-  system.applyStiffness(x, two);
-  omp_set_num_threads(before);
+  const auto product = [&] {
+    Vector y;
+    system.applyStiffness(x, y);
+    return y;
+  };
+  const Vector one = testing::onThreads(1, product), two = testing::onThreads(2, product);
   EXPECT_EQ(std::memcmp(one.data(), two.data(), sizeof(Real) * static_cast<std::size_t>(one.size())), 0);
-#else
-  GTEST_SKIP() << "built without OpenMP";
-#endif
 }
 
 TEST(SpectralElementPeriodic, RefusesBadInput) {
