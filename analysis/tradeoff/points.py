@@ -268,7 +268,7 @@ def default_sweep():
 
 
 def full_sweep():
-    """The default points and 204 more: finer resolutions, more kernels and fractions (about 15 minutes on 2 cores; RK collocation on lamb2d at dx = 0.0625 alone takes 3 minutes)."""
+    """The default points and 205 more: finer resolutions, more kernels and fractions (about 15 minutes on 2 cores; RK collocation on lamb2d at dx = 0.0625 alone takes 3 minutes, the UL-SPH on lamb3d at 0.125 about 9)."""
     pts = default_sweep()
     for integ in ("central_difference", "leapfrog", "newmark", "arkode"):
         pts += [wave1d(c, integ) for c in (4096, 8192)]
@@ -306,6 +306,7 @@ def full_sweep():
     pts += [lamb2d_rk(0.0625), lamb2d_rk(0.125, order=3, ratio=3.3), lamb2d_rk(0.125, integrator="newmark")]
     pts += [lamb2d_ulsph(dx, alpha=0.0) for dx in (0.25, 0.0625)]
     pts += [lamb3d_sem(0.0625), lamb3d_sem(0.125, cfl=0.9), lamb3d_sem(0.0625, order=2)]
+    pts += [lamb3d_ulsph(0.125)]  # about 9 minutes on one free core (185193 particles, 469 steps)
     pts += [lamb2d_sem(0.015625)] + [lamb2d_sem(dx, order=n) for n in (2, 8) for dx in (0.0625, 0.03125)]
     return _dedupe(pts)
 

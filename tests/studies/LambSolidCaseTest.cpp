@@ -2,8 +2,8 @@
 // updated-Lagrangian SPH at dx = 0.5 (561 particles, a fraction of a second) and small amplitude: the
 // lattice's particles without ghosts and with tributary masses, the strip's load (its end particles
 // carry half: the total force is the strip's width times f(t), checked on the method's own
-// accelerations), every probe scored against the exact response (measured errors), the notes; a 3-D
-// scene is refused.
+// accelerations), every probe scored against the exact response (measured errors), the notes; a 1-D
+// scene is refused (3-D: LambSolidCase3dTest.cpp).
 
 #include "core/Error.hpp"
 #include "LambCaseScene.hpp"

@@ -80,23 +80,26 @@
 //          13 x 13 x 7 free block (study.free_block_lower / _upper, the very weak SPH's comparison)
 //          at 10.5 / c_p = 6.06, after it. Measured both ways:
 //            7-box   dx 0.5: 1.323 / 0.882 / 1.128 (3375 particles)   0.25: 0.377 / 0.904 / 0.634 (24389)
+//                    0.125: 0.162 / 0.438 / 0.194 (185193)
 //            13-box  dx 0.5: 1.323 / 0.889 / 1.119 (10935)            0.25: 0.377 / 0.916 / 0.636 (81461)
+//                    (0.125 not run: 628425 particles, about 30 minutes on one free core)
 //          The reflections change the probes by 0.6 %, 5.8 %, 2.8 % (0.5) and 0.8 %, 5.1 %, 4.7 %
 //          (0.25) of the exact response's norm (|v7 - v13| over 1 % of the exact peak from t = 3.1 at
 //          the receiver, 4.7 buried), small beside the method's own error, and the errors move by
 //          0.012 at most (the receiver is slightly better in the 7-box): the 13-box costs 3.3 times the
 //          particles for nothing, so the case runs the scene's box (the driver ignores the free block
 //          with a note). The drift of the free body: 1 / 343 = 0.0029 per unit eps after the pulse.
-//   errors  worse than in 2-D at the same spacing (0.28 / 0.79 / 0.33 at 0.25 there): the square is
+//   errors  fall with dx at every probe, but stay above the 2-D ones at the same spacing (0.28 / 0.79 /
+//          0.33 at 0.25, 0.13 / 0.35 / 0.10 at 0.125 there): the square is
 //          2 spacings wide at dx = 0.5 and 4 at 0.25, the centre overshoots its peak (0.73 against
 //          0.42 at 0.5, +11 % at 0.25) and rings after the pulse with a period of about 1.9, as the 2-D
 //          free surface does, and the receiver's Rayleigh pulse arrives weak (peak -62 % at 0.25).
 //          The buried probe, 2 spacings under the load at 0.5, is 1.13 there, 0.63 at 0.25.
 //   cost   (one thread, on a machine shared with other jobs, so the wall times are upper bounds):
 //          dx = 0.5: 3375 particles, 117 steps, 3.5 s, 38 MiB; 0.25: 24389, 234, 131 s, 75 MiB (the
-//          13-box: 11 s, 52 MiB and 496 s, 178 MiB). About 97 neighbours at 0.5, 109 at 0.25 (h / dx
-//          = 1.3 in 3-D). dx = 0.125 (185193 particles, 469 steps, about 8.7e7 particle-steps, over 10
-//          minutes at the 1.1e5 - 1.5e5 particle-steps per second measured) was not run.
+//          13-box: 11 s, 52 MiB and 496 s, 178 MiB); 0.125: 185193, 469, 820 s (538 s of CPU: 1.6e5
+//          particle-steps per second), 365 MiB. About 97 neighbours at 0.5, 109 at 0.25, 116 at 0.125
+//          (28 in 2-D: h / dx = 1.3).
 //   long run  dx = 0.5 to t = 300 (50 windows; 5862 steps, 230 s on the shared machine, 39 MiB): exit 0,
 //          the stability monitor silent; the largest |v| / eps per interval falls (centre 0.90 over the
 //          window, 0.069 to t = 50, 0.012 over 50 - 100, 0.0046 over 200 - 300; receiver 0.022 and
