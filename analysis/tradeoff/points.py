@@ -137,6 +137,16 @@ def lamb2d_ulsph(dx, alpha=1.0):
                  "1.3", "leapfrog", 1.0, sets, drop=("study.free_block_lower", "study.free_block_upper"))
 
 
+def lamb3d_ulsph(dx, alpha=1.0):
+    """The 3-D Lamb problem by the updated-Lagrangian SPH at small amplitude (lamb3d, method.name =
+    updated_lagrangian_sph), as lamb2d_ulsph: the scene's 7 x 7 x 7 box with every face free (the
+    method has no dashpots; the reflections move its errors by 0.012 at most at dx = 0.25)."""
+    sets = ("method.name=updated_lagrangian_sph", f"method.ul_viscosity_alpha={alpha}", f"geometry.spacing={dx}",
+            f"study.spacings=[{dx}]", "output.vtk=false")
+    return Point("lamb_3d", f"UL-SPH alpha {alpha:g}", "lamb3d", "lamb3d.toml", f"dx={dx:g}", "cubic_spline",
+                 "1.3", "leapfrog", 1.0, sets, drop=("study.free_block_lower", "study.free_block_upper"))
+
+
 def lamb2d_sem(dx, order=4, cfl=0.5, dimension=2):
     """A Lamb problem by the spectral-element reference (lamb2d or, with dimension=3, lamb3d;
     method.name = spectral_element): GLL order N on square / cubic elements N spacings wide (so dx
@@ -191,7 +201,7 @@ def _dedupe(points):
 
 
 def default_sweep():
-    """206 points, about 4 minutes on 2 idle cores (the largest: lamb3d's Galerkin variant at dx = 0.0625, about 40 s; the UL-SPH on lamb2d at 0.0625, about 30 s; RK collocation on lamb2d at 0.125, about 20 s)."""
+    """208 points, about 4 minutes on 2 idle cores (the largest: lamb3d's Galerkin variant at dx = 0.0625, about 40 s; the UL-SPH on lamb2d at 0.0625, about 30 s; RK collocation on lamb2d at 0.125, about 20 s)."""
     pts = []
     # Standing wave, finite differences: every integrator over resolutions, then step fractions
     # (1.0 is the 1-D "magic" step of central differences; 1.05 is above the limit and fails).
@@ -232,6 +242,8 @@ def default_sweep():
     # 3-D Lamb problem, the spectral-element reference (the box, 7 wide, takes elements of 1 and 0.5).
     pts += [lamb3d_sem(0.5, order=2), lamb3d_sem(0.25), lamb3d_sem(0.125), lamb3d_sem(0.125, order=2),
             lamb3d_sem(0.25, cfl=0.9)]
+    # 3-D Lamb problem, the updated-Lagrangian SPH at small amplitude (alpha = 1, lamb2d's best).
+    pts += [lamb3d_ulsph(dx) for dx in (0.5, 0.25)]
     # 2-D Lamb problem (strip load), very weak form SPH: every variant over spacings.
     pts += [lamb2d(dx) for dx in (0.5, 0.25, 0.125, 0.0625, 0.03125)]
     pts += [lamb2d(dx, variant="consistent") for dx in (0.5, 0.25, 0.125, 0.0625, 0.03125)]
@@ -268,7 +280,7 @@ def default_sweep():
 
 
 def full_sweep():
-    """The default points and 204 more: finer resolutions, more kernels and fractions (about 15 minutes on 2 cores; RK collocation on lamb2d at dx = 0.0625 alone takes 3 minutes)."""
+    """The default points and 205 more: finer resolutions, more kernels and fractions (about 15 minutes on 2 cores; RK collocation on lamb2d at dx = 0.0625 alone takes 3 minutes, the UL-SPH on lamb3d at 0.125 about 9)."""
     pts = default_sweep()
     for integ in ("central_difference", "leapfrog", "newmark", "arkode"):
         pts += [wave1d(c, integ) for c in (4096, 8192)]
@@ -308,6 +320,7 @@ def full_sweep():
     pts += [lamb2d_rk(0.0625), lamb2d_rk(0.125, order=3, ratio=3.3), lamb2d_rk(0.125, integrator="newmark")]
     pts += [lamb2d_ulsph(dx, alpha=0.0) for dx in (0.25, 0.0625)]
     pts += [lamb3d_sem(0.0625), lamb3d_sem(0.125, cfl=0.9), lamb3d_sem(0.0625, order=2)]
+    pts += [lamb3d_ulsph(0.125)]  # about 9 minutes on one free core (185193 particles, 469 steps)
     pts += [lamb2d_sem(0.015625)] + [lamb2d_sem(dx, order=n) for n in (2, 8) for dx in (0.0625, 0.03125)]
     return _dedupe(pts)
 

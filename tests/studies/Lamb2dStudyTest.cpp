@@ -6,9 +6,9 @@
 // The same scene by RK collocation (method.name = reproducing_kernel) converges at every receiver;
 // a support with growing modes, the free block and RK collocation in 3-D are refused. The
 // updated-Lagrangian SPH (method.name = updated_lagrangian_sph, at small amplitude) runs it too, its
-// errors falling from dx = 0.5 to 0.25; lamb3d refuses it. So does the spectral-element reference
-// (method.name = spectral_element); elements that do not divide the box are refused (in lamb3d too,
-// which runs the spectral elements: Lamb3dStudyTest).
+// errors falling from dx = 0.5 to 0.25 (lamb3d runs it too: Lamb3dStudyTest). So does the
+// spectral-element reference (method.name = spectral_element); elements that do not divide the box
+// are refused (in lamb3d too, which runs the spectral elements: Lamb3dStudyTest).
 #include "support/StudyRun.hpp"
 
 #include <gtest/gtest.h>
@@ -211,16 +211,6 @@ TEST(Lamb2dStudy, TheUpdatedLagrangianSphRunsTheSameSceneAndItsErrorsFallWithRef
   EXPECT_NE(summary.find("the traction is 0.0001 times the scene's"), std::string::npos);
   EXPECT_NE(summary.find("after the error window"), std::string::npos);
   EXPECT_NE(summary.find("\"leapfrog\""), std::string::npos);
-}
-
-TEST(Lamb2dStudy, Lamb3dRefusesTheUpdatedLagrangianSphNamingTheKey) {
-  const fs::path out = fs::temp_directory_path() / "mfwave-lamb3d-ulsph";
-  const auto run = runStudy(LAMB3D_EXECUTABLE, std::string(SCENES_FOLDER) + "/lamb3d.toml",
-                            "--set method.name=updated_lagrangian_sph --out " + out.string(), "lamb3d-ulsph");
-  ASSERT_TRUE(run.exited);
-  EXPECT_EQ(run.exitCode, 2) << run.log;
-  EXPECT_NE(run.log.find("method.name"), std::string::npos) << run.log;
-  EXPECT_NE(run.log.find("lamb2d"), std::string::npos) << run.log;
 }
 
 // The spectral-element reference on the same scene (method.name = spectral_element, N = 4, elements

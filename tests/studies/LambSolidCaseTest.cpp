@@ -2,8 +2,8 @@
 // updated-Lagrangian SPH at dx = 0.5 (561 particles, a fraction of a second) and small amplitude: the
 // lattice's particles without ghosts and with tributary masses, the strip's load (its end particles
 // carry half: the total force is the strip's width times f(t), checked on the method's own
-// accelerations), every probe scored against the exact response (measured errors), the notes; a 3-D
-// scene is refused.
+// accelerations), every probe scored against the exact response (measured errors), the notes; a 1-D
+// scene is refused (3-D: LambSolidCase3dTest.cpp).
 
 #include "core/Error.hpp"
 #include "LambCaseScene.hpp"
@@ -34,7 +34,7 @@ CaseSettings solidCase(const Scene& scene) {
 TEST(LambSolidCase, TheStripsTotalForceIsItsWidthTimesTheLoad) {
   const StudySettings study = lamb2dCaseStudy({"geometry.spacing=0.5"}, 6.0);
   const Scene& scene = study.scene;
-  const ParticleSet<2> particles = lambSolidParticles(scene.geometry, true);
+  const ParticleSet<2> particles = lambSolidParticles<2>(scene.geometry, true);
   ASSERT_EQ(particles.size(), 33 * 17);  // no ghosts
   EXPECT_EQ(particles.physicalCount(), 33 * 17);
   Real mass = 0;
@@ -42,18 +42,18 @@ TEST(LambSolidCase, TheStripsTotalForceIsItsWidthTimesTheLoad) {
   EXPECT_NEAR(mass, 16.0 * 8.0, 1e-12);  // tributary areas fill the rectangle
 
   // x = -0.5, 0, 0.5 on the top face: the ends carry half their segment
-  const StripTraction strip = stripTraction(scene.loads[0], particles, 0.5);
+  const PatchTraction strip = patchTraction<2>(scene.loads[0], particles, 0.5);
   ASSERT_EQ(strip.particles.size(), 3u);
-  EXPECT_EQ(strip.lengths, (std::vector<Real>{0.25, 0.5, 0.25}));
-  EXPECT_DOUBLE_EQ(strip.totalLength(), 1.0);
+  EXPECT_EQ(strip.measures, (std::vector<Real>{0.25, 0.5, 0.25}));
+  EXPECT_DOUBLE_EQ(strip.totalMeasure(), 1.0);
   // At 0.25 five particles, the same total.
   const GeometrySpec finer = scene.geometry.withLattice(scene.geometry.lower, scene.geometry.upper, 0.25);
-  EXPECT_DOUBLE_EQ(stripTraction(scene.loads[0], lambSolidParticles(finer, true), 0.25).totalLength(), 1.0);
+  EXPECT_DOUBLE_EQ(patchTraction<2>(scene.loads[0], lambSolidParticles<2>(finer, true), 0.25).totalMeasure(), 1.0);
 
   // The method's own forces at rest: sum m a = eps * width * T_y * f(t), f(0.5) = 0.5.
   const LambSolidSpec spec = LambSolidSpec::linearDefaults(scene.material.material());
   UpdatedLagrangianSph<2> system(particles, spec.options);
-  applyStripLoad(system, scene.loads[0], strip, 1e-4);
+  applyPatchLoad<2>(system, scene.loads[0], strip, 1e-4);
   const Vector y0 = system.initialState();
   Vector ydot = Vector::Zero(y0.size());
   system.rhs(0.5, y0, ydot);
@@ -100,11 +100,11 @@ TEST(LambSolidCase, RunsThePlaneStrainLambProblemAtSmallAmplitudeAndScoresEveryP
   for (const std::string& file : r.files) EXPECT_TRUE(fs::exists(folder / file)) << file;
   fs::remove_all(folder);
 
-  StudySettings threeD = study;
-  threeD.scene.info.dimension = 3;
+  StudySettings oneD = study;
+  oneD.scene.info.dimension = 1;
   try {
-    runSolidCase(threeD, solidCase(study.scene), folder.string(), false);
-    FAIL() << "a 3-D scene is refused";
+    runSolidCase(oneD, solidCase(study.scene), folder.string(), false);
+    FAIL() << "a 1-D scene is refused";
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "method.name");
   }

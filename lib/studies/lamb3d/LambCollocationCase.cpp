@@ -179,7 +179,7 @@ CaseResult runCollocationCase(const StudySettings& study, const CaseSettings& se
 
   // What the case leaves out, and where its fixed faces start to matter.
   const unsigned fixedFaces = allFaces(2) & ~faceBit(load.face);
-  const FirstReflection reflection = firstReflection(scene, particles, probes, fixedFaces);
+  const FirstReflection reflection = firstReflection<2>(scene, scene.geometry, particles, probes, fixedFaces);
   result.notes.push_back(reflectionNote(settings.name,
                                        "RK collocation fixes (u = 0) every face but the loaded one, where the scene's "
                                        "[[boundary]] asks otherwise (transmitting faces included)",

@@ -1,5 +1,5 @@
 #pragma once
-// When the first wave the rectangle's other faces send back reaches a probe of the 2-D Lamb scene:
+// When the first wave the box's other faces send back reaches a probe of the 2-D or 3-D Lamb scene:
 // the RK collocation case (fixed faces) and the updated-Lagrangian SPH case (free faces) stand in
 // for the scene's transmitting faces with reflecting ones, and say from when their probes see it.
 
@@ -18,12 +18,13 @@ struct FirstReflection {
   std::string path;  // "13.5 / c_p from the load's patch via the +x face to probe receiver"
 };
 
-// The earliest arrival at a probe of a P wave that leaves the load's patch (a segment of its face),
-// reflects once off a face of `faces` (a BoxFace mask) and reaches the probe: the distance from the
-// patch to the probe's mirror image in that face, over c_p (the fastest wave, whatever the face's
-// condition). The scene's first load is the surface_patch.
-FirstReflection firstReflection(const Scene& scene, const ParticleSet<2>& particles, const std::vector<Probe>& probes,
-                                unsigned faces);
+// The earliest arrival at a probe of a P wave that leaves the load's patch (a segment of its face in
+// 2-D, a rectangle in 3-D), reflects once off a face of `faces` (a BoxFace mask) of the case's `box`
+// and reaches the probe: the distance from the patch to the probe's mirror image in that face, over
+// c_p (the fastest wave, whatever the face's condition). The scene's first load is the surface_patch.
+template <int D>
+FirstReflection firstReflection(const Scene& scene, const GeometrySpec& box, const ParticleSet<D>& particles,
+                                const std::vector<Probe>& probes, unsigned faces);
 
 // The case's note on the faces that stand in for the scene's: "<case>: <what>: the first P wave they
 // reflect reaches a probe at t = <time> (<path>), after the error window <w>, so the errors do not

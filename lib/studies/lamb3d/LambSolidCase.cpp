@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <utility>
@@ -26,103 +27,54 @@ namespace mfwave::lamb3d {
 
 namespace {
 
-constexpr int D = 2;
-
 // The probes of the particle view (SolidStateAdapter: u = x - X, v) divided by the amplitude eps,
 // so that they read the linear problem's unit-load response. Raw and reported are the same value.
 class SolidProbes : public ReportedProbes {
  public:
-  SolidProbes(std::vector<Probe> probes, Real amplitude) : ReportedProbes(std::move(probes)), amplitude_(amplitude) {}
+  SolidProbes(std::vector<Probe> probes, Real amplitude, int dimension)
+      : ReportedProbes(std::move(probes)), amplitude_(amplitude), dimension_(dimension) {}
 
   void observe(const StateView& s) override {
     if (!beginSample(s.time)) return;
     for (std::size_t i = 0; i < probes().size(); ++i) {
       const Probe& p = probes()[i];
       const Vector& field = p.quantity == ProbeQuantity::Velocity ? s.velocity : s.displacement;
-      const Real value = field[p.particle * D + p.component] / amplitude_;
+      const Real value = field[p.particle * dimension_ + p.component] / amplitude_;
       add(i, value, value);
     }
   }
 
  private:
   Real amplitude_;
+  int dimension_;
 };
 
-}  // namespace
-
-Real StripTraction::totalLength() const {
-  Real total = 0;
-  for (Real l : lengths) total += l;
-  return total;
+template <int D>
+std::vector<Real> pointOf(const Vec<D>& x) {
+  std::vector<Real> p;
+  for (int d = 0; d < D; ++d) p.push_back(x[d]);
+  return p;
 }
 
-StripTraction stripTraction(const LoadSpec& load, const ParticleSet<2>& particles, Real dx) {
-  const auto along = static_cast<std::size_t>(1 - faceAxis(load.face));
-  const Real patchLower = load.centre[along] - load.halfWidth[along];
-  const Real patchUpper = load.centre[along] + load.halfWidth[along];
-  // The face's extent along the patch: the lattice's first and last positions.
-  Real faceLower = std::numeric_limits<Real>::infinity(), faceUpper = -faceLower;
-  for (Index i = 0; i < particles.physicalCount(); ++i) {
-    const Real x = particles.position(i)[static_cast<Index>(along)];
-    faceLower = std::min(faceLower, x);
-    faceUpper = std::max(faceUpper, x);
-  }
-  StripTraction strip;
-  for (Index i = 0; i < particles.physicalCount(); ++i) {
-    if ((particles.faceMask[static_cast<std::size_t>(i)] & faceBit(load.face)) == 0) continue;
-    const Real x = particles.position(i)[static_cast<Index>(along)];
-    // The particle's tributary segment of the face, inside the patch.
-    const Real lower = std::max({x - dx / 2, faceLower, patchLower});
-    const Real upper = std::min({x + dx / 2, faceUpper, patchUpper});
-    if (upper - lower <= 1e-12 * dx) continue;
-    strip.particles.push_back(i);
-    strip.lengths.push_back(upper - lower);
-  }
-  return strip;
+// What the patch is, in the words of the case's notes: a strip (2-D) or a rectangle (3-D).
+template <int D>
+std::string patchNote(const std::string& caseName, const LoadSpec& load, const PatchTraction& patch) {
+  Real measure = 1;
+  for (int d = 0; d < D; ++d)
+    if (d != faceAxis(load.face)) measure *= 2 * load.halfWidth[static_cast<std::size_t>(d)];
+  std::ostringstream note;
+  note << std::setprecision(6) << caseName << ": the " << (D == 2 ? "strip" : "square") << "'s traction acts on "
+       << patch.particles.size() << " particles of the loaded face with a total " << (D == 2 ? "length " : "area ")
+       << patch.totalMeasure() << " (the " << (D == 2 ? "strip's width " : "patch's area ") << measure
+       << (D == 2 ? "; the end particles carry the half of their segment inside it)"
+                  : "; the particles on its edges carry the part of their tributary square inside it)");
+  return note.str();
 }
 
-ParticleSet<2> lambSolidParticles(const GeometrySpec& geometry, bool tributaryVolumes) {
-  // the very weak SPH case's lattice without its ghosts, which the method refuses (its faces are free)
-  GeometrySpec lattice = geometry;
-  lattice.ghostLayers = 0;
-  lattice.ghostFaces = 0;
-  ParticleSet<2> particles = buildParticles<2>(lattice);
-  if (tributaryVolumes)
-    for (Index i = 0; i < particles.physicalCount(); ++i)
-      particles.volume[static_cast<std::size_t>(i)] *= std::pow(0.5, particles.facetCount(i));
-  return particles;
-}
-
-UpdatedLagrangianSphOptions lambSolidOptions(const LambSolidSpec& spec, const ParticleSet<2>& particles, Real dx) {
-  // The method takes its spacing as the D-th root of the mean volume, which the tributary volumes of
-  // the faces make smaller than dx: the ratio is rescaled so that h = ratio * dx.
-  Real total = 0;
-  for (Index i = 0; i < particles.physicalCount(); ++i) total += particles.volume[static_cast<std::size_t>(i)];
-  const Real meanSpacing = std::sqrt(total / static_cast<Real>(particles.physicalCount()));
-  UpdatedLagrangianSphOptions options = spec.options;
-  options.smoothingLengthRatio = spec.options.smoothingLengthRatio * dx / meanSpacing;
-  return options;
-}
-
-void applyStripLoad(UpdatedLagrangianSph<2>& system, const LoadSpec& load, const StripTraction& strip, Real amplitude) {
-  const Vec<D> traction(amplitude * load.traction[0], amplitude * load.traction[1]);
-  for (std::size_t k = 0; k < strip.particles.size();) {
-    // one traction group per run of equal lengths (the inner particles share dx)
-    std::size_t end = k + 1;
-    const Real length = strip.lengths[k];
-    while (end < strip.particles.size() && std::abs(strip.lengths[end] - length) <= 1e-12 * length) ++end;
-    system.addTraction(std::vector<Index>(strip.particles.begin() + static_cast<std::ptrdiff_t>(k),
-                                          strip.particles.begin() + static_cast<std::ptrdiff_t>(end)),
-                       traction, load.timeFunction, strip.lengths[k]);
-    k = end;
-  }
-}
-
-CaseResult runSolidCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
-                        bool progress) {
+template <int D>
+CaseResult runSolidCaseIn(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
+                          bool progress) {
   const Scene& scene = study.scene;
-  if (scene.info.dimension != D)
-    throw InputError("method.name", "the updated-Lagrangian SPH runs the 2-D Lamb problem (lamb2d) only");
   if (scene.loads.size() != 1 || scene.loads[0].type != LoadType::SurfacePatch)
     throw InputError("load", "the updated-Lagrangian SPH case needs exactly one surface_patch load");
   const LambSolidSpec& spec = *settings.solid;
@@ -133,13 +85,13 @@ CaseResult runSolidCase(const StudySettings& study, const CaseSettings& settings
   record.name = settings.name;
   const Stopwatch setupClock;
 
-  const ParticleSet<D> physical = lambSolidParticles(settings.geometry, spec.tributaryVolumes);
+  const ParticleSet<D> physical = lambSolidParticles<D>(settings.geometry, spec.tributaryVolumes);
   record.particles = physical.physicalCount();
-  UpdatedLagrangianSph<D> system(physical, lambSolidOptions(spec, physical, settings.geometry.spacing));
+  UpdatedLagrangianSph<D> system(physical, lambSolidOptions<D>(spec, physical, settings.geometry.spacing));
   result.smoothingLength = system.smoothingLength();
   const LoadSpec& load = scene.loads[0];
-  const StripTraction strip = stripTraction(load, physical, settings.geometry.spacing);
-  applyStripLoad(system, load, strip, eps);
+  const PatchTraction patch = patchTraction<D>(load, physical, settings.geometry.spacing);
+  applyPatchLoad<D>(system, load, patch, eps);
   const Vector y0 = system.initialState();
 
   // leapfrog at the method's own step criteria, recomputed every step (cfl 1: courant 0.3 is in them)
@@ -153,7 +105,7 @@ CaseResult runSolidCase(const StudySettings& study, const CaseSettings& settings
 
   const std::vector<Probe> probes = resolveProbes(scene.probes, physical);
   SolidStateAdapter<D> adapter(system, physical);
-  SolidProbes recorder(probes, eps);
+  SolidProbes recorder(probes, eps, D);
   StabilityMonitor monitor(scene.stability.options(D, loadsQuietAfter(scene)));
   adapter.add(monitor, 1);
   adapter.add(recorder, scene.output.probeEvery);
@@ -170,25 +122,24 @@ CaseResult runSolidCase(const StudySettings& study, const CaseSettings& settings
        << "artificial viscosity alpha = " << spec.options.viscosity.alpha << ", beta = " << spec.options.viscosity.beta
        << "; artificial stress off, XSPH off, kernel-gradient correction "
        << (spec.options.kernelGradientCorrection ? "on" : "off") << "; masses rho0 times "
-       << (spec.tributaryVolumes ? "the tributary area (faces half, corners a quarter)" : "dx^2") << "; leapfrog at "
-       << spec.options.courant << " h / (c_p (1 + 1.2 alpha)) and the force criterion, every step)";
+       << (!spec.tributaryVolumes ? (D == 2 ? "dx^2" : "dx^3")
+           : D == 2              ? "the tributary area (faces half, corners a quarter)"
+                                 : "the tributary volume (faces half, edges a quarter, corners an eighth)")
+       << "; leapfrog at " << spec.options.courant << " h / (c_p (1 + 1.2 alpha)) and the force criterion, every step)";
   result.notes.push_back(what.str());
   std::ostringstream amplitude;
   amplitude << settings.name << ": small amplitude: the traction is " << eps
             << " times the scene's and the probes are divided by it, so the large-deformation method answers the "
                "linear problem";
   result.notes.push_back(amplitude.str());
-  std::ostringstream force;
-  force << std::setprecision(6) << settings.name << ": the strip's traction acts on " << strip.particles.size()
-        << " particles of the loaded face with a total length " << strip.totalLength()
-        << " (the strip's width " << 2 * load.halfWidth[static_cast<std::size_t>(1 - faceAxis(load.face))]
-        << "; the end particles carry the half of their segment inside it)";
-  result.notes.push_back(force.str());
-  const FirstReflection reflection = firstReflection(scene, physical, probes, allFaces(D) & ~faceBit(load.face));
+  result.notes.push_back(patchNote<D>(settings.name, load, patch));
+  const FirstReflection reflection =
+      firstReflection<D>(scene, settings.geometry, physical, probes, allFaces(D) & ~faceBit(load.face));
   result.notes.push_back(
       reflectionNote(settings.name,
-                     "the updated-Lagrangian SPH leaves every face free (no dashpot), where the scene's [[boundary]] "
-                     "asks otherwise (transmitting faces included)",
+                     "the updated-Lagrangian SPH leaves every face of its box " + settings.geometry.describeBox() +
+                         " free (no dashpot), where the scene's [[boundary]] asks otherwise (transmitting faces "
+                         "included)",
                      reflection, study.errorWindow) +
       "; the free body drifts with the load's net impulse once the waves reach its faces");
 
@@ -200,9 +151,7 @@ CaseResult runSolidCase(const StudySettings& study, const CaseSettings& settings
     if (e.particle() < 0 || e.particle() >= record.particles) throw;
     std::ostringstream where;
     where << e.what() << " [updated-Lagrangian SPH: particle " << e.particle() << " starts at "
-          << scene::formatPoint(std::vector<Real>{physical.position(e.particle())[0],
-                                                  physical.position(e.particle())[1]})
-          << "]";
+          << scene::formatPoint(pointOf<D>(physical.position(e.particle()))) << "]";
     throw InstabilityError(where.str(), e.step(), e.time(), e.particle());
   }
   result.recordLoop(stats);
@@ -213,6 +162,101 @@ CaseResult runSolidCase(const StudySettings& study, const CaseSettings& settings
   scoreLambProbes<D>(study, settings, physical, recorder, nullptr, folder, result);
   record.peakMemoryMiB = peakMemoryMiB();
   return result;
+}
+
+}  // namespace
+
+Real PatchTraction::totalMeasure() const {
+  Real total = 0;
+  for (Real m : measures) total += m;
+  return total;
+}
+
+template <int D>
+PatchTraction patchTraction(const LoadSpec& load, const ParticleSet<D>& particles, Real dx) {
+  const int normal = faceAxis(load.face);
+  // The face's extent: the lattice's first and last positions along each axis.
+  Vec<D> faceLower = Vec<D>::Constant(std::numeric_limits<Real>::infinity());
+  Vec<D> faceUpper = -faceLower;
+  for (Index i = 0; i < particles.physicalCount(); ++i) {
+    faceLower = faceLower.cwiseMin(particles.position(i));
+    faceUpper = faceUpper.cwiseMax(particles.position(i));
+  }
+  PatchTraction patch;
+  for (Index i = 0; i < particles.physicalCount(); ++i) {
+    if ((particles.faceMask[static_cast<std::size_t>(i)] & faceBit(load.face)) == 0) continue;
+    const Vec<D> x = particles.position(i);
+    // The particle's tributary facet of the face, inside the patch: a product of clipped segments.
+    Real measure = 1;
+    for (int a = 0; a < D; ++a) {
+      if (a == normal) continue;
+      const auto k = static_cast<std::size_t>(a);
+      const Real lower = std::max({x[a] - dx / 2, faceLower[a], load.centre[k] - load.halfWidth[k]});
+      const Real upper = std::min({x[a] + dx / 2, faceUpper[a], load.centre[k] + load.halfWidth[k]});
+      measure *= std::max<Real>(upper - lower, 0);
+    }
+    if (measure <= 1e-12 * std::pow(dx, D - 1)) continue;
+    patch.particles.push_back(i);
+    patch.measures.push_back(measure);
+  }
+  return patch;
+}
+
+template <int D>
+ParticleSet<D> lambSolidParticles(const GeometrySpec& geometry, bool tributaryVolumes) {
+  // the very weak SPH case's lattice without its ghosts, which the method refuses (its faces are free)
+  GeometrySpec lattice = geometry;
+  lattice.ghostLayers = 0;
+  lattice.ghostFaces = 0;
+  ParticleSet<D> particles = buildParticles<D>(lattice);
+  if (tributaryVolumes)
+    for (Index i = 0; i < particles.physicalCount(); ++i)
+      particles.volume[static_cast<std::size_t>(i)] *= std::pow(0.5, particles.facetCount(i));
+  return particles;
+}
+
+template <int D>
+UpdatedLagrangianSphOptions lambSolidOptions(const LambSolidSpec& spec, const ParticleSet<D>& particles, Real dx) {
+  // The method takes its spacing as the D-th root of the mean volume, which the tributary volumes of
+  // the faces make smaller than dx: the ratio is rescaled so that h = ratio * dx.
+  Real total = 0;
+  for (Index i = 0; i < particles.physicalCount(); ++i) total += particles.volume[static_cast<std::size_t>(i)];
+  const Real meanSpacing = std::pow(total / static_cast<Real>(particles.physicalCount()), Real(1) / D);
+  UpdatedLagrangianSphOptions options = spec.options;
+  options.smoothingLengthRatio = spec.options.smoothingLengthRatio * dx / meanSpacing;
+  return options;
+}
+
+template <int D>
+void applyPatchLoad(UpdatedLagrangianSph<D>& system, const LoadSpec& load, const PatchTraction& patch, Real amplitude) {
+  Vec<D> traction;
+  for (int d = 0; d < D; ++d) traction[d] = amplitude * load.traction[static_cast<std::size_t>(d)];
+  for (std::size_t k = 0; k < patch.particles.size();) {
+    // one traction group per run of equal measures (the inner particles share dx^(D-1))
+    std::size_t end = k + 1;
+    const Real measure = patch.measures[k];
+    while (end < patch.particles.size() && std::abs(patch.measures[end] - measure) <= 1e-12 * measure) ++end;
+    system.addTraction(std::vector<Index>(patch.particles.begin() + static_cast<std::ptrdiff_t>(k),
+                                          patch.particles.begin() + static_cast<std::ptrdiff_t>(end)),
+                       traction, load.timeFunction, patch.measures[k]);
+    k = end;
+  }
+}
+
+template PatchTraction patchTraction<2>(const LoadSpec&, const ParticleSet<2>&, Real);
+template PatchTraction patchTraction<3>(const LoadSpec&, const ParticleSet<3>&, Real);
+template ParticleSet<2> lambSolidParticles<2>(const GeometrySpec&, bool);
+template ParticleSet<3> lambSolidParticles<3>(const GeometrySpec&, bool);
+template UpdatedLagrangianSphOptions lambSolidOptions<2>(const LambSolidSpec&, const ParticleSet<2>&, Real);
+template UpdatedLagrangianSphOptions lambSolidOptions<3>(const LambSolidSpec&, const ParticleSet<3>&, Real);
+template void applyPatchLoad<2>(UpdatedLagrangianSph<2>&, const LoadSpec&, const PatchTraction&, Real);
+template void applyPatchLoad<3>(UpdatedLagrangianSph<3>&, const LoadSpec&, const PatchTraction&, Real);
+
+CaseResult runSolidCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
+                        bool progress) {
+  if (study.scene.info.dimension == 2) return runSolidCaseIn<2>(study, settings, folder, progress);
+  if (study.scene.info.dimension == 3) return runSolidCaseIn<3>(study, settings, folder, progress);
+  throw InputError("method.name", "the updated-Lagrangian SPH runs the 2-D and 3-D Lamb problems (lamb2d, lamb3d)");
 }
 
 }  // namespace mfwave::lamb3d
