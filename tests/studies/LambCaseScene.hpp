@@ -1,7 +1,8 @@
 #pragma once
-// The lamb2d scene (data/scenes/lamb2d.toml) read as the Lamb case tests need it, without the
-// driver: the very weak SPH's [method] keys and the study keys the scene sets registered, so that
-// every method's case (RK collocation, the UL-SPH, spectral elements) runs the shipped scene.
+// The lamb2d and lamb3d scenes (data/scenes/lamb2d.toml, lamb3d.toml) read as the Lamb case tests
+// need them, without the driver: the very weak SPH's [method] keys and the study keys the scenes set
+// registered, so that every method's case (RK collocation, the UL-SPH, spectral elements) runs the
+// shipped scene.
 
 #include "io/scene/LoadScene.hpp"
 #include "studies/lamb3d/LambCase.hpp"
@@ -12,7 +13,8 @@
 
 namespace mfwave::lamb3d::testing {
 
-inline StudySettings lamb2dCaseStudy(const std::vector<std::string>& overrides, Real errorWindow = 6.0) {
+inline StudySettings lambCaseStudy(const std::string& sceneFile, const std::vector<std::string>& overrides,
+                                   Real errorWindow) {
   SceneSchema schema = SceneSchema::common();
   addVeryWeakSphKeys(schema);
   schema.add("study", ValueType::Table);
@@ -21,11 +23,19 @@ inline StudySettings lamb2dCaseStudy(const std::vector<std::string>& overrides, 
   for (const char* key : {"study.error_window", "study.published_smoothing_rate", "study.strong_smoothing_rate"})
     schema.add(key, ValueType::Number);
   schema.add("study.compare_published", ValueType::Boolean);
-  SceneReader reader = loadScene(std::string(SCENES_FOLDER) + "/lamb2d.toml", overrides, schema);
+  SceneReader reader = loadScene(std::string(SCENES_FOLDER) + "/" + sceneFile, overrides, schema);
   StudySettings study;
   study.scene = readScene(reader);
   study.errorWindow = errorWindow;
   return study;
+}
+
+inline StudySettings lamb2dCaseStudy(const std::vector<std::string>& overrides, Real errorWindow = 6.0) {
+  return lambCaseStudy("lamb2d.toml", overrides, errorWindow);
+}
+
+inline StudySettings lamb3dCaseStudy(const std::vector<std::string>& overrides, Real errorWindow = 6.0) {
+  return lambCaseStudy("lamb3d.toml", overrides, errorWindow);
 }
 
 // Whether one of a case's notes contains `text`.

@@ -1,21 +1,28 @@
 #pragma once
-// One RK collocation case of the lamb2d study: the plane-strain Lamb problem of the scene by
-// Luo-Liu-Huang's strong-form collocation with reproducing-kernel shape functions, on the same
-// lattice nodes as the very weak SPH case at this spacing, scored against the same exact response.
+// One RK collocation case of the lamb2d or lamb3d study: the plane-strain or 3-D Lamb problem of the
+// scene by Luo-Liu-Huang's strong-form collocation with reproducing-kernel shape functions, on the
+// same lattice nodes as the very weak SPH case at this spacing, scored against the same exact
+// response. One implementation for D = 2 and 3.
 //
-//   nodes               the scene's rectangle lattice (buildParticles, physical particles only);
-//                       collocation points = nodes (Nc = Ns)
+//   nodes               the scene's rectangle or block lattice (buildParticles, physical particles
+//                       only); collocation points = nodes (Nc = Ns)
 //   interior rows       rho u'' - L u = 0 (Luo-Liu-Huang eq. (12))
-//   traction rows       the loaded face without its two corners: sigma(u) n = h(x, t) (eq. (13)),
-//                       n the face's outward normal, h = traction w(x) f(t), w = 1 inside the patch,
-//                       1/2 on its edges (which fall on nodes: the trapezoid rule then gives the
-//                       load's total force), 0 outside
-//   displacement rows   every other boundary node (sides, bottom, the loaded face's corners): u = 0
+//   traction rows       the loaded face's nodes on no other face (2-D: without its two corners,
+//                       3-D: without its edges and corners): sigma(u) n = h(x, t) (eq. (13)), n the
+//                       face's outward normal, h = traction w(x) f(t), w the product over the face's
+//                       axes of 1 inside the patch, 1/2 on its edges (which fall on nodes: the
+//                       trapezoid rule then gives the load's total force), 0 outside (3-D: 1/4 at
+//                       the square's corners)
+//   displacement rows   every other boundary node (sides, bottom, the loaded face's corners or
+//                       edges): u = 0
 //
 // Fixed faces stand in for the scene's transmitting ones: the case notes when the first P wave
-// they reflect reaches a probe (for data/scenes/lamb2d.toml 13.5 / sqrt 3 = 7.8 after the start,
-// from the strip's edge via the +x face to the surface receiver), after the error window of 6;
-// runs longer than that see the reflections the dashpots would have absorbed.
+// they reflect reaches a probe. For data/scenes/lamb2d.toml 13.5 / sqrt 3 = 7.8 after the start,
+// from the strip's edge via the +x face to the surface receiver, after the error window of 6; runs
+// longer than that see the reflections the dashpots would have absorbed. For data/scenes/lamb3d.toml
+// (a 7-wide block) 4.5 / sqrt 3 = 2.6, from the square's edge via the +x face to the surface
+// receiver, INSIDE the window (the centre sees the side faces' at 6.5 / sqrt 3 = 3.75, the buried
+// probe at 6.58 / sqrt 3 = 3.80): the 3-D errors include these reflections (measured below).
 //
 // The system is ConstrainedCollocationSystem (the boundary rows imposed at every instant, U the
 // values at the interior nodes), stepped by makeConstrainedIntegrator at the scene's fraction of

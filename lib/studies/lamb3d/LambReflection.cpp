@@ -9,28 +9,31 @@
 
 namespace mfwave::lamb3d {
 
-FirstReflection firstReflection(const Scene& scene, const ParticleSet<2>& particles, const std::vector<Probe>& probes,
+template <int D>
+FirstReflection firstReflection(const Scene& scene, const ParticleSet<D>& particles, const std::vector<Probe>& probes,
                                 unsigned faces) {
   const LoadSpec& load = scene.loads[0];
-  const int normalAxis = faceAxis(load.face), along = 1 - normalAxis;
+  const int normalAxis = faceAxis(load.face);
   const Real cp = scene.material.material().pWaveSpeed();
   const GeometrySpec& g = scene.geometry;
   FirstReflection first;
   for (const Probe& probe : probes) {
-    const Vec2 x = particles.position(probe.particle);
-    for (int face = 0; face < 4; ++face) {
+    const Vec<D> x = particles.position(probe.particle);
+    for (int face = 0; face < 2 * D; ++face) {
       if ((faces & faceBit(face)) == 0) continue;
       const int axis = faceAxis(face);
       const auto a = static_cast<std::size_t>(axis);
       const Real wall = faceSign(face) < 0 ? g.lower[a] : g.upper[a];
-      Vec2 image = x;
+      Vec<D> image = x;
       image[axis] = 2 * wall - x[axis];
-      // the patch's nearest point to the image
-      Vec2 source;
-      source[normalAxis] = load.centre[static_cast<std::size_t>(normalAxis)];
-      const Real c = load.centre[static_cast<std::size_t>(along)];
-      const Real l = load.halfWidth[static_cast<std::size_t>(along)];
-      source[along] = std::clamp(image[along], c - l, c + l);
+      // the patch's nearest point to the image: the image clamped to the patch along each axis of its face
+      Vec<D> source;
+      for (int along = 0; along < D; ++along) {
+        const auto b = static_cast<std::size_t>(along);
+        source[along] = along == normalAxis ? load.centre[b]
+                                            : std::clamp(image[along], load.centre[b] - load.halfWidth[b],
+                                                         load.centre[b] + load.halfWidth[b]);
+      }
       const Real time = (image - source).norm() / cp;
       if (time < first.time) {
         first.time = time;
@@ -43,6 +46,9 @@ FirstReflection firstReflection(const Scene& scene, const ParticleSet<2>& partic
   }
   return first;
 }
+
+template FirstReflection firstReflection<2>(const Scene&, const ParticleSet<2>&, const std::vector<Probe>&, unsigned);
+template FirstReflection firstReflection<3>(const Scene&, const ParticleSet<3>&, const std::vector<Probe>&, unsigned);
 
 std::string reflectionNote(const std::string& caseName, const std::string& what, const FirstReflection& reflection,
                            Real errorWindow) {
