@@ -192,7 +192,7 @@ def _dedupe(points):
 
 
 def default_sweep():
-    """206 points, about 4 minutes on 2 idle cores (the largest: lamb3d's Galerkin variant at dx = 0.0625, about 40 s; the UL-SPH on lamb2d at 0.0625, about 30 s; RK collocation on lamb2d at 0.125, about 20 s)."""
+    """207 points, about 4 minutes on 2 idle cores (the largest: lamb3d's Galerkin variant at dx = 0.0625, about 40 s; the UL-SPH on lamb2d at 0.0625, about 30 s; RK collocation on lamb2d at 0.125, about 20 s, on lamb3d at 0.5, about 25 s)."""
     pts = []
     # Standing wave, finite differences: every integrator over resolutions, then step fractions
     # (1.0 is the 1-D "magic" step of central differences; 1.05 is above the limit and fails).
@@ -233,6 +233,9 @@ def default_sweep():
     # 3-D Lamb problem, the spectral-element reference (the box, 7 wide, takes elements of 1 and 0.5).
     pts += [lamb3d_sem(0.5, order=2), lamb3d_sem(0.25), lamb3d_sem(0.125), lamb3d_sem(0.125, order=2),
             lamb3d_sem(0.25, cfl=0.9)]
+    # 3-D Lamb problem, RK collocation (m = 2, a/h = 2.2): dx = 0.5 only, about 25 s on one core
+    # (dx = 0.25 takes over ten minutes and about 4 GiB: docs/studies/lamb3d.md).
+    pts += [lamb3d_rk(0.5)]
     # 2-D Lamb problem (strip load), very weak form SPH: every variant over spacings.
     pts += [lamb2d(dx) for dx in (0.5, 0.25, 0.125, 0.0625, 0.03125)]
     pts += [lamb2d(dx, variant="consistent") for dx in (0.5, 0.25, 0.125, 0.0625, 0.03125)]
