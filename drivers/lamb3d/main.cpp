@@ -25,19 +25,25 @@
 // [--set method.order=4].
 //   sem_n<order>_<dx>           one case per spacing (the scene's first, which also writes exact.csv)
 //
-// lamb2d also runs the same scene by RK collocation (Luo-Liu-Huang strong form, reproducing-kernel
-// shape functions; lib/studies/lamb3d/LambCollocationCase.hpp), so that the methods meet on one
-// problem: --set method.name=reproducing_kernel [--set method.order=2] [--set method.support_ratio=2.5].
+// lamb2d and lamb3d also run the same scene by RK collocation (Luo-Liu-Huang strong form,
+// reproducing-kernel shape functions; lib/studies/lamb3d/LambCollocationCase.hpp, one case for 2-D
+// and 3-D), so that the methods meet on one problem: --set method.name=reproducing_kernel
+// [--set method.order=2] [--set method.support_ratio=2.5 (lamb2d) or 2.2 (lamb3d)].
 //   rk_m<order>_a<ratio>_<dx>   one case per spacing (the scene's first, which also writes exact.csv)
-// The very weak SPH's [method] keys that the scene sets (variant, kernel, smoothing_*, deconvolution,
-// dashpot_lumping, ...) are accepted and ignored: each present one is read (so its value is still
-// checked) and the summary names them in a note; nothing else in the scene needs to change. So are
-// study.compare_published and the published / strong smoothing rates (no published or strong_filter
-// case: those are the very weak SPH's); study.free_block_* is refused (the free block is a very weak
-// SPH comparison). A support whose interior rows have growing modes is refused at
-// method.support_ratio (exit 2) unless stability.allow_growth. The scene's transmitting faces are
-// fixed for RK collocation (the case's notes say when the first reflection reaches a probe). lamb3d
-// refuses reproducing_kernel at method.name (exit 2): its 3-D case is not implemented.
+// The default support differs by dimension: the 3-D interior rows grow from a / h = 2.5 on (the
+// mass symbol changes sign; docs/studies/stability-atlas.md), so lamb3d takes 2.2, the widest
+// stable one, and refuses 2.5 at method.support_ratio. The very weak SPH's [method] keys that the
+// scene sets (variant, kernel, smoothing_*, deconvolution, dashpot_lumping, ...) are accepted and
+// ignored: each present one is read (so its value is still checked) and the summary names them in a
+// note; nothing else in the scene needs to change. So are study.compare_published and the published /
+// strong smoothing rates (no published or strong_filter case: those are the very weak SPH's);
+// study.free_block_* is refused by lamb2d (the free block is a very weak SPH comparison) and read
+// and ignored with a note by lamb3d, whose scene sets it. A support whose interior rows have growing
+// modes is refused at method.support_ratio (exit 2) unless stability.allow_growth. The scene's
+// transmitting faces are fixed for RK collocation (the case's notes say when the first reflection
+// reaches a probe: in lamb3d's 7-wide block at t = 2.6, inside the error window). In 3-D a case
+// costs far more than the other methods' (a sparse LU of the constraint matrix in 3-D; measured in
+// docs/studies/lamb3d.md).
 //
 // lamb2d and lamb3d run it by the updated-Lagrangian SPH for solids too (Li's primer; a
 // large-deformation method run at small amplitude, lib/studies/lamb3d/LambSolidCase.hpp, one
@@ -98,7 +104,7 @@ SceneSchema lambSchema() {
   using T = ValueType;
   SceneSchema schema = SceneSchema::common();
   addVeryWeakSphKeys(schema);
-  // RK collocation (lamb2d only; lamb3d refuses it at method.name).
+  // RK collocation (lamb2d and lamb3d).
   schema.addChoice("method.name", "reproducing_kernel");
   // The spectral-element reference (lamb2d and lamb3d): method.order is its GLL order N there.
   schema.addChoice("method.name", "spectral_element");
@@ -107,10 +113,15 @@ SceneSchema lambSchema() {
       .when("name = reproducing_kernel or spectral_element")
       .describedAs("RK basis order m (2 or 3: collocation needs second derivatives), or the spectral elements' GLL "
                    "order N (1 .. 8; elements N spacings wide)");
-  schema.add("method.support_ratio", T::Number).withUnit("-").defaultsTo("2.5").positive()
+  // The default support is the one the study measured in each dimension: 2.5 in plane strain (the
+  // 2-D interior grows from about 2.77), 2.2 in 3-D, where m = 2 grows from 2.5 on and 2.2 is the
+  // widest stable support of the stability atlas (docs/studies/stability-atlas.md).
+  schema.add("method.support_ratio", T::Number).withUnit("-").defaultsTo(kDimension == 3 ? "2.2" : "2.5").positive()
       .when("name = reproducing_kernel")
-      .describedAs("cubic B-spline support radius a / h (from about 2.77 on the 2-D interior rows have growing modes: "
-                   "refused)");
+      .describedAs(kDimension == 3 ? "cubic B-spline support radius a / h (from 2.5 on the 3-D interior rows have "
+                                     "growing modes: refused)"
+                                   : "cubic B-spline support radius a / h (from about 2.77 on the 2-D interior rows "
+                                     "have growing modes: refused)");
   // The updated-Lagrangian SPH for solids (lamb2d and lamb3d). Only what
   // the linear small-amplitude problem needs to set or to measure: the rest are the method's defaults.
   schema.addChoice("method.name", "updated_lagrangian_sph");
@@ -247,18 +258,13 @@ std::string collocationCaseName(const CollocationSpec& spec, Real dx) {
 }
 
 // What every plan of a method other than the very weak SPH checks and says: the dimension (lamb2d
-// runs them all, lamb3d the spectral elements and the UL-SPH), one surface_patch load, no free block
-// in lamb2d (a very weak SPH comparison; lamb3d's scene sets one, which the spectral elements and the
-// UL-SPH read and ignore with a note: the UL-SPH runs the scene's box, LambSolidCase.hpp says why),
-// and the very weak SPH's and the published / strong cases' keys the scene sets, read (still
-// checked) and ignored with a note. `method` is the method.name, `label` how the
-// messages name it.
+// runs them all, and so does lamb3d), one surface_patch load, no free block in lamb2d (a very weak
+// SPH comparison; lamb3d's scene sets one, which the other methods read and ignore with a note: they
+// run the scene's box, LambSolidCase.hpp and LambCollocationCase.hpp say what its faces cost), and
+// the very weak SPH's and the published / strong cases' keys the scene sets, read (still checked)
+// and ignored with a note. `method` is the method.name, `label` how the messages name it.
 void readOtherMethodPlan(SceneReader& reader, Plan& plan, const std::string& method, const std::string& label) {
   const Scene& scene = plan.study.scene;
-  if (kDimension != 2 && method == "reproducing_kernel")
-    reader.fail("method.name", std::string(kProgram) + " runs very_weak_sph, spectral_element and "
-                                   "updated_lagrangian_sph: " + label + " (" + method +
-                                   ") is implemented for the plane-strain problem, lamb2d");
   if (scene.loads.size() != 1 || scene.loads[0].type != LoadType::SurfacePatch)
     reader.fail("load", label + " in " + std::string(kProgram) + " needs exactly one surface_patch load");
   if (kDimension == 3) {
@@ -278,8 +284,8 @@ void readOtherMethodPlan(SceneReader& reader, Plan& plan, const std::string& met
     plan.notes.push_back(method + " runs no published or strong_filter case; ignored: " + joined(ignoredStudy));
 }
 
-// The RK collocation plan (lamb2d, method.name = reproducing_kernel): one case per spacing, the
-// scene's first (with exact.csv).
+// The RK collocation plan (lamb2d or lamb3d, method.name = reproducing_kernel): one case per
+// spacing, the scene's first (with exact.csv).
 void readCollocationPlan(SceneReader& reader, Plan& plan) {
   const Scene& scene = plan.study.scene;
   readOtherMethodPlan(reader, plan, "reproducing_kernel", "RK collocation");
@@ -293,7 +299,7 @@ void readCollocationPlan(SceneReader& reader, Plan& plan) {
                   "RK collocation needs the loaded face free: its traction rows carry the load");
   // Growing interior modes grow at every step: refused here, before any work, naming the key.
   const CollocationGrowingModes modes =
-      rkPlaneStrainGrowingModes(spec.order, spec.supportRatio, scene.material.material());
+      rkGrowingModes(kDimension, spec.order, spec.supportRatio, scene.material.material());
   if (modes.growing()) {
     if (!scene.stability.allowGrowth)
       reader.fail("method.support_ratio", modes.what + "; " + modes.advice +
@@ -301,6 +307,25 @@ void readCollocationPlan(SceneReader& reader, Plan& plan) {
     plan.notes.push_back("stability.allow_growth: ran although " + modes.what);
   }
   const std::vector<GeometrySpec> grids = readGrids(reader, scene.geometry);
+  // In 3-D the sparse LU of the constraint matrix fills fast: the peak memory, measured on
+  // lamb3d.toml at a / h = 2.2, went from 254 MiB (3375 nodes) to 4167 MiB (24,389 nodes), about
+  // nodes^1.41. A case that would need more than the machine has by that law (dx = 0.125: about
+  // 71 GiB) is refused before any case runs.
+  if (kDimension == 3) {
+    const double machine = physicalMemoryMiB();
+    for (const GeometrySpec& g : grids) {
+      const double nodes = static_cast<double>(g.particleCount());
+      const double need = 4167.0 * std::pow(nodes / 24389.0, 1.41);
+      if (need > machine)
+        reader.fail(g.spacing == scene.geometry.spacing ? "geometry.spacing" : "study.spacings",
+                    "RK collocation at dx = " + scene::formatNumber(g.spacing) + " (" +
+                        std::to_string(g.particleCount()) + " nodes) needs about " +
+                        scene::formatNumber(std::round(need / 1024.0)) + " GiB for the LU of its constraint "
+                        "matrix (measured 4.1 GiB at 24,389 nodes, growing as nodes^1.41); this machine has " +
+                        scene::formatNumber(std::round(machine / 1024.0)) +
+                        " GiB (run coarser spacings, e.g. --set 'study.spacings=[0.5]')");
+    }
+  }
   for (std::size_t i = 0; i < grids.size(); ++i) {
     CaseSettings c;
     c.name = collocationCaseName(spec, grids[i].spacing);
@@ -424,8 +449,7 @@ Plan readPlan(SceneReader& reader) {
   }
   if (scene.method.name != "very_weak_sph")
     reader.fail("method.name", std::string(kProgram) + " runs the very_weak_sph method" +
-                                   (kDimension == 2 ? ", reproducing_kernel, updated_lagrangian_sph or spectral_element"
-                                                    : ", updated_lagrangian_sph or spectral_element"));
+                                   ", reproducing_kernel, updated_lagrangian_sph or spectral_element");
   const VeryWeakSphSpec main = readVeryWeakSph(reader, scene.material.material());
   const bool comparePublished = reader.boolean("study.compare_published") && main.options.variant != VeryWeakSphVariant::Published;
   const VeryWeakSphSpec published = publishedSpec(main, reader.number("study.published_smoothing_rate"));
@@ -567,7 +591,8 @@ int main(int argc, char** argv) {
   const SceneSchema schema = lambSchema();
   DriverCommandLine cli(kProgram,
                         kDimension == 3
-                            ? "lamb3d: the Ding-Long-Wu 3-D Lamb problem by very weak form SPH, updated-Lagrangian SPH or "
+                            ? "lamb3d: the Ding-Long-Wu 3-D Lamb problem by very weak form SPH, RK collocation, "
+                              "updated-Lagrangian SPH or "
                               "spectral elements, against the exact response"
                             : "lamb2d: the plane-strain Lamb problem (a strip load) by very weak form SPH, RK "
                               "collocation, updated-Lagrangian SPH or spectral elements, against the exact response",

@@ -2,7 +2,7 @@
 // The [method] keys of strong-form collocation (Luo, Liu, Huang), typed once read: the shape
 // functions (reproducing kernel or radial basis) and their parameters relative to the node
 // spacing h, the shape functions they make on a set of nodes, and whether RK rows of that order and
-// support have growing modes. Shared by the collocation studies (bar1d, plane2d, lamb2d).
+// support have growing modes. Shared by the collocation studies (bar1d, plane2d, lamb2d, lamb3d).
 
 #include "core/Material.hpp"
 #include "io/scene/SceneReader.hpp"
@@ -38,13 +38,14 @@ template <int D>
 std::unique_ptr<ShapeFunctions<D>> makeCollocationShapes(const CollocationSpec& spec, const Coordinates<D>& nodes,
                                                          Real h);
 
-// Whether the interior rows of plane-strain RK collocation (basis order `order`, cubic B-spline
-// support a = ratio h) have growing modes: the exact spectrum of the interior row on a periodic
-// lattice (at h = 1: with a / h fixed the rows scale as 1 / h^2, so one spectrum serves every
-// resolution). omega^2 < 0 or complex anywhere is a mode that grows at every time step, whatever the
-// integrator: in 2-D from about a / h = 2.77 on, where the mass symbol psi-hat changes sign
-// (docs/studies/spectra.md). Each study decides what to do with it (plane2d: exit 3 through
-// refuseGrowingModes; lamb2d: an input error at method.support_ratio).
+// Whether the interior rows of RK collocation in `dimension` (2: plane strain, or 3; basis order
+// `order`, cubic B-spline support a = ratio h) have growing modes: the exact spectrum of the interior
+// row on a periodic lattice (at h = 1: with a / h fixed the rows scale as 1 / h^2, so one spectrum
+// serves every resolution). omega^2 < 0 or complex anywhere is a mode that grows at every time step,
+// whatever the integrator: in 2-D from about a / h = 2.77 on, in 3-D from 2.5 on (m = 2), where the
+// mass symbol psi-hat changes sign (docs/studies/spectra.md, docs/studies/stability-atlas.md). Each
+// study decides what to do with it (plane2d: exit 3 through refuseGrowingModes; lamb2d and lamb3d:
+// an input error at method.support_ratio).
 struct CollocationGrowingModes {
   // "" when nothing grows; else "the RK collocation operator (method.order = 2, method.support_ratio
   // = 3) has growing modes: its interior <where omega^2 is smallest>; such a mode grows at every time step".
@@ -52,6 +53,10 @@ struct CollocationGrowingModes {
   std::string advice;  // what to change
   bool growing() const { return !what.empty(); }
 };
-CollocationGrowingModes rkPlaneStrainGrowingModes(int order, Real ratio, const Material& material);
+CollocationGrowingModes rkGrowingModes(int dimension, int order, Real ratio, const Material& material);
+// rkGrowingModes in plane strain (plane2d, lamb2d).
+inline CollocationGrowingModes rkPlaneStrainGrowingModes(int order, Real ratio, const Material& material) {
+  return rkGrowingModes(2, order, ratio, material);
+}
 
 }  // namespace mfwave

@@ -155,14 +155,31 @@ TEST(Lamb2dStudy, RkCollocationRefusesASupportWithGrowingModesAndTheFreeBlock) {
   EXPECT_NE(block.log.find("study.free_block_lower"), std::string::npos) << block.log;
 }
 
-TEST(Lamb2dStudy, Lamb3dRefusesRkCollocationNamingTheKey) {
-  const fs::path out = fs::temp_directory_path() / "mfwave-lamb3d-rk";
+// lamb3d runs RK collocation (Lamb3dStudy.RkCollocationRunsTheSceneAtTheStable3dSupport) but not at
+// lamb2d's support 2.5: in 3-D its interior rows grow (the mass symbol changes sign), refused before
+// any work at method.support_ratio with the stable 3-D support as advice; nor at spacings whose LU
+// would not fit in memory.
+TEST(Lamb2dStudy, Lamb3dRefusesTheGrowingRkSupportOfLamb2dAndTooFineSpacingsNamingTheKeys) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-lamb3d-rk-growing";
+  fs::remove_all(out);
   const auto run = runStudy(LAMB3D_EXECUTABLE, std::string(SCENES_FOLDER) + "/lamb3d.toml",
-                            "--set method.name=reproducing_kernel --out " + out.string(), "lamb3d-rk");
+                            "--set method.name=reproducing_kernel --set method.support_ratio=2.5 --out " + out.string(),
+                            "lamb3d-rk-growing");
   ASSERT_TRUE(run.exited);
   EXPECT_EQ(run.exitCode, 2) << run.log;
-  EXPECT_NE(run.log.find("method.name"), std::string::npos) << run.log;
-  EXPECT_NE(run.log.find("lamb2d"), std::string::npos) << run.log;
+  EXPECT_NE(run.log.find("method.support_ratio"), std::string::npos) << run.log;
+  EXPECT_NE(run.log.find("growing modes"), std::string::npos) << run.log;
+  EXPECT_NE(run.log.find("2.2"), std::string::npos) << run.log;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+  // At the stable support the scene's own spacings reach 0.125 (185,193 nodes), whose LU would need
+  // about 71 GiB by the measured growth: refused before any case at study.spacings.
+  const auto fine = runStudy(LAMB3D_EXECUTABLE, std::string(SCENES_FOLDER) + "/lamb3d.toml",
+                             "--set method.name=reproducing_kernel --out " + out.string(), "lamb3d-rk-fine");
+  ASSERT_TRUE(fine.exited);
+  EXPECT_EQ(fine.exitCode, 2) << fine.log;
+  EXPECT_NE(fine.log.find("study.spacings"), std::string::npos) << fine.log;
+  EXPECT_NE(fine.log.find("185193 nodes"), std::string::npos) << fine.log;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
 }
 
 // The updated-Lagrangian SPH on the same scene (every other key as shipped; alpha = 1 and the

@@ -1,7 +1,8 @@
 #pragma once
-// The lamb2d or lamb3d scene (data/scenes/lamb2d.toml, lamb3d.toml) read as the Lamb case tests need
-// it, without the driver: the very weak SPH's [method] keys and the study keys the scene sets registered, so that
-// every method's case (RK collocation, the UL-SPH, spectral elements) runs the shipped scene.
+// The lamb2d and lamb3d scenes (data/scenes/lamb2d.toml, lamb3d.toml) read as the Lamb case tests
+// need them, without the driver: the very weak SPH's [method] keys and the study keys the scenes set
+// registered, so that every method's case (RK collocation, the UL-SPH, spectral elements) runs the
+// shipped scene.
 
 #include "io/scene/LoadScene.hpp"
 #include "studies/lamb3d/LambCase.hpp"

@@ -2,8 +2,9 @@
 // options, another method is refused at method.name, and the shape functions made from them are
 // the asked kind with the asked parameters: a reproducing kernel of order m reproduces degree-m
 // polynomials with support a = ratio h, a radial basis interpolates its nodes; plane-strain RK rows
-// grow from a support of about 2.77 h on.
+// grow from a support of about 2.77 h on, 3-D rows from 2.5 h on.
 
+#include "core/Error.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/SceneError.hpp"
 #include "methods/collocation/RadialBasisShapeFunctions.hpp"
@@ -98,6 +99,18 @@ TEST(CollocationSpec, PlaneStrainRkSupportsFromAboutTwoPointEightOnHaveGrowingIn
   ASSERT_TRUE(grows.growing());
   EXPECT_NE(grows.what.find("method.order = 2, method.support_ratio = 3)"), std::string::npos) << grows.what;
   EXPECT_NE(grows.advice.find("method.support_ratio"), std::string::npos);
+}
+
+// docs/studies/stability-atlas.md: in 3-D m = 2 grows from a / h = 2.5 (lamb2d's default) and 2.2 is
+// the widest stable support, which the advice names (lamb3d's default).
+TEST(CollocationSpec, ThreeDimensionalRkSupportsFromTwoPointFiveOnHaveGrowingInteriorModes) {
+  const Material material = Material::fromLame(1, 1, 1);
+  EXPECT_FALSE(rkGrowingModes(3, 2, 2.2, material).growing());
+  const CollocationGrowingModes grows = rkGrowingModes(3, 2, 2.5, material);
+  ASSERT_TRUE(grows.growing());
+  EXPECT_NE(grows.what.find("method.support_ratio = 2.5)"), std::string::npos) << grows.what;
+  EXPECT_NE(grows.advice.find("2.2"), std::string::npos) << grows.advice;
+  EXPECT_THROW(rkGrowingModes(1, 2, 2.2, material), InputError);
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 #pragma once
 // One run of the lamb3d / lamb2d study: a scene (possibly re-gridded, re-boxed or with other
-// boundaries) through the very weak form SPH and central differences, or (lamb2d) through RK
-// collocation (LambCollocationCase.hpp), its probes compared with the exact response of the
-// half-space, or (lamb2d) through the updated-Lagrangian SPH for solids (LambSolidCase.hpp).
+// boundaries) through the very weak form SPH and central differences, or through RK collocation
+// (LambCollocationCase.hpp), its probes compared with the exact response of the half-space, or
+// (lamb2d) through the updated-Lagrangian SPH for solids (LambSolidCase.hpp).
 
 #include "analysis/SignalComparison.hpp"
 #include "io/run/StudyCases.hpp"

@@ -1,21 +1,31 @@
 #pragma once
-// One RK collocation case of the lamb2d study: the plane-strain Lamb problem of the scene by
-// Luo-Liu-Huang's strong-form collocation with reproducing-kernel shape functions, on the same
-// lattice nodes as the very weak SPH case at this spacing, scored against the same exact response.
+// One RK collocation case of the lamb2d or lamb3d study: the plane-strain or 3-D Lamb problem of the
+// scene by Luo-Liu-Huang's strong-form collocation with reproducing-kernel shape functions, on the
+// same lattice nodes as the very weak SPH case at this spacing, scored against the same exact
+// response. One implementation for D = 2 and 3.
 //
-//   nodes               the scene's rectangle lattice (buildParticles, physical particles only);
-//                       collocation points = nodes (Nc = Ns)
+//   nodes               the scene's rectangle or block lattice (buildParticles, physical particles
+//                       only); collocation points = nodes (Nc = Ns)
 //   interior rows       rho u'' - L u = 0 (Luo-Liu-Huang eq. (12))
-//   traction rows       the loaded face without its two corners: sigma(u) n = h(x, t) (eq. (13)),
-//                       n the face's outward normal, h = traction w(x) f(t), w = 1 inside the patch,
-//                       1/2 on its edges (which fall on nodes: the trapezoid rule then gives the
-//                       load's total force), 0 outside
-//   displacement rows   every other boundary node (sides, bottom, the loaded face's corners): u = 0
+//   traction rows       the loaded face's nodes on no other face (2-D: without its two corners,
+//                       3-D: without its edges and corners): sigma(u) n = h(x, t) (eq. (13)), n the
+//                       face's outward normal, h = traction w(x) f(t), w the product over the face's
+//                       axes of 1 inside the patch, 1/2 on its edges (which fall on nodes: the
+//                       trapezoid rule then gives the load's total force), 0 outside (3-D: 1/4 at
+//                       the square's corners)
+//   displacement rows   every other boundary node (sides, bottom, the loaded face's corners or
+//                       edges): u = 0
 //
 // Fixed faces stand in for the scene's transmitting ones: the case notes when the first P wave
-// they reflect reaches a probe (for data/scenes/lamb2d.toml 13.5 / sqrt 3 = 7.8 after the start,
-// from the strip's edge via the +x face to the surface receiver), after the error window of 6;
-// runs longer than that see the reflections the dashpots would have absorbed.
+// they reflect reaches a probe. For data/scenes/lamb2d.toml 13.5 / sqrt 3 = 7.8 after the start,
+// from the strip's edge via the +x face to the surface receiver, after the error window of 6; runs
+// longer than that see the reflections the dashpots would have absorbed. For data/scenes/lamb3d.toml
+// (a 7-wide block) 4.5 / sqrt 3 = 2.6, from the square's edge via the +x face to the surface
+// receiver, INSIDE the window (the centre sees the side faces' at 6.5 / sqrt 3 = 3.75, the buried
+// probe at 6.58 / sqrt 3 = 3.80): the 3-D errors include these reflections. Measured at dx = 0.5 on
+// the scene's 13 x 13 x 7 free-block box with the same fixed faces (first reflection at 6.06):
+// 0.278 / 0.387 / 0.361 against 0.281 / 0.505 / 0.368 (centre / receiver / buried), so they cost the
+// surface receiver 0.12 and the other two under 0.01.
 //
 // The system is ConstrainedCollocationSystem (the boundary rows imposed at every instant, U the
 // values at the interior nodes), stepped by makeConstrainedIntegrator at the scene's fraction of
@@ -55,6 +65,24 @@
 //    The strip's edges are no worse than its centre: a probe at the edge (x = 0.5) errs 0.107 and
 //    0.040 (dx = 0.25, 0.125), one at x = 0.25 0.134 and 0.051; away from the strip the error grows
 //    with distance along the surface (x = 1: 0.238, 0.101).
+//
+// In 3-D, measured on data/scenes/lamb3d.toml (m = 2, a / h = 2.2, the widest support whose
+// interior rows do not grow; central difference at half the stable step):
+//  - Stability. The traction rows' complex pairs grow far faster than in 2-D: at dx = 0.5 the
+//    probes' envelope grows at 0.58 / s (e-folding 1.7 s, a period of about 0.7 s; 0.57 / s at
+//    half the step, so the semi-discrete system's), and a run to t = 300 is stopped (exit 3,
+//    "growth after the loads ended") at t = 34.6, at the interior node (0, 0, -0.5) under the load
+//    centre (t = 35.2 at half the step). Extrapolated back along that rate the pair starts at about
+//    1e-5 of the response, about 5e-4 of the centre's peak at t = 6: the errors over the window do
+//    not see it. The rate was read off the probes, not off the operator's spectrum (a dense
+//    non-symmetric 6591 x 6591 eigenproblem at dx = 0.5, not attempted).
+//  - Accuracy. Centre / receiver / buried 0.281 / 0.505 / 0.368 at dx = 0.5, 0.144 / 0.430 / 0.157
+//    at 0.25 (the very weak SPH Galerkin variant: 0.22 / 0.84 / 0.61, 0.10 / 0.21 / 0.20), with the
+//    fixed side faces' reflections inside the window (above) and the square two spacings wide at 0.5.
+//  - Cost. Every step and every power iteration is a sparse LU solve with C, whose fill grows fast
+//    in 3-D: dx = 0.5 (3375 nodes) takes 16.8 s of set-up, 7.8 s for 104 steps and 254 MiB; dx =
+//    0.25 (24,389 nodes) 749 s of CPU (about 560 set-up, 190 for 220 steps) and 4167 MiB, about
+//    nodes^1.41, so dx = 0.125 would need about 71 GiB (lamb3d refuses it: drivers/lamb3d/main.cpp).
 
 #include "studies/lamb3d/LambCase.hpp"
 

@@ -1,7 +1,8 @@
 #pragma once
-// When the first wave the box's other faces send back reaches a probe of the 2-D or 3-D Lamb scene:
-// the RK collocation case (fixed faces) and the updated-Lagrangian SPH case (free faces) stand in
-// for the scene's transmitting faces with reflecting ones, and say from when their probes see it.
+// When the first wave the box's other faces send back reaches a probe of the Lamb scene (2-D: the
+// rectangle, 3-D: the block): the RK collocation case (fixed faces) and the updated-Lagrangian SPH
+// case (free faces) stand in for the scene's transmitting faces with reflecting ones, and say from
+// when their probes see it.
 
 #include "io/scene/Scene.hpp"
 #include "observers/ProbeRecorder.hpp"
@@ -22,6 +23,8 @@ struct FirstReflection {
 // 2-D, a rectangle in 3-D), reflects once off a face of `faces` (a BoxFace mask) of the case's `box`
 // and reaches the probe: the distance from the patch to the probe's mirror image in that face, over
 // c_p (the fastest wave, whatever the face's condition). The scene's first load is the surface_patch.
+// For data/scenes/lamb3d.toml with fixed or free side faces: 4.5 / sqrt 3 = 2.60, from the square's
+// edge x = 0.5 via the +x face (x = 3.5) to the receiver at x = 2, inside the error window 6.
 template <int D>
 FirstReflection firstReflection(const Scene& scene, const GeometrySpec& box, const ParticleSet<D>& particles,
                                 const std::vector<Probe>& probes, unsigned faces);
