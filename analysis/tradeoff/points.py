@@ -14,7 +14,7 @@ ERROR_MEASURES = {
     "bar_impact_1d": "relative L1 of v at T over the particles",
     "lamb_3d": "relative L2 of v_z over 0-6 s, worst of the centre, surface (2 away) and buried (1 deep) receivers",
     "lamb_2d": "relative L2 of v_y over 0-6 s, worst of the centre, surface (2 away) and buried (1 deep) receivers",
-    "plane_wave_2d": "relative L2 of u at T (2 periods) over the lattice nodes",
+    "plane_wave_2d": "relative L2 of u at T (2 periods) over the nodes (the SEM: GLL quadrature weights)",
 }
 
 
@@ -208,7 +208,7 @@ def _dedupe(points):
 
 
 def default_sweep():
-    """208 points, about 4 minutes on 2 idle cores (the largest: lamb3d's Galerkin variant at dx = 0.0625, about 40 s; the UL-SPH on lamb2d at 0.0625, about 30 s; RK collocation on lamb2d at 0.125, about 20 s)."""
+    """229 points, about 5 minutes on 2 idle cores (the largest: lamb3d's Galerkin variant at dx = 0.0625, about 40 s; the UL-SPH on lamb3d at 0.25, about 40 s; the UL-SPH on lamb2d at 0.0625, about 30 s; RK collocation on lamb3d at 0.5 and on lamb2d at 0.125, about 20 s each)."""
     pts = []
     # Standing wave, finite differences: every integrator over resolutions, then step fractions
     # (1.0 is the 1-D "magic" step of central differences; 1.05 is above the limit and fails).
@@ -290,7 +290,7 @@ def default_sweep():
 
 
 def full_sweep():
-    """The default points and 205 more: finer resolutions, more kernels and fractions (about 15 minutes on 2 cores; RK collocation on lamb2d at dx = 0.0625 alone takes 3 minutes, the UL-SPH on lamb3d at 0.125 about 9)."""
+    """The default points and 210 more: finer resolutions, more kernels and fractions (about 15 minutes on 2 cores; RK collocation on lamb2d at dx = 0.0625 alone takes 3 minutes, the UL-SPH on lamb3d at 0.125 about 9)."""
     pts = default_sweep()
     for integ in ("central_difference", "leapfrog", "newmark", "arkode"):
         pts += [wave1d(c, integ) for c in (4096, 8192)]
