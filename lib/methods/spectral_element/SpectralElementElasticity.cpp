@@ -113,9 +113,13 @@ SpectralElementElasticity<D>::SpectralElementElasticity(SpectralElementSettings<
     std::vector<Real>& coordinates = axisCoordinates_[static_cast<std::size_t>(axis)];
     coordinates.resize(static_cast<std::size_t>(nodes_[static_cast<std::size_t>(axis)]));
     for (Index e = 0; e < elements_[static_cast<std::size_t>(axis)]; ++e)
-      for (int a = 0; a <= n; ++a)
-        coordinates[static_cast<std::size_t>(e * n + a)] =
-            settings_.lower[axis] + h * (static_cast<Real>(e) + 0.5 * (1 + gllNodes_[static_cast<std::size_t>(a)]));
+      for (int a = 0; a <= n; ++a) {
+        // along a periodic axis the last element's far line is the first node line: no entry of its own
+        const auto at = static_cast<std::size_t>(e * n + a);
+        if (at < coordinates.size())
+          coordinates[at] =
+              settings_.lower[axis] + h * (static_cast<Real>(e) + 0.5 * (1 + gllNodes_[static_cast<std::size_t>(a)]));
+      }
     if (!periodic_[static_cast<std::size_t>(axis)]) coordinates.back() = settings_.upper[axis];
   }
   buildReferenceData();
