@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Fuzzes the scene reader and the time-function tables with libFuzzer (clang, address and
-# undefined-behaviour sanitizers: the fuzz preset) for SECONDS per target (default 60), from the
-# seed corpus (data/scenes, tests/fuzz/seeds), and prints the executions each target reached.
+# Fuzzes the scene reader, the time-function tables and the checkpoint reader with libFuzzer
+# (clang, address and undefined-behaviour sanitizers: the fuzz preset) for SECONDS per target
+# (default 60), from the seed corpus (data/scenes, tests/fuzz/seeds), and prints the executions
+# each target reached.
 # A crash stops with a non-zero exit and the input libFuzzer wrote (build/fuzz/artifacts/): copy it
 # into tests/fuzz/regressions/<target>/ so that test_fuzz_replay replays it in every build.
 #   bash scripts/run-fuzz.sh [SECONDS]
@@ -13,7 +14,7 @@ cmake --preset fuzz > /dev/null
 cmake --build --preset fuzz
 build=build/fuzz
 status=0
-for target in scene time_function; do
+for target in scene time_function checkpoint; do
   corpus="$build/corpus/$target"
   artifacts="$build/artifacts/$target"
   mkdir -p "$corpus" "$artifacts"

@@ -21,4 +21,9 @@ void readSceneBytes(const std::uint8_t* data, std::size_t size);
 // A time-function CSV table (TimeFunction::fromCsvText), evaluated at its breakpoints and between.
 void readTimeFunctionBytes(const std::uint8_t* data, std::size_t size);
 
+// A checkpoint file (decodeCheckpoint), and the same bytes as the payload of a checkpoint whose
+// header and CRC-32C are made to fit, so that the payload's reader is reached past the checksum.
+// A clean refusal here is CorruptCheckpoint or InputError.
+void readCheckpointBytes(const std::uint8_t* data, std::size_t size);
+
 }  // namespace mfwave::fuzz

@@ -5,6 +5,7 @@
 
 #include "FuzzEntries.hpp"
 #include "core/BoundedRead.hpp"
+#include "io/checkpoint/Checkpoint.hpp"
 
 #include <gtest/gtest.h>
 
@@ -35,6 +36,10 @@ std::string bytesOf(const fs::path& path) {
 
 void readScene(const std::string& bytes) {
   readSceneBytes(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+}
+
+void readCheckpoint(const std::string& bytes) {
+  readCheckpointBytes(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
 }
 
 void readTable(const std::string& bytes) {
@@ -77,6 +82,23 @@ TEST(FuzzReplay, HandMadeHostileTables) {
   const std::vector<std::string> inputs = {"", "t,v\n", "0,0\n0,1\n", "0,nan\n1,1\n", "0,0\n1e308,1\n-1e308,2\n",
                                            "0 0 0\n", "header\nheader2\n0,0\n1,1\n", std::string(1000, ',')};
   for (const std::string& input : inputs) EXPECT_NO_THROW(readTable(input)) << input.substr(0, 80);
+}
+
+TEST(FuzzReplay, SeedCheckpointsAndCheckpointRegressions) {
+  std::vector<fs::path> inputs = filesUnder(kSource / "tests" / "fuzz" / "seeds" / "checkpoint");
+  ASSERT_GE(inputs.size(), 2u);
+  // the seed file is a whole checkpoint (written by hand to the layout of Checkpoint.hpp)
+  const Checkpoint seed = decodeCheckpoint(bytesOf(kSource / "tests" / "fuzz" / "seeds" / "checkpoint" / "two-arrays.mfwc"), "seed");
+  EXPECT_EQ(seed.step, 12);
+  EXPECT_EQ(seed.array("displacement"), (std::vector<Real>{1.0, -2.5, 1e-300}));
+  for (const fs::path& p : filesUnder(kSource / "tests" / "fuzz" / "regressions" / "checkpoint")) inputs.push_back(p);
+  for (const fs::path& p : inputs) EXPECT_NO_THROW(readCheckpoint(bytesOf(p))) << p;
+  // hand-made payloads: an array count and an array length far beyond the bytes, a string length of 2^63
+  std::string huge(8, '\0');
+  huge += std::string(8, '\xff');
+  EXPECT_NO_THROW(readCheckpoint(huge));
+  EXPECT_NO_THROW(readCheckpoint(std::string(40, '\xff')));
+  EXPECT_NO_THROW(readCheckpoint(""));
 }
 
 }  // namespace
