@@ -40,4 +40,17 @@ void ReportedProbes::writeCsv(const std::string& path, const std::vector<std::ve
   file.commit();
 }
 
+NodalProbes::NodalProbes(std::vector<Probe> probes, int dimension, Real scale)
+    : ReportedProbes(std::move(probes)), dimension_(dimension), scale_(scale) {}
+
+void NodalProbes::observe(const StateView& s) {
+  if (!beginSample(s.time)) return;
+  for (std::size_t i = 0; i < probes().size(); ++i) {
+    const Probe& p = probes()[i];
+    const Vector& field = p.quantity == ProbeQuantity::Velocity ? s.velocity : s.displacement;
+    const Real value = field[dimension_ * p.particle + p.component] / scale_;
+    add(i, value, value);
+  }
+}
+
 }  // namespace mfwave

@@ -43,4 +43,18 @@ class ReportedProbes : public Observer {
   std::vector<std::vector<Real>> raw_, reported_;
 };
 
+// The state's own value at each probe (component p.component of the probe's node or particle, D
+// per node, of u or v) divided by `scale`; raw and reported are the same. The spectral elements'
+// nodal values (scale 1), the UL-SPH at small amplitude eps (u = x - X and v over eps: the linear
+// problem's unit-load response).
+class NodalProbes : public ReportedProbes {
+ public:
+  NodalProbes(std::vector<Probe> probes, int dimension, Real scale = 1);
+  void observe(const StateView& s) override;
+
+ private:
+  int dimension_;
+  Real scale_;
+};
+
 }  // namespace mfwave

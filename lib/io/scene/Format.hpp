@@ -23,6 +23,10 @@ std::string tomlArray(const std::vector<std::string>& values);
 std::string tomlArray(const std::vector<bool>& values);
 // "(0.5, 0.5, 1)" for messages.
 std::string formatPoint(const std::vector<Real>& x);
+template <int D>
+std::string formatPoint(const Vec<D>& x) {
+  return formatPoint(std::vector<Real>(x.data(), x.data() + D));
+}
 // "a, b, c".
 std::string joinNames(const std::vector<std::string>& names, const std::string& separator = ", ");
 

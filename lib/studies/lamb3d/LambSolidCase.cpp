@@ -27,35 +27,6 @@ namespace mfwave::lamb3d {
 
 namespace {
 
-// The probes of the particle view (SolidStateAdapter: u = x - X, v) divided by the amplitude eps,
-// so that they read the linear problem's unit-load response. Raw and reported are the same value.
-class SolidProbes : public ReportedProbes {
- public:
-  SolidProbes(std::vector<Probe> probes, Real amplitude, int dimension)
-      : ReportedProbes(std::move(probes)), amplitude_(amplitude), dimension_(dimension) {}
-
-  void observe(const StateView& s) override {
-    if (!beginSample(s.time)) return;
-    for (std::size_t i = 0; i < probes().size(); ++i) {
-      const Probe& p = probes()[i];
-      const Vector& field = p.quantity == ProbeQuantity::Velocity ? s.velocity : s.displacement;
-      const Real value = field[p.particle * dimension_ + p.component] / amplitude_;
-      add(i, value, value);
-    }
-  }
-
- private:
-  Real amplitude_;
-  int dimension_;
-};
-
-template <int D>
-std::vector<Real> pointOf(const Vec<D>& x) {
-  std::vector<Real> p;
-  for (int d = 0; d < D; ++d) p.push_back(x[d]);
-  return p;
-}
-
 // What the patch is, in the words of the case's notes: a strip (2-D) or a rectangle (3-D).
 template <int D>
 std::string patchNote(const std::string& caseName, const LoadSpec& load, const PatchTraction& patch) {
@@ -105,7 +76,7 @@ CaseResult runSolidCaseIn(const StudySettings& study, const CaseSettings& settin
 
   const std::vector<Probe> probes = resolveProbes(scene.probes, physical);
   SolidStateAdapter<D> adapter(system, physical);
-  SolidProbes recorder(probes, eps, D);
+  NodalProbes recorder(probes, D, eps);  // u = x - X and v over eps
   StabilityMonitor monitor(scene.stability.options(D, loadsQuietAfter(scene)));
   adapter.add(monitor, 1);
   adapter.add(recorder, scene.output.probeEvery);
@@ -151,7 +122,7 @@ CaseResult runSolidCaseIn(const StudySettings& study, const CaseSettings& settin
     if (e.particle() < 0 || e.particle() >= record.particles) throw;
     std::ostringstream where;
     where << e.what() << " [updated-Lagrangian SPH: particle " << e.particle() << " starts at "
-          << scene::formatPoint(pointOf<D>(physical.position(e.particle()))) << "]";
+          << scene::formatPoint<D>((physical.position(e.particle()))) << "]";
     throw InstabilityError(where.str(), e.step(), e.time(), e.particle());
   }
   result.recordLoop(stats);

@@ -27,33 +27,6 @@ namespace mfwave::lamb3d {
 
 namespace {
 
-// The probes of a spectral-element run: the state at the probe's GLL node (the SEM field there is
-// the nodal value; raw and reported are the same).
-class SpectralElementProbes : public ReportedProbes {
- public:
-  SpectralElementProbes(std::vector<Probe> probes, int dimension) : ReportedProbes(std::move(probes)), dimension_(dimension) {}
-
-  void observe(const StateView& s) override {
-    if (!beginSample(s.time)) return;
-    for (std::size_t i = 0; i < probes().size(); ++i) {
-      const Probe& p = probes()[i];
-      const Vector& field = p.quantity == ProbeQuantity::Velocity ? s.velocity : s.displacement;
-      const Real value = field[dimension_ * p.particle + p.component];
-      add(i, value, value);
-    }
-  }
-
- private:
-  int dimension_;
-};
-
-template <int D>
-std::vector<Real> pointOf(const Vec<D>& x) {
-  std::vector<Real> p;
-  for (int d = 0; d < D; ++d) p.push_back(x[d]);
-  return p;
-}
-
 // The scene's faces for the SEM: transmitting -> dashpots, fixed -> u = 0, free -> natural.
 template <int D>
 std::array<SpectralElementFace, 2 * D> spectralElementFaces(const Scene& scene) {
@@ -161,11 +134,11 @@ CaseResult runSpectralElementCaseIn(const StudySettings& study, const CaseSettin
     if (offset > 1e-9 * elementSize) {
       std::ostringstream note;
       note << std::setprecision(3) << settings.name << ": probe " << probes[i].name << " reads the GLL node "
-           << offset << " from its position (" << scene::formatPoint(pointOf<D>(particles.position(probes[i].particle))) << ")";
+           << offset << " from its position (" << scene::formatPoint<D>((particles.position(probes[i].particle))) << ")";
       result.notes.push_back(note.str());
     }
   }
-  SpectralElementProbes recorder(probes, D);
+  NodalProbes recorder(probes, D);  // the SEM field at a GLL node is its nodal value
   record.setupSeconds = setupClock.seconds();
   {
     std::ostringstream note;
