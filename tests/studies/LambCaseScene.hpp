@@ -8,6 +8,8 @@
 #include "studies/lamb3d/LambCase.hpp"
 #include "study/VeryWeakSphSpec.hpp"
 
+#include <gtest/gtest.h>
+
 #include <string>
 #include <vector>
 
@@ -44,6 +46,15 @@ inline bool anyNoteHas(const std::vector<std::string>& notes, const std::string&
   for (const std::string& n : notes)
     if (n.find(text) != std::string::npos) return true;
   return false;
+}
+
+// Every probe of a case whose method reports its state as it is (RK collocation's u^h, the UL-SPH,
+// the spectral elements) has an exact response, and its raw and reported errors are the same.
+inline void expectEveryProbeScoredAsRaw(const CaseResult& r) {
+  for (const ProbeResult& p : r.probes) {
+    EXPECT_TRUE(p.hasExact) << p.name;
+    EXPECT_EQ(p.raw.relativeL2, p.reported.relativeL2) << p.name;
+  }
 }
 
 }  // namespace mfwave::lamb3d::testing

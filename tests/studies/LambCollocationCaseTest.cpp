@@ -50,10 +50,7 @@ TEST(LambCollocationCase, RunsThePlaneStrainLambProblemAndScoresEveryProbe) {
   EXPECT_GT(r.record.timeStep, 0.45 * r.record.stableTimeStep);
   EXPECT_GT(r.meanNeighbours, 15);
   ASSERT_EQ(r.probes.size(), 3u);
-  for (const ProbeResult& p : r.probes) {
-    EXPECT_TRUE(p.hasExact) << p.name;
-    EXPECT_EQ(p.raw.relativeL2, p.reported.relativeL2) << p.name;
-  }
+  testing::expectEveryProbeScoredAsRaw(r);
   // Measured (dx = 0.5 is coarse: the load's strip is two spacings wide).
   EXPECT_NEAR(r.probes[0].reported.relativeL2, 0.347, 0.01);  // centre
   EXPECT_NEAR(r.probes[1].reported.relativeL2, 0.663, 0.02);  // receiver
@@ -101,10 +98,7 @@ TEST(LambCollocationCase, RunsThe3dLambProblemAndScoresEveryProbe) {
   EXPECT_LE(r.record.timeStep, 0.5 * r.record.stableTimeStep * (1 + 1e-12));
   EXPECT_GT(r.record.timeStep, 0.45 * r.record.stableTimeStep);
   ASSERT_EQ(r.probes.size(), 3u);
-  for (const ProbeResult& p : r.probes) {
-    EXPECT_TRUE(p.hasExact) << p.name;
-    EXPECT_EQ(p.raw.relativeL2, p.reported.relativeL2) << p.name;
-  }
+  testing::expectEveryProbeScoredAsRaw(r);
   // Measured.
   EXPECT_NEAR(r.probes[0].reported.relativeL2, 0.281, 0.01);    // centre
   EXPECT_NEAR(r.probes[1].reported.relativeL2, 0.505, 0.02);  // receiver

@@ -122,7 +122,7 @@ CaseResult runSolidCaseIn(const StudySettings& study, const CaseSettings& settin
     if (e.particle() < 0 || e.particle() >= record.particles) throw;
     std::ostringstream where;
     where << e.what() << " [updated-Lagrangian SPH: particle " << e.particle() << " starts at "
-          << scene::formatPoint<D>((physical.position(e.particle()))) << "]";
+          << scene::formatPoint<D>(physical.position(e.particle())) << "]";
     throw InstabilityError(where.str(), e.step(), e.time(), e.particle());
   }
   result.recordLoop(stats);

@@ -134,7 +134,7 @@ CaseResult runSpectralElementCaseIn(const StudySettings& study, const CaseSettin
     if (offset > 1e-9 * elementSize) {
       std::ostringstream note;
       note << std::setprecision(3) << settings.name << ": probe " << probes[i].name << " reads the GLL node "
-           << offset << " from its position (" << scene::formatPoint<D>((particles.position(probes[i].particle))) << ")";
+           << offset << " from its position (" << scene::formatPoint<D>(particles.position(probes[i].particle)) << ")";
       result.notes.push_back(note.str());
     }
   }
