@@ -96,6 +96,8 @@ struct ArkodeExplicit::Impl {
   FirstOrderSystem* system = nullptr;
   Real time = 0;
   Real maxStep = 0;            // adaptive runs: setMaxStep's bound (0: none)
+  ArkodeStatistics before;     // counters of the run before the checkpoint this one resumed from
+  Real resumedLastStep = 0;    // the last step before that checkpoint, until a step is taken
   std::exception_ptr pending;  // an exception thrown by the system inside a SUNDIALS callback
   std::string lastMessage;     // SUNDIALS's own text for the last error
 
@@ -236,6 +238,8 @@ void ArkodeExplicit::initialise(FirstOrderSystem& system, Real t0, const Vector&
     throw InputError("integrator.time_step", "a fixed-step run needs a positive step (got " +
                                                  std::to_string(o.fixedStep) + ")");
   m.release();
+  m.before = {};
+  m.resumedLastStep = 0;
   m.yData = y0;  // from here on, yData is never resized: ARKODE holds a pointer to its storage
   m.time = t0;
   m.system = &system;
@@ -319,7 +323,7 @@ Real ArkodeExplicit::lastStepSize() const {
   if (!impl_->memory) return 0;
   sunrealtype h = 0;
   impl_->check(ERKStepGetLastStep(impl_->memory, &h), "ERKStepGetLastStep");
-  return h;
+  return h != 0 ? h : impl_->resumedLastStep;
 }
 
 ArkodeStatistics ArkodeExplicit::statistics() const {
@@ -335,7 +339,44 @@ ArkodeStatistics ArkodeExplicit::statistics() const {
   s.rhsEvaluations = value;
   m.check(ERKStepGetNumErrTestFails(m.memory, &value), "ERKStepGetNumErrTestFails");
   s.failedSteps = value;
+  s.steps += m.before.steps;
+  s.stepAttempts += m.before.stepAttempts;
+  s.rhsEvaluations += m.before.rhsEvaluations;
+  s.failedSteps += m.before.failedSteps;
   return s;
+}
+
+void ArkodeExplicit::saveState(StateArchive& archive) const {
+  const Impl& m = *impl_;
+  if (!m.memory) throw Error("arkode: saveState() called before initialise()");
+  if (m.options.adaptive)
+    throw InputError("integrator.adaptive",
+                     "an adaptive ARKODE run cannot be checkpointed: its step-size controller keeps a history "
+                     "ARKODE does not expose, so a restart would not be the same run; use a fixed step");
+  archive.putScalar("time", m.time);
+  archive.put("y", m.yData);
+  archive.putScalar("fixed_step", m.options.fixedStep);
+  archive.putScalar("last_step", lastStepSize());
+  const ArkodeStatistics s = statistics();
+  archive.put("statistics", std::vector<Real>{static_cast<Real>(s.steps), static_cast<Real>(s.stepAttempts),
+                                              static_cast<Real>(s.rhsEvaluations), static_cast<Real>(s.failedSteps)});
+  StateArchive system = archive.section("system");
+  m.system->saveState(system);
+}
+
+void ArkodeExplicit::restoreState(const StateArchive& archive) {
+  Impl& m = *impl_;
+  if (!m.memory) throw Error("arkode: restoreState() called before initialise()");
+  Vector y(m.yData.size());
+  archive.get("y", y);
+  const std::vector<Real>& counts = archive.get("statistics");
+  if (counts.size() != 4) throw InputError("--restart", "the checkpoint's ARKODE statistics are not 4 counts");
+  m.options.fixedStep = archive.scalar("fixed_step");
+  initialise(*m.system, archive.scalar("time"), y);
+  m.before = {static_cast<long>(counts[0]), static_cast<long>(counts[1]), static_cast<long>(counts[2]),
+              static_cast<long>(counts[3])};
+  m.resumedLastStep = archive.scalar("last_step");
+  m.system->restoreState(archive.section("system"));
 }
 
 }  // namespace mfwave

@@ -8,6 +8,7 @@
 // right-hand side is evaluated on Eigen::Maps of ARKODE's vectors (FirstOrderSystem::rhs takes Eigen::Ref): no
 // copies between the two libraries.
 
+#include "core/StateArchive.hpp"
 #include "core/Types.hpp"
 #include "systems/FirstOrderSystem.hpp"
 
@@ -76,6 +77,14 @@ class ArkodeExplicit {
   // across initialise. Throws
   // InputError("integrator.max_step") for a negative or non-finite h, Error on a fixed-step run.
   void setMaxStep(Real h);
+
+  // Checkpoints, fixed-step runs only: t, y, the step, the last step and the counters.
+  // restoreState re-creates ARKODE's memory at (t, y) on the bound system: an explicit Runge-Kutta
+  // step with a fixed size depends on nothing else, so the steps that follow are bitwise those of
+  // the uninterrupted run. An adaptive run's error controller keeps a history ARKODE does not
+  // expose: saveState refuses it (InputError "integrator.adaptive").
+  void saveState(StateArchive& archive) const;
+  void restoreState(const StateArchive& archive);
 
   Real time() const;
   const Vector& state() const;   // y at time()

@@ -89,4 +89,15 @@ double ArkodeFirstOrder::rhsEvaluations() const {
   return static_cast<double>(arkode_->isInitialised() ? arkode_->statistics().rhsEvaluations : 0);
 }
 
+void ArkodeFirstOrder::saveState(StateArchive& archive) const {
+  requireInitialised("saveState()");
+  arkode_->saveState(archive);
+}
+
+void ArkodeFirstOrder::restoreState(const StateArchive& archive) {
+  requireInitialised("restoreState()");
+  arkode_->restoreState(archive);
+  steps_ = arkode_->statistics().steps;
+}
+
 }  // namespace mfwave

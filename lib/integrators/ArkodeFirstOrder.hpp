@@ -33,6 +33,10 @@ class ArkodeFirstOrder : public FirstOrderIntegrator {
   // ARKODE's count of F calls (classic RK4: 4 per step).
   double rhsEvaluations() const override;
 
+  // Fixed-step runs only (ArkodeExplicit::saveState).
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
+
   const ArkodeExplicit& arkode() const { return *arkode_; }
   const ArkodeOptions& options() const { return options_; }
 

@@ -48,6 +48,17 @@ Real ArkodeSecondOrder::stepSize() const {
   return last > 0 ? last : dt_;
 }
 
+void ArkodeSecondOrder::saveState(StateArchive& archive) const {
+  if (!firstOrder_) throw Error("arkode: saveState() called before initialise()");
+  arkode_->saveState(archive);
+}
+
+void ArkodeSecondOrder::restoreState(const StateArchive& archive) {
+  if (!firstOrder_) throw Error("arkode: restoreState() called before initialise()");
+  arkode_->restoreState(archive);
+  syncState();
+}
+
 void ArkodeSecondOrder::syncState() {
   firstOrder_->unpack(arkode_->state(), u_, v_);
   steps_ = arkode_->statistics().steps;

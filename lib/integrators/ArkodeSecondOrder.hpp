@@ -32,6 +32,10 @@ class ArkodeSecondOrder : public SecondOrderIntegrator {
   Real stepSize() const override;
   StateView state() const override { return {steps_, time(), u_, v_, stepSize()}; }
 
+  // Fixed-step runs only (ArkodeExplicit::saveState).
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
+
   const ArkodeExplicit& arkode() const { return *arkode_; }
   const ArkodeOptions& options() const { return options_; }
 

@@ -69,6 +69,19 @@ void CentralDifference::step() {
   closeStep();
 }
 
+void CentralDifference::saveHistory(StateArchive& archive) const {
+  archive.put("v_half", vHalf_);
+  if (prescribed_) {
+    StateArchive section = archive.section("prescribed");
+    prescribed_->saveState(section);
+  }
+}
+
+void CentralDifference::restoreHistory(const StateArchive& archive) {
+  archive.get("v_half", vHalf_);
+  if (prescribed_) prescribed_->restoreState(archive.section("prescribed"));
+}
+
 void CentralDifference::closeStep() {
   // g_{n+2} at t0 + (n+2) dt, on the grid like advanceClock's times
   if (prescribed_) prescribed_->advance(t0_ + static_cast<Real>(steps_ + 1) * dt_, dt_);

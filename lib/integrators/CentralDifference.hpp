@@ -79,6 +79,11 @@ class CentralDifference : public FixedStepSecondOrderIntegrator {
   static std::vector<std::string> dampingNames();
   static Damping dampingFromName(const std::string& name);
 
+ protected:
+  // v_{n-1/2} and the prescribed displacements' window (g_n, g_{n+1} and the reported v, a there).
+  void saveHistory(StateArchive& archive) const override;
+  void restoreHistory(const StateArchive& archive) override;
+
  private:
   // After the drift and the clock: a_{n+1} and the synchronous v_{n+1}.
   void closeStep();

@@ -43,4 +43,16 @@ void ConstrainedNewmark::step() {
   a_ = constrained_->observedValues(da_);
 }
 
+void ConstrainedNewmark::saveHistory(StateArchive& archive) const {
+  archive.put("d", d_);
+  archive.put("d_rate", dv_);
+  archive.put("d_acceleration", da_);
+}
+
+void ConstrainedNewmark::restoreHistory(const StateArchive& archive) {
+  archive.get("d", d_);
+  archive.get("d_rate", dv_);
+  archive.get("d_acceleration", da_);
+}
+
 }  // namespace mfwave

@@ -40,6 +40,11 @@ class ConstrainedNewmark : public FixedStepSecondOrderIntegrator {
   const Vector& coefficientRates() const { return dv_; }
   const Vector& coefficientAccelerations() const { return da_; }
 
+ protected:
+  // The coefficients d, d', d'' (u, v, a are their observed values).
+  void saveHistory(StateArchive& archive) const override;
+  void restoreHistory(const StateArchive& archive) override;
+
  private:
   Real beta_, gamma_;
   ConstrainedSecondOrderSystem* constrained_ = nullptr;

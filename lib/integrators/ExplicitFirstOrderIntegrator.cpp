@@ -69,4 +69,32 @@ void ExplicitFirstOrderIntegrator::advanceTo(Real t) {
   time_ = t;  // within round-off already; keep the caller's value exactly
 }
 
+void ExplicitFirstOrderIntegrator::saveState(StateArchive& archive) const {
+  requireInitialised("saveState()");
+  archive.put("y", y_);
+  archive.put("clock", std::vector<Real>{time_, static_cast<Real>(steps_), evaluations_, nominalStep_, lastStep_,
+                                         clockOrigin_, clockStep_, static_cast<Real>(clockSteps_)});
+  StateArchive history = archive.section("history");
+  saveHistory(history);
+  StateArchive system = archive.section("system");
+  system_->saveState(system);
+}
+
+void ExplicitFirstOrderIntegrator::restoreState(const StateArchive& archive) {
+  requireInitialised("restoreState()");
+  archive.get("y", y_);
+  const std::vector<Real>& clock = archive.get("clock");
+  if (clock.size() != 8) throw InputError("--restart", name() + ": the checkpoint's clock is not 8 numbers");
+  time_ = clock[0];
+  steps_ = static_cast<long>(clock[1]);
+  evaluations_ = clock[2];
+  nominalStep_ = clock[3];
+  lastStep_ = clock[4];
+  clockOrigin_ = clock[5];
+  clockStep_ = clock[6];
+  clockSteps_ = static_cast<long>(clock[7]);
+  restoreHistory(archive.section("history"));
+  system_->restoreState(archive.section("system"));
+}
+
 }  // namespace mfwave

@@ -31,12 +31,20 @@ class ExplicitFirstOrderIntegrator : public FirstOrderIntegrator {
   const Vector& solution() const override { return y_; }
   double rhsEvaluations() const override { return evaluations_; }
 
+  // y, the clock (its origin, step and count, so that a restored run stays on the same grid), the
+  // counters, the bound system's own state and the rule's history (saveHistory).
+  void saveState(StateArchive& archive) const final;
+  void restoreState(const StateArchive& archive) final;
+
  protected:
   // After binding, before any step (the leapfrog evaluates its first momentum rate here).
   virtual void start() {}
   // y_ from time_ to time_ + dt; adds its evaluations to evaluations_. The clock is advanced by
   // the caller afterwards.
   virtual void advance(Real dt) = 0;
+  // What a derived rule carries between steps beyond y (none by default).
+  virtual void saveHistory(StateArchive& archive) const { (void)archive; }
+  virtual void restoreHistory(const StateArchive& archive) { (void)archive; }
 
   FirstOrderSystem* system_ = nullptr;
   Vector y_;

@@ -16,6 +16,12 @@ class FixedStepSecondOrderIntegrator : public SecondOrderIntegrator {
   // a_n at the current time.
   const Vector& acceleration() const { return a_; }
 
+  // The clock (t0, dt, t_n, n), (u_n, v_n, a_n), the bound system's own state and the derived
+  // scheme's history (saveHistory). restoreState checks that the step is the one this integrator
+  // was initialised with: a checkpoint of another step is another run.
+  void saveState(StateArchive& archive) const final;
+  void restoreState(const StateArchive& archive) final;
+
  protected:
   // Checks the initial state (checkInitialState), stores it, resets the clock and sizes a_.
   void bind(SecondOrderSystem& system, Real t0, const Vector& u0, const Vector& v0, Real dt);
@@ -30,6 +36,9 @@ class FixedStepSecondOrderIntegrator : public SecondOrderIntegrator {
   // velocity-dependent system gets the predictor v* = vHalf + dt/2 a_n (an O(dt^2) estimate of
   // v_{n+1}: second order with one evaluation); otherwise v is not used and vPredict is untouched.
   void closeHalfStep(const Vector& vHalf, Vector& vPredict);
+  // What a derived scheme carries between steps beyond (u_n, v_n, a_n) (none by default).
+  virtual void saveHistory(StateArchive& archive) const { (void)archive; }
+  virtual void restoreHistory(const StateArchive& archive) { (void)archive; }
   // Throws Error naming the integrator when step() comes before initialise().
   void requireInitialised() const;
 

@@ -22,6 +22,14 @@ void Integrator::advanceTo(Real t) {
   for (long i = 0; i < steps; ++i) step();
 }
 
+void Integrator::saveState(StateArchive&) const {
+  throw Error("the integrator " + name() + " cannot be checkpointed yet");
+}
+
+void Integrator::restoreState(const StateArchive&) {
+  throw Error("the integrator " + name() + " cannot be checkpointed yet");
+}
+
 void checkInitialState(const SecondOrderSystem& system, Real t0, const Vector& u0, const Vector& v0, Real dt) {
   const Index n = system.size();
   if (u0.size() != n || v0.size() != n)

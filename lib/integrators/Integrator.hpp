@@ -2,6 +2,7 @@
 // What every time integrator offers the time loop and the observers: advance one step, and show
 // the current state. Integrators see only semi-discrete systems (lib/systems), never particles.
 
+#include "core/StateArchive.hpp"
 #include "core/Types.hpp"
 #include "systems/SecondOrderSystem.hpp"
 
@@ -35,6 +36,14 @@ class Integrator {
   // Size of the last step taken (or of the next, before the first).
   virtual Real stepSize() const = 0;
   virtual StateView state() const = 0;
+
+  // Checkpoints (issue 20): everything a later restoreState needs to go on bitwise as if the run
+  // had never stopped (the state, the clock, the scheme's history, the bound system's own state).
+  // restoreState is called on an integrator initialised as for the original run (same system, same
+  // step), and replaces only what changes while stepping. The defaults throw Error: an integrator
+  // that cannot be checkpointed says so before the first step (TimeLoop tries a save first).
+  virtual void saveState(StateArchive& archive) const;
+  virtual void restoreState(const StateArchive& archive);
 };
 
 // An integrator of u'' = a(t, u, u').

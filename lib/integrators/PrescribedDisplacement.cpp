@@ -70,4 +70,18 @@ void PrescribedDisplacement::scatter(const Vector& values, Vector& full) const {
   for (size_t i = 0; i < dofs_.size(); ++i) full[dofs_[i]] = values[static_cast<Index>(i)];
 }
 
+void PrescribedDisplacement::saveState(StateArchive& archive) const {
+  archive.put("current", current_);
+  archive.put("next", next_);
+  archive.put("acceleration", acceleration_);
+  archive.put("velocity", velocity_);
+}
+
+void PrescribedDisplacement::restoreState(const StateArchive& archive) {
+  archive.get("current", current_);
+  archive.get("next", next_);
+  archive.get("acceleration", acceleration_);
+  archive.get("velocity", velocity_);
+}
+
 }  // namespace mfwave

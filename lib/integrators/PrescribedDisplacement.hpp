@@ -11,6 +11,7 @@
 //   a_{n+1}   = (g_{n+2} - 2 g_{n+1} + g_n) / dt^2
 // i.e. the central-difference velocity and acceleration of the prescribed motion itself.
 
+#include "core/StateArchive.hpp"
 #include "core/Types.hpp"
 
 #include <functional>
@@ -44,6 +45,9 @@ class PrescribedDisplacement {
   // a_{n+1} and v_{n+1} at the dofs (valid after advance).
   const Vector& acceleration() const { return acceleration_; }
   const Vector& velocity() const { return velocity_; }
+  // The window g_n, g_{n+1} and the reported v, a (for checkpoints).
+  void saveState(StateArchive& archive) const;
+  void restoreState(const StateArchive& archive);
   // full[dofs] = values.
   void scatter(const Vector& values, Vector& full) const;
 

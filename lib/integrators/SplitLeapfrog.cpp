@@ -50,4 +50,16 @@ void SplitLeapfrog::advance(Real dt) {
   evaluations_ += 1;
 }
 
+void SplitLeapfrog::saveHistory(StateArchive& archive) const {
+  archive.put("momentum_rate", momentumRate_);
+  archive.put("configuration_rate", configurationRate_);
+  archive.putScalar("have_configuration_rate", haveConfigurationRate_ ? 1 : 0);
+}
+
+void SplitLeapfrog::restoreHistory(const StateArchive& archive) {
+  archive.get("momentum_rate", momentumRate_);
+  archive.get("configuration_rate", configurationRate_);
+  haveConfigurationRate_ = archive.scalar("have_configuration_rate") != 0;
+}
+
 }  // namespace mfwave

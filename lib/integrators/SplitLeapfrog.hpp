@@ -46,6 +46,9 @@ class SplitLeapfrog : public ExplicitFirstOrderIntegrator {
  protected:
   void start() override;
   void advance(Real dt) override;
+  // P_n and Q_{n-1/2} (with whether it is there yet).
+  void saveHistory(StateArchive& archive) const override;
+  void restoreHistory(const StateArchive& archive) override;
 
  private:
   SplitFirstOrderSystem* split_ = nullptr;

@@ -1,5 +1,7 @@
 #include "observers/EnergyObserver.hpp"
 
+#include "core/Error.hpp"
+
 #include "systems/LinearOperatorSystem.hpp"
 
 #include <algorithm>
@@ -22,6 +24,19 @@ void EnergyObserver::observe(const StateView& state) {
   const Real scale = initialTotal_ != 0 ? std::abs(initialTotal_) : 1;
   maxDrift_ = std::max(maxDrift_, std::abs(terms.total() - initialTotal_) / scale);
   series_.append(state.time, {terms.kinetic, terms.strain, terms.total()});
+}
+
+void EnergyObserver::saveState(StateArchive& archive) const {
+  series_.saveState(archive);
+  archive.put("reference", std::vector<Real>{initialTotal_, maxDrift_});
+}
+
+void EnergyObserver::restoreState(const StateArchive& archive) {
+  series_.restoreState(archive);
+  const std::vector<Real>& reference = archive.get("reference");
+  if (reference.size() != 2) throw InputError("--restart", "the checkpoint's energy reference is not 2 numbers");
+  initialTotal_ = reference[0];
+  maxDrift_ = reference[1];
 }
 
 }  // namespace mfwave

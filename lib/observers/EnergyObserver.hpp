@@ -28,6 +28,8 @@ class EnergyObserver : public Observer {
   const TimeSeries& series() const { return series_; }
   // max over observations of |E(t) - E(0)| / |E(0)| (absolute when E(0) = 0).
   Real maxRelativeDrift() const { return maxDrift_; }
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
 
  private:
   EnergyFunction energy_;

@@ -27,6 +27,8 @@ class ProbeRecorder : public Observer {
 
   void observe(const StateView& state) override;
   const TimeSeries& series() const { return series_; }
+  void saveState(StateArchive& archive) const override { series_.saveState(archive); }
+  void restoreState(const StateArchive& archive) override { series_.restoreState(archive); }
 
  private:
   std::vector<Probe> probes_;

@@ -193,4 +193,47 @@ void StabilityMonitor::observe(const StateView& state) {
   assignCopy(previous_, state.displacement);
 }
 
+namespace {
+
+void saveHistory(StateArchive archive, const std::deque<Real>& amplitudes, Real reference, Real quietReference) {
+  archive.put("amplitudes", std::vector<Real>(amplitudes.begin(), amplitudes.end()));
+  archive.put("references", std::vector<Real>{reference, quietReference});
+}
+
+void restoreHistory(const StateArchive& archive, std::deque<Real>& amplitudes, Real& reference, Real& quietReference) {
+  const std::vector<Real>& stored = archive.get("amplitudes");
+  amplitudes.assign(stored.begin(), stored.end());
+  const std::vector<Real>& references = archive.get("references");
+  if (references.size() != 2) throw InputError("--restart", "the checkpoint's stability references are not 2 numbers");
+  reference = references[0];
+  quietReference = references[1];
+}
+
+}  // namespace
+
+void StabilityMonitor::saveState(StateArchive& archive) const {
+  saveHistory(archive.section("displacement"), displacement_.amplitudes, displacement_.reference,
+              displacement_.quietReference);
+  saveHistory(archive.section("velocity"), velocity_.amplitudes, velocity_.reference, velocity_.quietReference);
+  archive.put("previous", previous_);
+  archive.put("before_previous", beforePrevious_);
+  archive.put("counters", std::vector<Real>{static_cast<Real>(observations_), static_cast<Real>(quietObservations_),
+                                            lastRatio_});
+  archive.putText("growth_message", growthMessage_);
+}
+
+void StabilityMonitor::restoreState(const StateArchive& archive) {
+  restoreHistory(archive.section("displacement"), displacement_.amplitudes, displacement_.reference,
+                 displacement_.quietReference);
+  restoreHistory(archive.section("velocity"), velocity_.amplitudes, velocity_.reference, velocity_.quietReference);
+  archive.getResized("previous", previous_);
+  archive.getResized("before_previous", beforePrevious_);
+  const std::vector<Real>& counters = archive.get("counters");
+  if (counters.size() != 3) throw InputError("--restart", "the checkpoint's stability counters are not 3 numbers");
+  observations_ = static_cast<long>(counters[0]);
+  quietObservations_ = static_cast<long>(counters[1]);
+  lastRatio_ = counters[2];
+  growthMessage_ = archive.text("growth_message");
+}
+
 }  // namespace mfwave

@@ -61,6 +61,10 @@ class StabilityMonitor : public Observer {
   // With stopGrowthAfterLoads = false: the message the run would have stopped with (empty if none).
   const std::string& growthMessage() const { return growthMessage_; }
 
+  // The amplitude histories, references, the last two displacements and the counters.
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
+
  private:
   struct History {
     std::deque<Real> amplitudes;

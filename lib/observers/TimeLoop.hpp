@@ -14,6 +14,7 @@ struct RunStatistics {
   Real endTime = 0;
   double wallSeconds = 0;
   bool interrupted = false;  // SIGINT / SIGTERM ended the loop before endTime (core/Interruption)
+  long resumedFromStep = -1;  // the checkpoint's step when the loop went on from one (else -1)
 };
 
 class TimeLoop {
@@ -25,9 +26,21 @@ class TimeLoop {
   // raised by an observer propagates at once: the run stops where it blew up. SIGINT or SIGTERM
   // ends the loop after the current step as if it were the last (observers see it, end() is
   // called, the statistics say `interrupted`).
+  //
+  // Checkpoints (core/CheckpointStore, when the driver installed one): before the first step the
+  // integrator and every observer are saved once as a trial, so a part that cannot be
+  // checkpointed is refused (InputError naming the store's setting) before any work; then the
+  // loop writes a checkpoint every N steps and every T wall-clock seconds, and always when it ends
+  // or is interrupted (after the last step, before the closing observations). When the store holds
+  // a checkpoint of this loop, the integrator and the observers are restored from it in place of
+  // begin(), and the loop goes on from its step: statistics count the steps from the original
+  // start, so the run reads as one.
   RunStatistics run(Integrator& integrator, Real endTime);
 
  private:
+  void restore(Integrator& integrator, const StateArchive& archive, long& firstStep, Real& startTime);
+  StateArchive save(const Integrator& integrator, long firstStep, Real startTime) const;
+
   struct Entry {
     Observer* observer;
     long every;

@@ -36,4 +36,20 @@ void TimeSeries::writeCsv(const std::string& path) const {
   file.commit();
 }
 
+void TimeSeries::saveState(StateArchive& archive) const {
+  archive.put("times", times_);
+  archive.put("values", values_);
+}
+
+void TimeSeries::restoreState(const StateArchive& archive) {
+  const std::vector<Real>& times = archive.get("times");
+  const std::vector<Real>& values = archive.get("values");
+  if (values.size() != times.size() * names_.size())
+    throw InputError("--restart", "the checkpoint's time series has " + std::to_string(values.size()) +
+                                      " values for " + std::to_string(times.size()) + " rows of " +
+                                      std::to_string(names_.size()) + " columns");
+  times_ = times;
+  values_ = values;
+}
+
 }  // namespace mfwave

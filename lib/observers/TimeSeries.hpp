@@ -2,6 +2,7 @@
 // A table of samples in time: one row per observation, named columns (with units in the names).
 // Observers fill it; writeCsv() writes it atomically (temporary file, then rename).
 
+#include "core/StateArchive.hpp"
 #include "core/Types.hpp"
 
 #include <string>
@@ -24,6 +25,10 @@ class TimeSeries {
   const std::vector<std::string>& names() const { return names_; }
 
   void writeCsv(const std::string& path) const;
+
+  // The rows (for checkpoints); restoreState checks the column count.
+  void saveState(StateArchive& archive) const;
+  void restoreState(const StateArchive& archive);
 
  private:
   std::string timeName_;

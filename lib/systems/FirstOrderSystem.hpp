@@ -2,6 +2,7 @@
 // A semi-discrete system of first order in time, y' = F(t, y): what ARKODE integrates, and the
 // form of updated-Lagrangian SPH (positions, velocities, densities, stresses, energies).
 
+#include "core/StateArchive.hpp"
 #include "core/Types.hpp"
 
 namespace mfwave {
@@ -13,6 +14,13 @@ class FirstOrderSystem {
   // ydot = F(t, y); y and ydot have size(). Eigen::Ref takes whole vectors or views of foreign
   // storage (ARKODE's N_Vector data), so adapters evaluate F without copies.
   virtual void rhs(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) = 0;
+
+  // Checkpoints: a system whose evaluation depends on more than its arguments (a neighbour list
+  // kept between rebuilds, a load history) saves and restores that here; the integrator calls
+  // these from its own saveState / restoreState. Most systems are functions of their arguments:
+  // nothing to keep.
+  virtual void saveState(StateArchive& archive) const { (void)archive; }
+  virtual void restoreState(const StateArchive& archive) { (void)archive; }
 };
 
 }  // namespace mfwave

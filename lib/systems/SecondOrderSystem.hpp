@@ -3,6 +3,7 @@
 // spirit: a spatial discretisation implements it, an integrator advances it, and neither knows
 // the other. Integrators never see particles.
 
+#include "core/StateArchive.hpp"
 #include "core/Types.hpp"
 
 namespace mfwave {
@@ -23,6 +24,13 @@ class SecondOrderSystem {
   // True if the acceleration depends on v (damping, dashpots, viscosity). Explicit integrators
   // use it to skip the velocity predictor when it is not needed.
   virtual bool dependsOnVelocity() const { return true; }
+
+  // Checkpoints: a system whose evaluation depends on more than its arguments (a neighbour list
+  // kept between rebuilds, a load history) saves and restores that here; the integrator calls
+  // these from its own saveState / restoreState. Most systems are functions of their arguments:
+  // nothing to keep.
+  virtual void saveState(StateArchive& archive) const { (void)archive; }
+  virtual void restoreState(const StateArchive& archive) { (void)archive; }
 };
 
 }  // namespace mfwave

@@ -19,28 +19,36 @@ constexpr const char* kExtension = ".mfwc";
 // A checkpoint holds the whole state: allow any size a machine could hold.
 constexpr std::size_t kMaxCheckpointBytes = std::size_t(1) << 40;
 
-// The step of a checkpoint file's name, or -1 when the name is not one.
-long long stepOfName(const std::string& name) {
+// The (loop, step) of a checkpoint file's name, or (-1, -1) when the name is not one:
+//   checkpoint-<loop, 4 digits>-<step, 12 digits>.mfwc
+std::pair<long long, long long> numbersOfName(const std::string& name) {
   const std::string prefix = kPrefix, extension = kExtension;
-  if (name.size() != prefix.size() + 12 + extension.size() || name.compare(0, prefix.size(), prefix) != 0 ||
-      name.compare(name.size() - extension.size(), extension.size(), extension) != 0)
-    return -1;
-  long long step = 0;
-  for (std::size_t i = prefix.size(); i < prefix.size() + 12; ++i) {
-    if (name[i] < '0' || name[i] > '9') return -1;
-    step = 10 * step + (name[i] - '0');
-  }
-  return step;
+  const std::pair<long long, long long> none{-1, -1};
+  if (name.size() != prefix.size() + 4 + 1 + 12 + extension.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+      name.compare(name.size() - extension.size(), extension.size(), extension) != 0 || name[prefix.size() + 4] != '-')
+    return none;
+  const auto number = [&](std::size_t from, std::size_t digits) {
+    long long value = 0;
+    for (std::size_t i = from; i < from + digits; ++i) {
+      if (name[i] < '0' || name[i] > '9') return -1LL;
+      value = 10 * value + (name[i] - '0');
+    }
+    return value;
+  };
+  const long long loop = number(prefix.size(), 4), step = number(prefix.size() + 5, 12);
+  if (loop < 0 || step < 0) return none;
+  return {loop, step};
 }
 
 }  // namespace
 
-std::vector<std::string> checkpointFiles(const std::string& folder) {
-  std::vector<std::pair<long long, std::string>> found;
+std::vector<std::string> checkpointFiles(const std::string& folder, int loop) {
+  std::vector<std::pair<std::pair<long long, long long>, std::string>> found;
   std::error_code ec;
   for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-    const long long step = stepOfName(it->path().filename().string());
-    if (step >= 0 && it->is_regular_file(ec)) found.emplace_back(step, it->path().string());
+    const auto numbers = numbersOfName(it->path().filename().string());
+    if (numbers.first >= 0 && (loop < 0 || numbers.first == loop) && it->is_regular_file(ec))
+      found.emplace_back(numbers, it->path().string());
   }
   std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   std::vector<std::string> paths;
@@ -48,11 +56,13 @@ std::vector<std::string> checkpointFiles(const std::string& folder) {
   return paths;
 }
 
-std::string writeCheckpoint(const std::string& folder, const Checkpoint& checkpoint, int keep) {
+std::string writeCheckpoint(const std::string& folder, const Checkpoint& checkpoint, int loop, int keep) {
   if (checkpoint.step < 0 || checkpoint.step > 999999999999LL)
     throw InputError("checkpoint", "step " + std::to_string(checkpoint.step) + " is outside 0 .. 999999999999");
+  if (loop < 0 || loop > 9999) throw InputError("checkpoint", "time loop " + std::to_string(loop) + " is outside 0 .. 9999");
   std::ostringstream name;
-  name << kPrefix << std::setw(12) << std::setfill('0') << checkpoint.step << kExtension;
+  name << kPrefix << std::setw(4) << std::setfill('0') << loop << '-' << std::setw(12) << checkpoint.step
+       << kExtension;
   const std::string path = (fs::path(folder) / name.str()).string();
   {
     AtomicFile file(path);
@@ -60,7 +70,7 @@ std::string writeCheckpoint(const std::string& folder, const Checkpoint& checkpo
     file.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     file.commit();
   }
-  const std::vector<std::string> files = checkpointFiles(folder);
+  const std::vector<std::string> files = checkpointFiles(folder, loop);
   for (std::size_t i = static_cast<std::size_t>(std::max(keep, 1)); i < files.size(); ++i) {
     std::error_code ec;
     fs::remove(files[i], ec);
@@ -68,11 +78,11 @@ std::string writeCheckpoint(const std::string& folder, const Checkpoint& checkpo
   return path;
 }
 
-RestartPoint readNewestCheckpoint(const std::string& folder, const std::string& sceneDigest) {
+RestartPoint readNewestCheckpoint(const std::string& folder, const std::string& sceneDigest, int loop) {
   std::error_code ec;
   if (!fs::is_directory(folder, ec)) throw InputError("--restart", "'" + folder + "' is not a folder");
   RestartPoint point;
-  for (const std::string& path : checkpointFiles(folder)) {
+  for (const std::string& path : checkpointFiles(folder, loop)) {
     try {
       point.checkpoint = decodeCheckpoint(readBoundedFile(path, kMaxCheckpointBytes, "--restart", "the checkpoint"),
                                           path);

@@ -2,7 +2,9 @@
 
 #include <omp.h>
 
+#include <cmath>
 #include <iostream>
+#include <string>
 
 namespace mfwave {
 
@@ -14,10 +16,11 @@ std::string versionString(const std::string& program) { return program + " (mfwa
 
 DriverCommandLine::DriverCommandLine(std::string program, std::string description, std::string sceneKeys,
                                      bool sceneRequired)
-    : program_(std::move(program)), app_(std::move(description), program_) {
-  auto* scene = app_.add_option("--scene", options_.scenePath, "scene file (TOML); see docs/scenes.md")
-                    ->check(CLI::ExistingFile);
-  if (sceneRequired) scene->required();
+    : program_(std::move(program)), sceneRequired_(sceneRequired), app_(std::move(description), program_) {
+  app_.add_option("--scene", options_.scenePath,
+                  std::string("scene file (TOML); see docs/scenes.md") +
+                      (sceneRequired ? " (required, unless --restart gives the folder whose scene to go on with)" : ""))
+      ->check(CLI::ExistingFile);
   app_.add_option("--set", options_.overrides,
                   "override a scene key, e.g. --set geometry.spacing=0.05 (repeatable)")
       ->allow_extra_args(false)
@@ -25,6 +28,13 @@ DriverCommandLine::DriverCommandLine(std::string program, std::string descriptio
   app_.add_option("--out", options_.outputFolder, "output folder (default: the scene's output.folder)");
   app_.add_option("--threads", options_.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
   app_.add_flag("--quiet", options_.quiet, "no progress display; print only the summary");
+  app_.add_option("--checkpoint-every", checkpointEvery_,
+                  "write a checkpoint every N steps (e.g. 500) or every T wall-clock seconds (e.g. 600s) into the "
+                  "output folder; overrides output.checkpoint_every / output.checkpoint_seconds");
+  app_.add_option("--restart", options_.restartFolder,
+                  "go on from the newest whole checkpoint in this output folder (with its scene.resolved.toml "
+                  "unless --scene is given; the outputs go there unless --out is given)")
+      ->check(CLI::ExistingDirectory);
   app_.set_version_flag("--version", versionString(program_));
   if (!sceneKeys.empty()) app_.footer("Scene keys read by " + program_ + ":\n" + sceneKeys);
 }
@@ -39,6 +49,31 @@ std::optional<int> DriverCommandLine::parse(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::cerr << program_ << ": " << e.what() << "\n(run " << program_ << " --help for the options)\n";
     return 2;
+  }
+  const auto usage = [&](const std::string& message) {
+    std::cerr << program_ << ": " << message << "\n(run " << program_ << " --help for the options)\n";
+    return 2;
+  };
+  if (sceneRequired_ && options_.scenePath.empty() && options_.restartFolder.empty())
+    return usage("--scene is required (or --restart with an output folder to go on from)");
+  if (!checkpointEvery_.empty()) {
+    const bool seconds = checkpointEvery_.back() == 's';
+    const std::string number = seconds ? checkpointEvery_.substr(0, checkpointEvery_.size() - 1) : checkpointEvery_;
+    std::size_t used = 0;
+    double value = 0;
+    try {
+      value = std::stod(number, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    const bool whole = value == std::floor(value) && value <= 1e15;
+    if (used == 0 || used != number.size() || !(value > 0) || !std::isfinite(value) || (!seconds && !whole))
+      return usage("--checkpoint-every: expected a whole number of steps (500) or seconds with an s (600s), got '" +
+                   checkpointEvery_ + "'");
+    if (seconds)
+      options_.checkpointSeconds = value;
+    else
+      options_.checkpointSteps = static_cast<long>(value);
   }
   if (options_.threads > 0) omp_set_num_threads(options_.threads);
   return std::nullopt;

@@ -1,6 +1,7 @@
 #pragma once
 // The command line every driver and analysis tool shares:
-//   --scene FILE, --set key.path=value (repeated), --out DIR, --threads N, --quiet, --help, --version.
+//   --scene FILE, --set key.path=value (repeated), --out DIR, --threads N, --quiet, --help, --version,
+//   --checkpoint-every N | Ts, --restart DIR.
 // A driver may add its own options to app() before parse(). --help lists the options and, in its
 // footer, the scene keys the driver reads.
 
@@ -18,6 +19,11 @@ struct DriverOptions {
   std::string outputFolder;            // --out (empty: the scene's output.folder)
   int threads = 0;                     // --threads (0: OpenMP's default)
   bool quiet = false;                  // --quiet: no progress, only the summary
+  // --checkpoint-every: a checkpoint every N steps ("500") or every T wall-clock seconds ("600s");
+  // 0 for either when not given (then the scene's output.checkpoint_every / _seconds hold).
+  long checkpointSteps = 0;
+  double checkpointSeconds = 0;
+  std::string restartFolder;           // --restart DIR (empty: a fresh run)
 };
 
 class DriverCommandLine {
@@ -38,6 +44,8 @@ class DriverCommandLine {
 
  private:
   std::string program_;
+  bool sceneRequired_;
+  std::string checkpointEvery_;  // as given, parsed after CLI11
   CLI::App app_;
   DriverOptions options_;
 };

@@ -1,6 +1,7 @@
 #include "io/run/RunSummary.hpp"
 
 #include "core/AtomicFile.hpp"
+#include "core/CheckpointStore.hpp"
 #include "core/Error.hpp"
 #include "core/Interruption.hpp"
 
@@ -56,7 +57,8 @@ double RunSummary::particleStepsPerSecond() const {
 
 double CaseRecord::particleStepsPerSecond() const {
   if (!(loopSeconds > 0)) return kUnknown;
-  return mfwave::particleStepsPerSecond(static_cast<double>(particles), static_cast<double>(steps), loopSeconds);
+  const long stepped = resumedFromStep >= 0 ? steps - resumedFromStep : steps;  // in this process
+  return mfwave::particleStepsPerSecond(static_cast<double>(particles), static_cast<double>(stepped), loopSeconds);
 }
 
 void RunSummary::addCase(CaseRecord record) {
@@ -147,6 +149,7 @@ void RunSummary::writeJson(const std::string& path) const {
       k["stable_dt"] = c.stableTimeStep;
       k["simulated_time"] = c.simulatedTime;
       if (std::isfinite(c.interruptedAt)) k["interrupted_at"] = c.interruptedAt;
+      if (c.resumedFromStep >= 0) k["resumed_from_step"] = c.resumedFromStep;
       k["setup_seconds"] = c.setupSeconds;
       k["loop_seconds"] = c.loopSeconds;
       k["particle_steps_per_second"] = c.particleStepsPerSecond();
@@ -180,6 +183,8 @@ void RunSummary::conclude(const std::string& folder, std::ostream* terminal) {
     notes.add(std::string("interrupted by ") + interruptionSignalName() +
               ": the run stopped early; steps, simulated time, errors and figures are those of the part that ran, "
               "and the cases after the one that was stepping were not run");
+  if (const CheckpointStore* store = checkpointStore())
+    for (const std::string& note : store->notes()) notes.add(note);
   finish();
   writeJson(folder + "/summary.json");
   if (terminal) print(*terminal);

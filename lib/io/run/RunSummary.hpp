@@ -57,6 +57,9 @@ struct CaseRecord {
   // The time the case had reached when SIGINT or SIGTERM ended it early (StudyCase::recordLoop);
   // unknown for a case that ran to its end. addCase then takes it as the simulated time.
   Real interruptedAt = kUnknown;
+  // The step this case went on from when it was restored from a checkpoint (-1: it ran from its
+  // start in this process). Its loop seconds are this process's only, and so is its throughput.
+  long resumedFromStep = -1;
   double peakMemoryMiB = kUnknown;      // the process's peak when the case ended (cases run smallest
                                         // first); addCase fills in the peak so far if unknown
 

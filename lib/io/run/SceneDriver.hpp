@@ -12,13 +12,18 @@
 
 namespace mfwave {
 
-// The scene named by --scene with the --set overrides applied; for a tool whose scene is optional
-// (no --scene given), the schema's defaults with the overrides.
+// The scene named by --scene, or on --restart without --scene the restarted folder's
+// scene.resolved.toml, with the --set overrides applied; for a tool whose scene is optional (no
+// --scene given), the schema's defaults with the overrides.
 SceneReader loadDriverScene(const DriverOptions& options, const SceneSchema& schema);
 
-// --out when given, else `sceneFolder` (the scene's output.folder); created if missing, and the
-// resolved scene (every key with the value used) written into it as scene.resolved.toml, so the
-// run can be repeated exactly. Returns the folder.
+//
+// prepareOutputFolder: --out when given, else the --restart folder, else `sceneFolder` (the scene's
+// output.folder); created if missing, and the resolved scene (every key with the value used)
+// written into it as scene.resolved.toml, so the run can be repeated exactly. Returns the folder.
+// It also installs the process's checkpoint store (core/CheckpointStore) when the run writes
+// checkpoints (--checkpoint-every, output.checkpoint_every, output.checkpoint_seconds) or goes on
+// from one (--restart: refused with exit 2 when the folder holds no whole checkpoint of this scene).
 std::string prepareOutputFolder(const DriverOptions& options, const std::string& sceneFolder,
                                 const SceneReader& reader);
 

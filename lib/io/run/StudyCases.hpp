@@ -26,6 +26,7 @@ struct StudyCase {
     record.steps = loop.steps;
     record.loopSeconds = loop.wallSeconds;
     if (loop.interrupted) record.interruptedAt = loop.endTime;
+    record.resumedFromStep = loop.resumedFromStep;
   }
 };
 

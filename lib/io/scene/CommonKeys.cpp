@@ -166,6 +166,10 @@ SceneSchema SceneSchema::common() {
   s.add("output.probe_every", T::Integer).withUnit("-").defaultsTo("1").atLeast(1)
       .describedAs("steps between probe samples");
   s.add("output.energy", T::Boolean).defaultsTo("true").describedAs("record the energy ledger");
+  s.add("output.checkpoint_every", T::Integer).withUnit("-").defaultsTo("0").between(0, 1000000000000LL)
+      .describedAs("steps between checkpoints in the output folder (0: none; --checkpoint-every overrides)");
+  s.add("output.checkpoint_seconds", T::Number).withUnit("s").defaultsTo("0.0").between(0, 1e9)
+      .describedAs("wall-clock seconds between checkpoints (0: none; --checkpoint-every overrides)");
 
   s.add("stability", T::Table).describedAs("stops a run that blows up");
   s.add("stability.growth_factor", T::Number).withUnit("-").defaultsTo("1000.0").above(1)

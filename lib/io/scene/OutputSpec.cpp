@@ -28,6 +28,8 @@ OutputSpec readOutput(SceneReader& reader, const std::string& sceneName, int dim
   o.pngHeight = static_cast<int>(reader.integer("output.png_height"));
   o.probeEvery = static_cast<long>(reader.integer("output.probe_every"));
   o.energy = reader.boolean("output.energy");
+  o.checkpointEvery = static_cast<long>(reader.integer("output.checkpoint_every"));
+  o.checkpointSeconds = reader.number("output.checkpoint_seconds");
   return o;
 }
 

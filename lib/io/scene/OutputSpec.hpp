@@ -19,6 +19,10 @@ struct OutputSpec {
   int pngWidth = 1024, pngHeight = 768;
   long probeEvery = 1;       // steps between probe samples
   bool energy = true;
+  // Checkpoints (read again from the resolved scene by io/run's prepareOutputFolder, which installs
+  // the store; --checkpoint-every overrides both).
+  long checkpointEvery = 0;      // steps between checkpoints (0: none)
+  Real checkpointSeconds = 0;    // wall-clock seconds between checkpoints (0: none)
 
   bool writesFrames() const { return vtk || png; }
 };

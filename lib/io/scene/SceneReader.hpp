@@ -100,6 +100,10 @@ class SceneReader {
   void checkAllKeysRead() const;
   // The scene with every default inserted, as TOML (keys in schema order).
   std::string resolvedToml() const;
+  // Identifies the resolved scene for checkpoints: a CRC-32C and the length of its resolved TOML
+  // with the keys `excluded` ("output.folder", ...) left out, so that settings which do not change
+  // the computation (where it is written, how often it is checkpointed) do not make another scene.
+  std::string digest(const std::vector<std::string>& excluded) const;
   const toml::table& root() const { return root_; }
 
  private:

@@ -98,8 +98,8 @@ TEST(CheckpointFolder, KeepsTheNewestTwoAndRestartsFromTheNewestWholeOne) {
   for (std::int64_t step : {10, 20, 30}) writeCheckpoint(folder.string(), sample(step));
   const std::vector<std::string> files = checkpointFiles(folder.string());
   ASSERT_EQ(files.size(), 2u);
-  EXPECT_EQ(fs::path(files[0]).filename(), "checkpoint-000000000030.mfwc");
-  EXPECT_EQ(fs::path(files[1]).filename(), "checkpoint-000000000020.mfwc");
+  EXPECT_EQ(fs::path(files[0]).filename(), "checkpoint-0000-000000000030.mfwc");
+  EXPECT_EQ(fs::path(files[1]).filename(), "checkpoint-0000-000000000020.mfwc");
   for (const auto& entry : fs::directory_iterator(folder))  // no temporary left behind
     EXPECT_EQ(entry.path().extension(), ".mfwc") << entry.path();
 
@@ -114,7 +114,7 @@ TEST(CheckpointFolder, KeepsTheNewestTwoAndRestartsFromTheNewestWholeOne) {
   point = readNewestCheckpoint(folder.string(), "scene-a");
   EXPECT_EQ(point.checkpoint.step, 20);
   ASSERT_EQ(point.skipped.size(), 1u);
-  EXPECT_NE(point.skipped[0].find("checkpoint-000000000030.mfwc"), std::string::npos) << point.skipped[0];
+  EXPECT_NE(point.skipped[0].find("checkpoint-0000-000000000030.mfwc"), std::string::npos) << point.skipped[0];
   EXPECT_NE(point.skipped[0].find("CRC-32C"), std::string::npos) << point.skipped[0];
 
   // Both damaged (the older one truncated): none to restart from, both named.

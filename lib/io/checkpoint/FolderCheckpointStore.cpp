@@ -1,0 +1,81 @@
+#include "io/checkpoint/FolderCheckpointStore.hpp"
+
+#include "io/checkpoint/CheckpointFolder.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace mfwave {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool sameFolder(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return fs::equivalent(a, b, ec);
+}
+
+std::string describe(const CheckpointPoint& point) {
+  std::ostringstream text;
+  text << point.source << " (step " << point.step << ", t = " << point.time << ")";
+  return text.str();
+}
+
+}  // namespace
+
+FolderCheckpointStore::FolderCheckpointStore(std::string outputFolder, std::string sceneDigest,
+                                             CheckpointSettings settings)
+    : folder_(std::move(outputFolder)), digest_(std::move(sceneDigest)), settings_(std::move(settings)) {
+  if (!settings_.restartFolder.empty()) {
+    const RestartPoint newest = readNewestCheckpoint(settings_.restartFolder, digest_, -1);
+    for (const std::string& skipped : newest.skipped) {
+      std::cerr << "checkpoint skipped: " << skipped << "\n";
+      addNote("checkpoint skipped: " + skipped);
+    }
+  }
+  if (settings_.restartFolder.empty() || !sameFolder(settings_.restartFolder, folder_))
+    for (const std::string& stale : checkpointFiles(folder_)) {
+      std::error_code ec;
+      fs::remove(stale, ec);
+    }
+}
+
+std::optional<CheckpointPoint> FolderCheckpointStore::resumePoint(int loop) {
+  if (settings_.restartFolder.empty() || checkpointFiles(settings_.restartFolder, loop).empty()) return std::nullopt;
+  RestartPoint found;
+  try {
+    found = readNewestCheckpoint(settings_.restartFolder, digest_, loop);
+  } catch (const InputError& e) {
+    // Only damaged files of this loop (a whole one of another scene or format version was refused
+    // when the store was made): the loop starts again from its beginning.
+    addNote("time loop " + std::to_string(loop) + " starts again from its beginning: " + e.what());
+    std::cerr << "checkpoint: " << notes().back() << "\n";
+    return std::nullopt;
+  }
+  for (const std::string& skipped : found.skipped) {
+    const std::string note = "checkpoint skipped: " + skipped;
+    if (std::find(notes().begin(), notes().end(), note) != notes().end()) continue;
+    std::cerr << note << "\n";
+    addNote(note);
+  }
+  CheckpointPoint point;
+  point.step = found.checkpoint.step;
+  point.time = found.checkpoint.time;
+  point.archive = StateArchive(std::move(found.checkpoint.arrays));
+  point.source = found.path;
+  addNote("time loop " + std::to_string(loop) + " resumed from " + describe(point));
+  return point;
+}
+
+void FolderCheckpointStore::write(int loop, long step, Real time, const StateArchive& archive) {
+  Checkpoint checkpoint;
+  checkpoint.sceneDigest = digest_;
+  checkpoint.step = step;
+  checkpoint.time = time;
+  checkpoint.arrays = archive.arrays();
+  writeCheckpoint(folder_, checkpoint, loop);
+}
+
+}  // namespace mfwave

@@ -1,0 +1,39 @@
+#pragma once
+// The checkpoint store a driver installs (core/CheckpointStore): checkpoints written into the output
+// folder (io/checkpoint/CheckpointFolder, the newest two of each time loop kept), and on a restart
+// read back from the folder given to --restart.
+
+#include "core/CheckpointStore.hpp"
+
+#include <string>
+
+namespace mfwave {
+
+struct CheckpointSettings {
+  long everySteps = 0;       // 0: not by count
+  double everySeconds = 0;   // 0: not by wall clock
+  std::string setting = "--checkpoint-every";  // what to name when the run cannot be checkpointed
+  std::string restartFolder;  // --restart: where to resume from (empty: a fresh run)
+};
+
+class FolderCheckpointStore : public CheckpointStore {
+ public:
+  // On a fresh run, removes the checkpoints a previous run left in `outputFolder` (they would be
+  // taken for this run's). On a restart, checks at once that `settings.restartFolder` holds a
+  // whole checkpoint of this scene (InputError "--restart" otherwise: none, all damaged, another
+  // scene's or another format version's), naming every file it skipped.
+  FolderCheckpointStore(std::string outputFolder, std::string sceneDigest, CheckpointSettings settings);
+
+  long everySteps() const override { return settings_.everySteps; }
+  double everySeconds() const override { return settings_.everySeconds; }
+  std::string settingName() const override { return settings_.setting; }
+  std::optional<CheckpointPoint> resumePoint(int loop) override;
+  void write(int loop, long step, Real time, const StateArchive& archive) override;
+
+ private:
+  std::string folder_;
+  std::string digest_;
+  CheckpointSettings settings_;
+};
+
+}  // namespace mfwave
