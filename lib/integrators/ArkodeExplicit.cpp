@@ -98,6 +98,7 @@ struct ArkodeExplicit::Impl {
   Real maxStep = 0;            // adaptive runs: setMaxStep's bound (0: none)
   ArkodeStatistics before;     // counters of the run before the checkpoint this one resumed from
   Real resumedLastStep = 0;    // the last step before that checkpoint, until a step is taken
+  bool repeatedSetupEvaluation = false;  // resumed: ARKODE's set-up evaluation is not counted again
   std::exception_ptr pending;  // an exception thrown by the system inside a SUNDIALS callback
   std::string lastMessage;     // SUNDIALS's own text for the last error
 
@@ -240,6 +241,7 @@ void ArkodeExplicit::initialise(FirstOrderSystem& system, Real t0, const Vector&
   m.release();
   m.before = {};
   m.resumedLastStep = 0;
+  m.repeatedSetupEvaluation = false;
   m.yData = y0;  // from here on, yData is never resized: ARKODE holds a pointer to its storage
   m.time = t0;
   m.system = &system;
@@ -339,6 +341,7 @@ ArkodeStatistics ArkodeExplicit::statistics() const {
   s.rhsEvaluations = value;
   m.check(ERKStepGetNumErrTestFails(m.memory, &value), "ERKStepGetNumErrTestFails");
   s.failedSteps = value;
+  if (m.repeatedSetupEvaluation && s.rhsEvaluations > 0) --s.rhsEvaluations;
   s.steps += m.before.steps;
   s.stepAttempts += m.before.stepAttempts;
   s.rhsEvaluations += m.before.rhsEvaluations;
@@ -373,8 +376,12 @@ void ArkodeExplicit::restoreState(const StateArchive& archive) {
   if (counts.size() != 4) throw InputError("--restart", "the checkpoint's ARKODE statistics are not 4 counts");
   m.options.fixedStep = archive.scalar("fixed_step");
   initialise(*m.system, archive.scalar("time"), y);
+  // Before its first step ARKODE evaluates F(t, y) once more than the stages need (it did so at the
+  // original start too, and the saved count holds that one): not counted twice, so that the
+  // counters read as those of one uninterrupted run (ArkodeExplicit.RestoredRunCountsAsOneRun).
   m.before = {static_cast<long>(counts[0]), static_cast<long>(counts[1]), static_cast<long>(counts[2]),
               static_cast<long>(counts[3])};
+  m.repeatedSetupEvaluation = true;
   m.resumedLastStep = archive.scalar("last_step");
   m.system->restoreState(archive.section("system"));
 }

@@ -144,4 +144,49 @@ void LinearEnergyLedger::stop(const StateView& state, const std::string& why) {
   if (options_.stop) throw InstabilityError(growthMessage_, state.step, state.time, static_cast<long>(fastest));
 }
 
+void LinearEnergyLedger::saveState(StateArchive& archive) const {
+  series_.saveState(archive);
+  archive.put("previous_displacement", previousDisplacement_);
+  archive.put("previous_force", previousForce_);
+  archive.put("force", force_);
+  archive.put("scalars", std::vector<Real>{previousTime_, previousDashpotPower_, loadWork_, dashpotLoss_, filterLoss_,
+                                           initialBalance_, largestEnergy_, largestAbsoluteDrift_, lastEnergy_,
+                                           quietMinimum_, quietMinimumTime_, static_cast<Real>(observations_),
+                                           static_cast<Real>(lastCheckedStep_)});
+  std::vector<Real> recent;
+  for (const auto& [time, energy] : recent_) {
+    recent.push_back(time);
+    recent.push_back(energy);
+  }
+  archive.put("recent", std::move(recent));
+  archive.putText("growth_message", growthMessage_);
+}
+
+void LinearEnergyLedger::restoreState(const StateArchive& archive) {
+  series_.restoreState(archive);
+  archive.getResized("previous_displacement", previousDisplacement_);
+  archive.getResized("previous_force", previousForce_);
+  archive.getResized("force", force_);
+  const std::vector<Real>& s = archive.get("scalars");
+  if (s.size() != 13) throw InputError("--restart", "the checkpoint's energy ledger is not 13 numbers");
+  previousTime_ = s[0];
+  previousDashpotPower_ = s[1];
+  loadWork_ = s[2];
+  dashpotLoss_ = s[3];
+  filterLoss_ = s[4];
+  initialBalance_ = s[5];
+  largestEnergy_ = s[6];
+  largestAbsoluteDrift_ = s[7];
+  lastEnergy_ = s[8];
+  quietMinimum_ = s[9];
+  quietMinimumTime_ = s[10];
+  observations_ = static_cast<long>(s[11]);
+  lastCheckedStep_ = static_cast<long>(s[12]);
+  const std::vector<Real>& recent = archive.get("recent");
+  if (recent.size() % 2 != 0) throw InputError("--restart", "the checkpoint's energy envelope is not (time, energy) pairs");
+  recent_.clear();
+  for (std::size_t i = 0; i < recent.size(); i += 2) recent_.emplace_back(recent[i], recent[i + 1]);
+  growthMessage_ = archive.text("growth_message");
+}
+
 }  // namespace mfwave

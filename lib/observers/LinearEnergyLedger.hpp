@@ -79,6 +79,10 @@ class LinearEnergyLedger : public Observer {
   // With options.stop = false: the message the run would have stopped with (empty if none).
   const std::string& growthMessage() const { return growthMessage_; }
 
+  // The rows, the integrals, the previous observation and the envelope's history.
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
+
  private:
   void integrate(const StateView& state);
   void check(const StateView& state);

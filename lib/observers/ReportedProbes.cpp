@@ -1,6 +1,7 @@
 #include "observers/ReportedProbes.hpp"
 
 #include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
 
 #include <iomanip>
 
@@ -50,6 +51,24 @@ void NodalProbes::observe(const StateView& s) {
     const Vector& field = p.quantity == ProbeQuantity::Velocity ? s.velocity : s.displacement;
     const Real value = field[dimension_ * p.particle + p.component] / scale_;
     add(i, value, value);
+  }
+}
+
+void ReportedProbes::saveState(StateArchive& archive) const {
+  archive.put("times", times_);
+  for (std::size_t i = 0; i < probes_.size(); ++i) {
+    archive.put("raw" + std::to_string(i), raw_[i]);
+    archive.put("reported" + std::to_string(i), reported_[i]);
+  }
+}
+
+void ReportedProbes::restoreState(const StateArchive& archive) {
+  times_ = archive.get("times");
+  for (std::size_t i = 0; i < probes_.size(); ++i) {
+    raw_[i] = archive.get("raw" + std::to_string(i));
+    reported_[i] = archive.get("reported" + std::to_string(i));
+    if (raw_[i].size() != times_.size() || reported_[i].size() != times_.size())
+      throw InputError("--restart", "the checkpoint's probe " + std::to_string(i) + " has another number of samples than times");
   }
 }
 

@@ -29,6 +29,9 @@ class ReportedProbes : public Observer {
   // Writes (atomically) "t [s]", then per probe <name>_raw, <name>_reported and, where exact[i]
   // is not empty (one value per sample), <name>_exact. `exact` has one entry per probe.
   void writeCsv(const std::string& path, const std::vector<std::vector<Real>>& exact) const;
+  // The samples so far (a recorder deriving from this class keeps nothing else between steps).
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
 
  protected:
   // Starts a sample at `time` and returns true, or returns false when the last sample was already

@@ -73,6 +73,12 @@ std::string prepareOutputFolder(const DriverOptions& options, const std::string&
   // Before the resolved scene is written: a restart refused (another scene's checkpoints) leaves the
   // folder as it was.
   installCheckpoints(options, folder, reader);
+  // A restart that read its scene from this folder's scene.resolved.toml leaves it as it is (the
+  // same scene; only its header, the source's name, would change).
+  std::error_code same;
+  if (options.scenePath.empty() && !options.restartFolder.empty() &&
+      std::filesystem::equivalent(options.restartFolder, folder, same) && options.overrides.empty())
+    return folder;
   try {
     AtomicFile file(folder + "/scene.resolved.toml");
     file.stream() << reader.resolvedToml();

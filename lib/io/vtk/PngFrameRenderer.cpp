@@ -39,6 +39,20 @@ void PngFrameRenderer<D>::observe(const StateView& state) {
   ++rendered_;
 }
 
+template <int D>
+void PngFrameRenderer<D>::saveState(StateArchive& archive) const {
+  archive.put("counts", std::vector<Real>{static_cast<Real>(observed_), static_cast<Real>(rendered_)});
+}
+
+template <int D>
+void PngFrameRenderer<D>::restoreState(const StateArchive& archive) {
+  const std::vector<Real>& counts = archive.get("counts");
+  if (counts.size() != 2) throw InputError("--restart", "the checkpoint's PNG counts are not 2 numbers");
+  observed_ = static_cast<long>(counts[0]);
+  rendered_ = static_cast<long>(counts[1]);
+  lastImage_ = rendered_ > 0 ? frameFilePath(folder_, base_, ((observed_ - 1) / every_) * every_, ".png") : std::string();
+}
+
 template class PngFrameRenderer<1>;
 template class PngFrameRenderer<2>;
 template class PngFrameRenderer<3>;

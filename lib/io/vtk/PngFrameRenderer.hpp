@@ -31,6 +31,9 @@ class PngFrameRenderer : public Observer {
   // Why no pictures are made ("no DISPLAY set: run under xvfb-run -a ..."); empty while rendering works.
   const std::string& skippedReason() const { return skipped_; }
   const std::string& lastImagePath() const { return lastImage_; }
+  // The counts of states seen and pictures rendered (the display is asked again after a restart).
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
 
  private:
   const ParticleSet<D>& particles_;

@@ -27,6 +27,8 @@ class PvdCollection {
 
   const std::string& path() const { return path_; }
   const std::vector<Entry>& entries() const { return entries_; }
+  // The entries of a run restored from a checkpoint; the file is rewritten at the next add().
+  void restore(std::vector<Entry> entries) { entries_ = std::move(entries); }
 
  private:
   void rewrite() const;

@@ -33,6 +33,36 @@ void VtkFrameWriter<D>::observe(const StateView& state) {
   ++frames_;
 }
 
+template <int D>
+void VtkFrameWriter<D>::saveState(StateArchive& archive) const {
+  std::vector<Real> times;
+  std::string files;
+  for (const PvdCollection::Entry& entry : collection_.entries()) {
+    times.push_back(entry.time);
+    files += entry.file + '\n';
+  }
+  archive.put("times", std::move(times));
+  archive.putText("files", files);
+}
+
+template <int D>
+void VtkFrameWriter<D>::restoreState(const StateArchive& archive) {
+  const std::vector<Real>& times = archive.get("times");
+  const std::string files = archive.text("files");
+  std::vector<PvdCollection::Entry> entries;
+  std::size_t from = 0;
+  for (const Real time : times) {
+    const std::size_t to = files.find('\n', from);
+    if (to == std::string::npos) throw InputError("--restart", "the checkpoint's VTK frame list is shorter than its times");
+    entries.push_back({time, files.substr(from, to - from)});
+    from = to + 1;
+  }
+  if (from != files.size()) throw InputError("--restart", "the checkpoint's VTK frame list is longer than its times");
+  frames_ = static_cast<long>(entries.size());
+  lastFrame_ = frames_ > 0 ? frameFilePath(folder_, base_, frames_ - 1, ".vtp") : std::string();
+  collection_.restore(std::move(entries));
+}
+
 template class VtkFrameWriter<1>;
 template class VtkFrameWriter<2>;
 template class VtkFrameWriter<3>;

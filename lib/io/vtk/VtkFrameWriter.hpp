@@ -29,6 +29,10 @@ class VtkFrameWriter : public Observer {
   const std::string& pvdPath() const { return collection_.path(); }
   // Path of the frame written last (empty before the first).
   const std::string& lastFramePath() const { return lastFrame_; }
+  // The frames written so far (their times and files, for the .pvd): a restored run numbers its
+  // next frame on and lists every frame, those before the checkpoint too.
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
 
  private:
   const ParticleSet<D>& particles_;

@@ -58,6 +58,17 @@ class ErrorSampler : public Observer {
   // max over sampled times of ||e_u|| / max over sampled times of ||u||.
   Real maxRelativeU() const { return std::sqrt(maxErrU_ / std::max(maxU_, 1e-300)); }
   const TimeSeries& series() const { return series_; }
+  void saveState(StateArchive& archive) const override {
+    series_.saveState(archive);
+    archive.put("maxima", std::vector<Real>{maxU_, maxErrU_});
+  }
+  void restoreState(const StateArchive& archive) override {
+    series_.restoreState(archive);
+    const std::vector<Real>& maxima = archive.get("maxima");
+    if (maxima.size() != 2) throw InputError("--restart", "the checkpoint's error maxima are not 2 numbers");
+    maxU_ = maxima[0];
+    maxErrU_ = maxima[1];
+  }
 
  private:
   const ConstrainedCollocationSystem& system_;
