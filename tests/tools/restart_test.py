@@ -42,6 +42,9 @@ CASES = [
     # Linear second order: central difference (loop 0), Newmark (loop 1), ARKODE's fixed-step RK4 (loop 2).
     ("wave1d", "wave1d", "wave1d.toml", WAVE1D, 500,
      [(signal.SIGTERM, 0), (signal.SIGKILL, 1), (signal.SIGTERM, 2)]),
+    # Constrained Newmark on the reproducing-kernel collocation of the bar (its coefficients d, d', d'').
+    ("bar1d", "bar1d", "bar1d.toml", ["--set", "study.nodes=[81, 161]", "--set", "integrator.end_time=300"], 300,
+     [(signal.SIGKILL, 0), (signal.SIGTERM, 1)]),
 ]
 
 NOTES_OF_A_RESTART = ("time loop ", "checkpoint skipped")

@@ -8,6 +8,7 @@
 #include "integrators/IntegratorFactory.hpp"
 #include "integrators/StabilityLimit.hpp"
 #include "io/scene/IntegratorSpec.hpp"
+#include "observers/TimeLoop.hpp"
 #include "methods/spectral_element/SpectralElementElasticity.hpp"
 #include "systems/LinearSecondOrderSystem.hpp"
 
@@ -64,26 +65,41 @@ void planSteps(const Settings& s, const PlaneWave<D>& wave, CaseRecord& record) 
   record.timeStep = record.simulatedTime / static_cast<Real>(record.steps);
 }
 
-// Steps `integrator` (initialised) through record.steps and returns its displacement. A growing
-// field stops the run at once: every 16 steps, anything non-finite or a thousand times the initial
-// amplitude (the exact wave keeps its amplitude) is a blow-up.
-Vector stepWatchingGrowth(SecondOrderIntegrator& integrator, const Vector& u0, int components, CaseRecord& record) {
-  Stopwatch clock;
-  const Real limit = 1e3 * std::max<Real>(u0.cwiseAbs().maxCoeff(), 1e-300);
-  for (long step = 1; step <= record.steps; ++step) {
-    integrator.step();
-    if (step % 16 != 0 && step != record.steps) continue;
-    const Vector& d = integrator.state().displacement;
+// Stops a growing field at once: anything non-finite or a thousand times the initial amplitude
+// (the exact wave keeps its amplitude) is a blow-up. It looks at the state only, so a restored run
+// needs nothing from it.
+class GrowthWatch : public StatelessObserver {
+ public:
+  GrowthWatch(const Vector& u0, int components)
+      : initial_(u0.cwiseAbs().maxCoeff()), limit_(1e3 * std::max<Real>(initial_, 1e-300)), components_(components) {}
+  void observe(const StateView& state) override {
     Index worst = 0;
-    const Real largest = d.cwiseAbs().maxCoeff(&worst);
-    if (!std::isfinite(largest) || largest > limit)
+    const Real largest = state.displacement.cwiseAbs().maxCoeff(&worst);
+    if (!std::isfinite(largest) || largest > limit_)
       throw InstabilityError("planewave: the field grew to " + std::to_string(largest) + " (initial amplitude " +
-                                 std::to_string(u0.cwiseAbs().maxCoeff()) + ") by step " + std::to_string(step) +
-                                 ", t = " + std::to_string(integrator.time()) + ", at node " +
-                                 std::to_string(worst / components) + ": the step is beyond the integrator's limit",
-                             step, integrator.time(), static_cast<long>(worst / components));
+                                 std::to_string(initial_) + ") by step " + std::to_string(state.step) + ", t = " +
+                                 std::to_string(state.time) + ", at node " + std::to_string(worst / components_) +
+                                 ": the step is beyond the integrator's limit",
+                             state.step, state.time, static_cast<long>(worst / components_));
   }
-  record.loopSeconds = clock.seconds();
+
+ private:
+  Real initial_, limit_;
+  int components_;
+};
+
+// Steps `integrator` (initialised) through record.steps in a TimeLoop (interruptible, and
+// checkpointed when the run asks), watching for growth every 16 steps and at the last, and returns
+// its displacement.
+Vector stepWatchingGrowth(SecondOrderIntegrator& integrator, const Vector& u0, int components, CaseRecord& record) {
+  GrowthWatch watch(u0, components);
+  TimeLoop loop;
+  loop.add(watch, 16);
+  const RunStatistics stats = loop.run(integrator, record.simulatedTime);
+  record.loopSeconds = stats.wallSeconds;
+  record.steps = stats.steps;
+  if (stats.interrupted) record.simulatedTime = record.interruptedAt = stats.endTime;  // errors of the part that ran
+  record.resumedFromStep = stats.resumedFromStep;
   return integrator.state().displacement;
 }
 
