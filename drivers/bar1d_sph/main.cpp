@@ -16,6 +16,7 @@
 #include "core/Error.hpp"
 #include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
+#include "io/run/MemoryGuard.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/run/SceneDriver.hpp"
@@ -74,6 +75,12 @@ Settings readSettings(SceneReader& reader, Scene& scene) {
   for (Real dx : settings.spacings)
     if (!(dx > 0) || dx > settings.halfLength / 4)
       reader.fail("study.spacings", "each spacing must be positive and at most a quarter of a bar");
+  for (Real dx : settings.spacings) {
+    // The bars span -L .. L: 2 L / dx particles; the UL-SPH: 1.4 KiB per particle measured (2-D), doubled.
+    const std::string why = memoryRefusal("bars at dx = " + mfwave::scene::formatNumber(dx),
+                                          {2 * settings.halfLength / dx, 3072, "the UL-SPH, 1.4 KiB measured in 2-D"});
+    if (!why.empty()) reader.fail("study.spacings", why);
+  }
   settings.frameSpacing = scene.geometry.spacing;
   settings.output = scene.output;
   return settings;

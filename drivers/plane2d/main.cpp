@@ -13,6 +13,7 @@
 #include "integrators/ConstrainedIntegrators.hpp"
 #include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
+#include "io/run/MemoryGuard.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
@@ -90,6 +91,10 @@ int main(int argc, char** argv) {
     for (Real c : reader.numbers("study.cells")) {
       if (c != std::floor(c) || c < 4) reader.fail("study.cells", "each resolution must be a whole number >= 4");
       if (c > 2000) reader.fail("study.cells", "at most 2000 cells per side (4 million nodes), got " + scene::formatNumber(c));
+      // RK collocation in 2-D: 21 KiB per node measured (the tradeoff sweep's largest lamb2d run), 1.5 x.
+      const std::string why = memoryRefusal(scene::formatNumber(c) + " cells per side",
+                                            {(c + 1) * (c + 1), 32768, "RK collocation in 2-D, 21 KiB measured"});
+      if (!why.empty()) reader.fail("study.cells", why);
       cells.push_back(static_cast<int>(c));
     }
     reader.checkAllKeysRead();

@@ -30,6 +30,7 @@
 #include "core/Error.hpp"
 #include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
+#include "io/run/MemoryGuard.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/run/StudyCases.hpp"
@@ -155,6 +156,11 @@ Index rowsOf(SceneReader& reader, const std::string& at, Real rows, const PlateS
   const Real columns = study.length / (study.thickness / rounded);
   if (rounded * (columns + static_cast<Real>(study.clampLayers)) > 1e8)
     reader.fail(at, scene::formatNumber(rounded) + " particles across would make more than 1e8 particles");
+  // The UL-SPH in 2-D: 1.4 KiB per particle measured (the tradeoff sweep's largest runs), doubled.
+  const std::string why = memoryRefusal(
+      scene::formatNumber(rounded) + " particles across",
+      {rounded * (columns + static_cast<Real>(study.clampLayers)), 3072, "the UL-SPH in 2-D, 1.4 KiB measured"});
+  if (!why.empty()) reader.fail(at, why);
   if (std::abs(columns - std::round(columns)) > 1e-6 * columns)
     reader.fail(at, "dp = H / " + scene::formatNumber(rounded) + " does not divide the length " +
                         scene::formatNumber(study.length));

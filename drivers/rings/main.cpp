@@ -25,6 +25,7 @@
 #include "core/Error.hpp"
 #include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
+#include "io/run/MemoryGuard.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/run/StudyCases.hpp"
@@ -105,6 +106,14 @@ Plan readPlan(SceneReader& reader) {
   if (study.outerRadius - study.innerRadius < 2 * scene.geometry.spacing)
     reader.fail("geometry.spacing", "leaves fewer than 2 particles across the ring wall (" +
                                         scene::formatNumber(study.outerRadius - study.innerRadius) + " m)");
+  {
+    // Two rings of pi (R^2 - r^2) / dp^2 particles; the UL-SPH in 2-D: 1.4 KiB per particle measured, doubled.
+    const Real area = 3.14159265358979 * (study.outerRadius * study.outerRadius - study.innerRadius * study.innerRadius);
+    const std::string why =
+        memoryRefusal("rings at dp = " + scene::formatNumber(scene.geometry.spacing),
+                      {2 * area / (scene.geometry.spacing * scene.geometry.spacing), 3072, "the UL-SPH in 2-D, 1.4 KiB measured"});
+    if (!why.empty()) reader.fail("geometry.spacing", why);
+  }
   study.gap = reader.number("study.gap");
   // The rings span |x| <= 2 outer_radius + gap / 2, |y| <= outer_radius at t = 0: inside the window.
   const GeometrySpec& g = scene.geometry;
