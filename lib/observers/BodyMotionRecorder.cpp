@@ -57,6 +57,43 @@ void BodyMotionRecorder<D>::observe(const StateView& s) {
   samples_.push_back(std::move(sample));
 }
 
+template <int D>
+void BodyMotionRecorder<D>::saveState(StateArchive& archive) const {
+  std::vector<Real> samples;
+  for (const Sample& sample : samples_) {
+    samples.push_back(sample.time);
+    samples.push_back(sample.dt);
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+      for (const std::vector<Vec<D>>* part : {&sample.centre, &sample.velocity, &sample.lower, &sample.upper})
+        for (int a = 0; a < D; ++a) samples.push_back((*part)[b][a]);
+  }
+  archive.put("samples", std::move(samples));
+  archive.putScalar("last_step", static_cast<Real>(lastStep_));
+}
+
+template <int D>
+void BodyMotionRecorder<D>::restoreState(const StateArchive& archive) {
+  const std::vector<Real>& samples = archive.get("samples");
+  const std::size_t width = 2 + 4 * D * bodies_.size();  // numbers per sample
+  if (samples.size() % width != 0)
+    throw InputError("--restart", "the checkpoint's body motion is not of " + std::to_string(bodies_.size()) +
+                                      " bodies in " + std::to_string(D) + "-D");
+  samples_.clear();
+  for (std::size_t at = 0; at < samples.size();) {
+    Sample sample;
+    sample.time = samples[at++];
+    sample.dt = samples[at++];
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+      for (std::vector<Vec<D>>* part : {&sample.centre, &sample.velocity, &sample.lower, &sample.upper}) {
+        Vec<D> value;
+        for (int a = 0; a < D; ++a) value[a] = samples[at++];
+        part->push_back(value);
+      }
+    samples_.push_back(std::move(sample));
+  }
+  lastStep_ = archive.integer("last_step");
+}
+
 template class BodyMotionRecorder<1>;
 template class BodyMotionRecorder<2>;
 template class BodyMotionRecorder<3>;

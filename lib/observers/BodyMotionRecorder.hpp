@@ -39,6 +39,11 @@ class BodyMotionRecorder : public Observer {
   void observe(const StateView& state) override;
   void end(const StateView& state) override { observe(state); }
 
+  // The samples so far (each: time, dt, then per body centre, velocity, lower, upper) and the
+  // last step sampled.
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
+
   const std::vector<Body>& bodies() const { return bodies_; }
   const std::vector<Sample>& samples() const { return samples_; }
 

@@ -24,6 +24,9 @@ class GroupMeanRecorder : public Observer {
   void observe(const StateView& state) override;
   // The final state, unless it was the last one observed.
   void end(const StateView& state) override;
+  // The rows so far.
+  void saveState(StateArchive& archive) const override { series_.saveState(archive); }
+  void restoreState(const StateArchive& archive) override { series_.restoreState(archive); }
 
   const TimeSeries& series() const { return series_; }
 

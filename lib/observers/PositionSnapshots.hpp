@@ -27,6 +27,10 @@ class PositionSnapshots : public Observer {
   void observe(const StateView& state) override { take(state, false); }
   void end(const StateView& state) override { take(state, true); }
 
+  // The snapshots taken (times, and positions particle-major) and the next time due.
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
+
   const std::vector<Snapshot>& snapshots() const { return snapshots_; }
 
  private:

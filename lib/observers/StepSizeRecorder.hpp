@@ -17,6 +17,10 @@ class StepSizeRecorder : public Observer {
   void observe(const StateView& state) override;
   void end(const StateView& state) override { observe(state); }
 
+  // The last step seen, the count and the smallest, largest and last step.
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
+
   long steps() const { return steps_; }
   Real smallest() const { return smallest_; }  // infinity before the first step
   Real largest() const { return largest_; }    // 0 before the first step

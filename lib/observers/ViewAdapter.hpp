@@ -26,6 +26,11 @@ class ViewAdapter : public Observer {
   void begin(const StateView& state) override;
   void observe(const StateView& state) override;
   void end(const StateView& state) override;
+  // The step its intervals count from, and each observer's own state in section "o<k>" (k in the
+  // order added). The view itself is formed anew from the state at every due step: nothing of it
+  // is kept.
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
 
  protected:
   // The view shown to the observers; it may refer to the adapter's own storage until the next call.

@@ -32,6 +32,22 @@ void EnergyLedger<D>::observe(const StateView& state) {
 }
 
 template <int D>
+void EnergyLedger<D>::saveState(StateArchive& archive) const {
+  StateArchive series = archive.section("series");
+  series_.saveState(series);
+  archive.put("initial", std::vector<Real>{initialEnergy_, initialBalance_});
+}
+
+template <int D>
+void EnergyLedger<D>::restoreState(const StateArchive& archive) {
+  series_.restoreState(archive.section("series"));
+  const std::vector<Real>& initial = archive.get("initial");
+  if (initial.size() != 2) throw InputError("--restart", "the checkpoint's energy ledger references are not 2 numbers");
+  initialEnergy_ = initial[0];
+  initialBalance_ = initial[1];
+}
+
+template <int D>
 void EnergyLedger<D>::throwBlowUp(const StateView& state, Real drift) const {
   const Vector& y = state.displacement;
   const auto& layout = system_.layout();

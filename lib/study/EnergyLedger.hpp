@@ -28,6 +28,9 @@ class EnergyLedger : public Observer {
 
   explicit EnergyLedger(UpdatedLagrangianSph<D>& system, Real blowUpLimit = 1);
   void observe(const StateView& state) override;
+  // The rows so far and the first row's energy and balance (the blow-up guard's reference).
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
 
   const TimeSeries& series() const { return series_; }
   // Kinetic + strain energy of the first row (0 before it): the scale of every fraction reported.

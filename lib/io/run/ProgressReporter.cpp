@@ -1,5 +1,7 @@
 #include "io/run/ProgressReporter.hpp"
 
+#include "core/Error.hpp"
+
 #include <unistd.h>
 
 #include <cstdio>
@@ -42,16 +44,35 @@ ProgressReporter::ProgressReporter(Real endTime, Index particles, std::ostream& 
 void ProgressReporter::begin(const StateView& state) {
   startTime_ = state.time;
   startStep_ = state.step;
+  rateTime_ = lastTime_ = state.time;
+  rateStep_ = lastStep_ = state.step;
+  wallStart_ = lastPrint_ = std::chrono::steady_clock::now();
+}
+
+void ProgressReporter::saveState(StateArchive& archive) const {
+  archive.put("start", std::vector<Real>{startTime_, static_cast<Real>(startStep_)});
+  archive.put("last", std::vector<Real>{lastTime_, static_cast<Real>(lastStep_)});
+}
+
+void ProgressReporter::restoreState(const StateArchive& archive) {
+  const std::vector<Real>& start = archive.get("start");
+  if (start.size() != 2) throw InputError("--restart", "the checkpoint's progress start is not 2 numbers");
+  startTime_ = start[0];
+  startStep_ = static_cast<long>(start[1]);
+  const std::vector<Real>& last = archive.get("last");
+  if (last.size() != 2) throw InputError("--restart", "the checkpoint's progress state is not 2 numbers");
+  rateTime_ = lastTime_ = last[0];
+  rateStep_ = lastStep_ = static_cast<long>(last[1]);
   wallStart_ = lastPrint_ = std::chrono::steady_clock::now();
 }
 
 std::string ProgressReporter::line(const StateView& state, double elapsed) const {
-  const long steps = state.step - startStep_;
-  const Real done = state.time - startTime_;
+  const long steps = state.step - rateStep_;
+  const Real done = state.time - rateTime_;  // since the wall clock started
   const Real total = endTime_ - startTime_;
   std::ostringstream s;
   s << "step " << state.step << "  t = " << std::setprecision(4) << state.time << " / " << endTime_;
-  if (total > 0) s << "  (" << std::fixed << std::setprecision(0) << 100 * done / total << " %)";
+  if (total > 0) s << "  (" << std::fixed << std::setprecision(0) << 100 * (state.time - startTime_) / total << " %)";
   if (elapsed > 0 && steps > 0) {
     s << std::scientific << std::setprecision(2) << "  "
       << static_cast<double>(particles_) * static_cast<double>(steps) / elapsed << " particle-steps/s";
@@ -61,6 +82,8 @@ std::string ProgressReporter::line(const StateView& state, double elapsed) const
 }
 
 void ProgressReporter::observe(const StateView& state) {
+  lastTime_ = state.time;
+  lastStep_ = state.step;
   if (!out_) return;
   const auto now = std::chrono::steady_clock::now();
   if (std::chrono::duration<double>(now - lastPrint_).count() < minimumInterval_) return;

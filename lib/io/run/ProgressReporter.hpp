@@ -20,6 +20,11 @@ class ProgressReporter : public Observer {
   void begin(const StateView& state) override;
   void observe(const StateView& state) override;
   void end(const StateView& state) override;
+  // The start of the run (step, time) and the last state observed. The lines go to a terminal,
+  // never to a file; after a restart the wall clock starts again, so the rate and the time left
+  // count from the state the run was restored at (the last one observed before the checkpoint).
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
 
   bool enabled() const { return out_ != nullptr; }
   // The line shown for `state` (also used by the tests).
@@ -32,6 +37,10 @@ class ProgressReporter : public Observer {
   double minimumInterval_ = 0.25;
   Real startTime_ = 0;
   long startStep_ = 0;
+  Real rateTime_ = 0;  // where the wall clock started: the rate and the time left count from here
+  long rateStep_ = 0;
+  Real lastTime_ = 0;  // the last state observed
+  long lastStep_ = 0;
   std::chrono::steady_clock::time_point wallStart_, lastPrint_;
 };
 

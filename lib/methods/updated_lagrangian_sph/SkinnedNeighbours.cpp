@@ -1,5 +1,6 @@
 #include "methods/updated_lagrangian_sph/SkinnedNeighbours.hpp"
 
+#include "core/Error.hpp"
 #include "methods/updated_lagrangian_sph/ParallelThreshold.hpp"
 
 #include <algorithm>
@@ -44,6 +45,28 @@ void SkinnedNeighbours<D>::rebuild(const Real* x, Index count) {
   cells_.rebuild(built_);
   buildNeighbourList(cells_, list_);
   ++rebuilds_;
+}
+
+template <int D>
+void SkinnedNeighbours<D>::saveState(StateArchive& archive) const {
+  std::vector<Real> built;  // particle-major, as refresh() takes positions
+  const std::size_t count = built_[0].size();
+  built.reserve(count * D);
+  for (std::size_t i = 0; i < count; ++i)
+    for (int a = 0; a < D; ++a) built.push_back(built_[static_cast<std::size_t>(a)][i]);
+  archive.put("built", std::move(built));
+  archive.putScalar("rebuilds", static_cast<Real>(rebuilds_));
+}
+
+template <int D>
+void SkinnedNeighbours<D>::restoreState(const StateArchive& archive) {
+  const std::vector<Real>& built = archive.get("built");
+  const long rebuilds = archive.integer("rebuilds");
+  if (rebuilds < 1 || built.size() % D != 0)
+    throw InputError("--restart", "the checkpoint's neighbour lists are not those of a " + std::to_string(D) +
+                                      "-D particle system");
+  rebuild(built.data(), static_cast<Index>(built.size() / D));
+  rebuilds_ = rebuilds;  // rebuild() counted one more
 }
 
 template class SkinnedNeighbours<1>;

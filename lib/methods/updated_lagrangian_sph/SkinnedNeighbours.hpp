@@ -5,6 +5,7 @@
 // moved at most skin R / 2, so at the build they were closer than (1 + skin) R), and the pair sums,
 // which skip listed pairs beyond R, are the same as with freshly built lists.
 
+#include "core/StateArchive.hpp"
 #include "core/Types.hpp"
 #include "neighbours/CellList.hpp"
 #include "neighbours/NeighbourList.hpp"
@@ -23,6 +24,13 @@ class SkinnedNeighbours {
   const NeighbourList& list() const { return list_; }
   long rebuilds() const { return rebuilds_; }
   Real listRadius() const { return cells_.radius(); }
+
+  // Checkpoints: the positions at the last build and the rebuild count. restoreState rebuilds the
+  // lists from those very positions, so the restored lists hold the same pairs in the same order
+  // (pair sums in the same order: bitwise the same rates) and the next refresh rebuilds exactly
+  // when the uninterrupted run would.
+  void saveState(StateArchive& archive) const;
+  void restoreState(const StateArchive& archive);
 
  private:
   void rebuild(const Real* x, Index count);

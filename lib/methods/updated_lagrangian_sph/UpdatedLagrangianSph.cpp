@@ -412,6 +412,31 @@ void UpdatedLagrangianSph<D>::rhs(Real t, Eigen::Ref<const Vector> y, Eigen::Ref
 }
 
 template <int D>
+void UpdatedLagrangianSph<D>::saveState(StateArchive& archive) const {
+  StateArchive skin = archive.section("skin");
+  impl_->neighbours.saveState(skin);
+  archive.put("largest_mu", impl_->largestMu);
+  archive.put("acceleration_norm", impl_->accelerationNorm);
+  archive.putScalar("have_forces", impl_->haveForces ? 1 : 0);
+}
+
+template <int D>
+void UpdatedLagrangianSph<D>::restoreState(const StateArchive& archive) {
+  const std::vector<Real>& largestMu = archive.get("largest_mu");
+  const std::vector<Real>& accelerationNorm = archive.get("acceleration_norm");
+  const auto n = static_cast<std::size_t>(layout_.particles);
+  if (largestMu.size() != n || accelerationNorm.size() != n)
+    throw InputError("--restart", "the checkpoint's updated-Lagrangian SPH has " + std::to_string(largestMu.size()) +
+                                      " particles, this run " + std::to_string(n));
+  impl_->neighbours.restoreState(archive.section("skin"));
+  if (impl_->neighbours.list().rowCount() != layout_.particles)
+    throw InputError("--restart", "the checkpoint's neighbour lists are not of this run's particles");
+  impl_->largestMu = largestMu;
+  impl_->accelerationNorm = accelerationNorm;
+  impl_->haveForces = archive.scalar("have_forces") != 0;
+}
+
+template <int D>
 Real UpdatedLagrangianSph<D>::stableStep(const Vector& y) const {
   if (!impl_->haveForces)
     throw Error("UpdatedLagrangianSph::stableStep: no momentum evaluation yet, so no viscous or force criterion; "

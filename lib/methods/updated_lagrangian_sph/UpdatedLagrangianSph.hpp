@@ -90,6 +90,16 @@ class UpdatedLagrangianSph : public SplitFirstOrderSystem {
   void momentumRate(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> pdot) override;
   void rhs(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) override;
 
+  // --- FirstOrderSystem checkpoints ---
+  // What an evaluation depends on beyond (t, y), and what stableStep and the diagnostics read
+  // from the last evaluation: the neighbour lists (the positions they were built at and the
+  // rebuild count; restored by rebuilding from those positions) and the step criteria of the last
+  // momentum evaluation (largest mu_ij, acceleration norms). Everything else is scratch that the
+  // next evaluation overwrites before reading. Constraints, loads and options are not saved: the
+  // restarted run sets them up again from the same scene.
+  void saveState(StateArchive& archive) const override;
+  void restoreState(const StateArchive& archive) override;
+
   // The step from the CFL, viscous and force criteria at y (options courant, forceFactor). The
   // viscous signal speeds (largest mu_ij) and the force criterion's accelerations are those of the
   // last momentum evaluation, which an integrator makes at every step: the criteria are not

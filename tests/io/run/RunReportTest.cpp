@@ -31,6 +31,26 @@ TEST(ProgressReporter, ShowsStepTimeRateAndTimeLeft) {
   EXPECT_NE(out.str().find("step 1"), std::string::npos);
 }
 
+// Restored from a checkpoint (restoreState in place of begin()): the share done still counts from
+// the run's start, the rate and the time left from the state the checkpoint was taken at.
+TEST(ProgressReporter, RestoredCountsTheShareFromTheStartAndTheRateFromTheCheckpoint) {
+  std::ostringstream out;
+  ProgressReporter before(2.0, 1000, out, 0.0);
+  const Vector u = Vector::Zero(3);
+  before.begin({0, 0.0, u, u});
+  before.observe({400, 0.8, u, u});
+  StateArchive archive;
+  before.saveState(archive);
+  ProgressReporter after(2.0, 1000, out, 0.0);
+  after.restoreState(archive);
+  // 100 steps and 0.2 s simulated in 2 s of wall time since the restart: 5e4 particle-steps/s,
+  // 1.0 s simulated left at 0.1 s per wall second: 10 s.
+  const std::string line = after.line({500, 1.0, u, u}, 2.0);
+  EXPECT_NE(line.find("(50 %)"), std::string::npos) << line;
+  EXPECT_NE(line.find("5.00e+04 particle-steps/s"), std::string::npos) << line;
+  EXPECT_NE(line.find("left 10 s"), std::string::npos) << line;
+}
+
 TEST(ProgressReporter, StaysQuietWhenNotOnATerminal) {
   // ctest pipes standard error, so the terminal check fails and nothing is printed.
   if (::isatty(STDERR_FILENO)) GTEST_SKIP() << "standard error is a terminal here";
