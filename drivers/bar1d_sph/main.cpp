@@ -20,6 +20,7 @@
 #include "io/run/RunDriver.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/run/SceneDriver.hpp"
+#include "io/scene/Format.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
 #include "study/UpdatedLagrangianSphSpec.hpp"

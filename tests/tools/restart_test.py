@@ -45,6 +45,16 @@ CASES = [
     # Constrained Newmark on the reproducing-kernel collocation of the bar (its coefficients d, d', d'').
     ("bar1d", "bar1d", "bar1d.toml", ["--set", "study.nodes=[81, 161]", "--set", "integrator.end_time=300"], 300,
      [(signal.SIGKILL, 0), (signal.SIGTERM, 1)]),
+    # The UL-SPH (first order, leapfrog at the method's own step rule; the neighbour skin), with VTK frames.
+    ("bar1d-sph", "bar1d-sph", "bar1d-sph.toml", ["--set", "study.spacings=[0.002, 0.001]"], 100,
+     [(signal.SIGTERM, 1), (signal.SIGKILL, 1)]),
+    ("rings", "rings", "rings.toml", ["--set", "geometry.spacing=0.002", "--set", "output.png=false",
+                                      "--set", "integrator.end_time=2e-4"], 100,
+     [(signal.SIGKILL, 0), (signal.SIGTERM, 1)]),
+    # The very weak SPH on the 2-D Lamb problem: the energy ledger with its filter loss, transmitting
+    # faces (implicit dashpots), probes with deconvolution, VTK frames of the first case.
+    ("lamb2d", "lamb2d", "lamb2d.toml", ["--set", "study.spacings=[0.5, 0.25]", "--set", "integrator.end_time=40"], 100,
+     [(signal.SIGTERM, 0), (signal.SIGKILL, 3)]),
 ]
 
 NOTES_OF_A_RESTART = ("time loop ", "checkpoint skipped")

@@ -13,7 +13,7 @@ std::string memoryRefusal(const std::string& what, const MemoryEstimate& estimat
   std::ostringstream text;
   text.precision(3);
   text << what << " needs about " << need / 1024.0 << " GiB (" << static_cast<long long>(estimate.particles)
-       << " particles at about " << estimate.bytesPerParticle << " bytes each: " << estimate.basis
+       << " particles at about " << static_cast<long long>(estimate.bytesPerParticle) << " bytes each: " << estimate.basis
        << "); this machine has " << machineMiB / 1024.0 << " GiB";
   return text.str();
 }
