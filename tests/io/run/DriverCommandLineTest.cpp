@@ -4,6 +4,9 @@
 #include <omp.h>
 
 #include <filesystem>
+#include <memory>
+#include <optional>
+#include <utility>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -73,4 +76,30 @@ TEST(DriverCommandLine, HelpListsTheOptionsAndTheSceneKeys) {
   EXPECT_EQ(cli.parse(args.argc(), args.argv()), 0);
   EXPECT_NE(testing::internal::GetCapturedStdout().find("geometry.spacing"), std::string::npos);
   EXPECT_NE(versionString("tool").find("mfwave"), std::string::npos);
+}
+
+// --checkpoint-every takes steps or seconds with an s; --restart stands in for --scene (the folder's
+// scene.resolved.toml) and must name a folder.
+TEST(DriverCommandLine, CheckpointAndRestartOptions) {
+  const auto parse = [](std::vector<std::string> words) {
+    auto cli = std::make_unique<DriverCommandLine>("tool", "a test tool");
+    Arguments args(std::move(words));
+    const std::optional<int> exit = cli->parse(args.argc(), args.argv());
+    return std::make_pair(exit, cli->options());
+  };
+  auto [exit, steps] = parse({"tool", "--scene", sceneFile(), "--checkpoint-every", "500"});
+  EXPECT_FALSE(exit.has_value());
+  EXPECT_EQ(steps.checkpointSteps, 500);
+  EXPECT_EQ(steps.checkpointSeconds, 0);
+  auto [exit2, seconds] = parse({"tool", "--scene", sceneFile(), "--checkpoint-every", "90.5s"});
+  EXPECT_FALSE(exit2.has_value());
+  EXPECT_EQ(seconds.checkpointSteps, 0);
+  EXPECT_EQ(seconds.checkpointSeconds, 90.5);
+  for (const char* bad : {"0", "-5", "2.5", "s", "10x", "1e300", "nan", "10 s"})
+    EXPECT_EQ(parse({"tool", "--scene", sceneFile(), "--checkpoint-every", bad}).first, 2) << bad;
+  const std::string folder = std::filesystem::temp_directory_path().string();
+  auto [exit3, restart] = parse({"tool", "--restart", folder});  // no --scene needed
+  EXPECT_FALSE(exit3.has_value());
+  EXPECT_EQ(restart.restartFolder, folder);
+  EXPECT_EQ(parse({"tool", "--restart", folder + "/no-such-folder"}).first, 2);
 }
