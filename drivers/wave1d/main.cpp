@@ -14,6 +14,7 @@
 #include "integrators/IntegratorFactory.hpp"
 #include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
+#include "io/run/MemoryGuard.hpp"
 #include "io/run/RunDriver.hpp"
 #include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
@@ -22,6 +23,7 @@
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -86,6 +88,17 @@ Study readStudy(SceneReader& reader) {
   study.integrators = reader.strings("study.integrators");
   for (const auto& name : study.integrators) makeSecondOrderIntegrator(name, study.scene.integrator.options);
   refuseStepsAboveTheLimit(study);
+  {
+    // The finest case holds its line (about 150 bytes a cell: the operator, the state, the
+    // integrators' vectors) and its probe and energy series (48 bytes a step); doubled for a margin.
+    const Real cells = *std::max_element(study.cells.begin(), study.cells.end());
+    const Scene& scene = study.scene;
+    const Real dx = (scene.geometry.upper[0] - scene.geometry.lower[0]) / cells;
+    const Real steps = scene.integrator.endTime / scene.integrator.timeStepFor(dx / scene.material.material().pWaveSpeed());
+    const std::string why = memoryRefusal(mfwave::scene::formatNumber(cells) + " cells",
+                                          {cells, 300 + 96 * steps / cells, "the line and its probe and energy series"});
+    if (!why.empty()) reader.fail("study.cells", why);
+  }
   return study;
 }
 

@@ -43,6 +43,10 @@ class CheckpointStore {
   virtual std::optional<CheckpointPoint> resumePoint(int loop) = 0;
   virtual void write(int loop, long step, Real time, const StateArchive& archive) = 0;
 
+  // Where the checkpoints go (for the message an interrupted run ends with); empty if nowhere a
+  // user could name.
+  virtual std::string folder() const { return {}; }
+
   // What the run should say about its checkpoints (resumed from where, what was skipped).
   const std::vector<std::string>& notes() const { return notes_; }
   void addNote(std::string note) { notes_.push_back(std::move(note)); }

@@ -185,6 +185,8 @@ def check_case(compare, build, scenes, root, case):
         if status != expected:
             problems.append(f"{label}: exit {status}, expected {expected}:\n{output}")
             continue
+        if sig == signal.SIGTERM and f"--restart {folder}" not in output:
+            problems.append(f"{label}: the interrupted run does not say how to go on:\n{output}")
         run(build, driver, ["--restart", folder, "--checkpoint-every", str(every)])
         if not resumed_inside(folder):
             problems.append(f"{label}: the restart did not go on from inside a case (the interruption came too late)")

@@ -29,6 +29,7 @@ class FolderCheckpointStore : public CheckpointStore {
   std::string settingName() const override { return settings_.setting; }
   std::optional<CheckpointPoint> resumePoint(int loop) override;
   void write(int loop, long step, Real time, const StateArchive& archive) override;
+  std::string folder() const override { return folder_; }
 
  private:
   std::string folder_;

@@ -1,5 +1,6 @@
 #include "io/run/RunDriver.hpp"
 
+#include "core/CheckpointStore.hpp"
 #include "core/Error.hpp"
 #include "core/Interruption.hpp"
 
@@ -18,7 +19,11 @@ int runDriver(const std::string& program, const std::function<int()>& body) {
     const int status = body();
     if (interruptionRequested()) {
       std::cerr << program << ": interrupted by " << interruptionSignalName()
-                << ": the outputs of the steps taken are written (summary.json says where the run stopped)\n";
+                << ": the outputs of the steps taken are written (summary.json says where the run stopped)";
+      if (const CheckpointStore* store = checkpointStore(); store && !store->folder().empty())
+        std::cerr << "; a checkpoint of the step it reached too: go on with " << program << " --restart "
+                  << store->folder();
+      std::cerr << '\n';
       return 128 + interruptionSignal();
     }
     return status;
