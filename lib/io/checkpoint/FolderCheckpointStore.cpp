@@ -26,8 +26,11 @@ std::string describe(const CheckpointPoint& point) {
 }  // namespace
 
 FolderCheckpointStore::FolderCheckpointStore(std::string outputFolder, std::string sceneDigest,
-                                             CheckpointSettings settings)
-    : folder_(std::move(outputFolder)), digest_(std::move(sceneDigest)), settings_(std::move(settings)) {
+                                             CheckpointSettings settings, std::string sceneText)
+    : folder_(std::move(outputFolder)),
+      digest_(std::move(sceneDigest)),
+      settings_(std::move(settings)),
+      sceneText_(std::move(sceneText)) {
   if (!settings_.restartFolder.empty()) {
     const RestartPoint newest = readNewestCheckpoint(settings_.restartFolder, digest_, -1);
     for (const std::string& skipped : newest.skipped) {
@@ -74,7 +77,9 @@ void FolderCheckpointStore::write(int loop, long step, Real time, const StateArc
   checkpoint.sceneDigest = digest_;
   checkpoint.step = step;
   checkpoint.time = time;
-  checkpoint.arrays = archive.arrays();
+  StateArchive withScene(archive.arrays());
+  if (!sceneText_.empty()) withScene.putText("scene", sceneText_);
+  checkpoint.arrays = withScene.arrays();
   writeCheckpoint(folder_, checkpoint, loop);
 }
 

@@ -22,7 +22,10 @@ class FolderCheckpointStore : public CheckpointStore {
   // taken for this run's). On a restart, checks at once that `settings.restartFolder` holds a
   // whole checkpoint of this scene (InputError "--restart" otherwise: none, all damaged, another
   // scene's or another format version's), naming every file it skipped.
-  FolderCheckpointStore(std::string outputFolder, std::string sceneDigest, CheckpointSettings settings);
+  // `sceneText` (the resolved scene) goes into every checkpoint as the array "scene", so a
+  // checkpoint says by itself what it is a state of.
+  FolderCheckpointStore(std::string outputFolder, std::string sceneDigest, CheckpointSettings settings,
+                        std::string sceneText = {});
 
   long everySteps() const override { return settings_.everySteps; }
   double everySeconds() const override { return settings_.everySeconds; }
@@ -35,6 +38,7 @@ class FolderCheckpointStore : public CheckpointStore {
   std::string folder_;
   std::string digest_;
   CheckpointSettings settings_;
+  std::string sceneText_;
 };
 
 }  // namespace mfwave

@@ -36,7 +36,8 @@ void installCheckpoints(const DriverOptions& options, const std::string& folder,
   }
   if (!settings.restartFolder.empty() && settings.everySteps <= 0 && settings.everySeconds <= 0)
     settings.setting = "--restart";
-  installCheckpointStore(std::make_shared<FolderCheckpointStore>(folder, reader.digest(kNotPartOfTheComputation), settings));
+  installCheckpointStore(std::make_shared<FolderCheckpointStore>(
+      folder, reader.digest(kNotPartOfTheComputation), settings, reader.canonicalToml(kNotPartOfTheComputation)));
 }
 
 }  // namespace

@@ -437,16 +437,20 @@ void SceneReader::checkAllKeysRead() const {
 std::string SceneReader::resolvedToml() const { return scene::writeResolvedToml(root_, schema_, sourceName_); }
 
 std::string SceneReader::digest(const std::vector<std::string>& excluded) const {
+  const std::string text = canonicalToml(excluded);
+  char hex[32];
+  std::snprintf(hex, sizeof hex, "%08x", static_cast<unsigned>(crc32c(text.data(), text.size())));
+  return std::string("crc32c ") + hex + ", " + std::to_string(text.size()) + " bytes";
+}
+
+std::string SceneReader::canonicalToml(const std::vector<std::string>& excluded) const {
   toml::table root = root_;
   for (const std::string& path : excluded) {
     const auto dot = path.rfind('.');
     toml::table* parent = dot == std::string::npos ? &root : root.at_path(path.substr(0, dot)).as_table();
     if (parent) parent->erase(dot == std::string::npos ? path : path.substr(dot + 1));
   }
-  const std::string text = scene::writeResolvedToml(root, schema_, "");
-  char hex[32];
-  std::snprintf(hex, sizeof hex, "%08x", static_cast<unsigned>(crc32c(text.data(), text.size())));
-  return std::string("crc32c ") + hex + ", " + std::to_string(text.size()) + " bytes";
+  return scene::writeResolvedToml(root, schema_, "");
 }
 
 }  // namespace mfwave

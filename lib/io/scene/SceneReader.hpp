@@ -104,6 +104,8 @@ class SceneReader {
   // with the keys `excluded` ("output.folder", ...) left out, so that settings which do not change
   // the computation (where it is written, how often it is checkpointed) do not make another scene.
   std::string digest(const std::vector<std::string>& excluded) const;
+  // The resolved TOML the digest is taken of: no source name in its header, `excluded` left out.
+  std::string canonicalToml(const std::vector<std::string>& excluded) const;
   const toml::table& root() const { return root_; }
 
  private:
