@@ -74,13 +74,15 @@ void StateArchive::getResized(const std::string& name, Vector& values) const {
   for (Index i = 0; i < values.size(); ++i) values[i] = stored[static_cast<std::size_t>(i)];
 }
 
-Real StateArchive::scalar(const std::string& name) const {
+const std::vector<Real>& StateArchive::numbers(const std::string& name, std::size_t count) const {
   const std::vector<Real>& stored = get(name);
-  if (stored.size() != 1)
+  if (stored.size() != count)
     throw InputError("--restart", "the checkpoint's '" + full(name) + "' holds " + std::to_string(stored.size()) +
-                                      " values, not one");
-  return stored[0];
+                                      " values, not " + (count == 1 ? std::string("one") : std::to_string(count)));
+  return stored;
 }
+
+Real StateArchive::scalar(const std::string& name) const { return numbers(name, 1)[0]; }
 
 long StateArchive::integer(const std::string& name) const {
   const Real x = scalar(name);

@@ -36,6 +36,7 @@ class StateArchive {
   const std::vector<Real>& get(const std::string& name) const;
   void get(const std::string& name, Vector& values) const;                 // values keeps its size
   void getResized(const std::string& name, Vector& values) const;          // values takes the array's size
+  const std::vector<Real>& numbers(const std::string& name, std::size_t count) const;  // exactly `count` values
   Real scalar(const std::string& name) const;
   long integer(const std::string& name) const;  // a scalar that must be a whole number
   std::string text(const std::string& name) const;

@@ -372,8 +372,7 @@ void ArkodeExplicit::restoreState(const StateArchive& archive) {
   if (!m.memory) throw Error("arkode: restoreState() called before initialise()");
   Vector y(m.yData.size());
   archive.get("y", y);
-  const std::vector<Real>& counts = archive.get("statistics");
-  if (counts.size() != 4) throw InputError("--restart", "the checkpoint's ARKODE statistics are not 4 counts");
+  const std::vector<Real>& counts = archive.numbers("statistics", 4);
   m.options.fixedStep = archive.scalar("fixed_step");
   initialise(*m.system, archive.scalar("time"), y);
   // Before its first step ARKODE evaluates F(t, y) once more than the stages need (it did so at the

@@ -83,8 +83,7 @@ void ExplicitFirstOrderIntegrator::saveState(StateArchive& archive) const {
 void ExplicitFirstOrderIntegrator::restoreState(const StateArchive& archive) {
   requireInitialised("restoreState()");
   archive.get("y", y_);
-  const std::vector<Real>& clock = archive.get("clock");
-  if (clock.size() != 8) throw InputError("--restart", name() + ": the checkpoint's clock is not 8 numbers");
+  const std::vector<Real>& clock = archive.numbers("clock", 8);
   time_ = clock[0];
   steps_ = static_cast<long>(clock[1]);
   evaluations_ = clock[2];

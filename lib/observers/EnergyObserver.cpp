@@ -33,8 +33,7 @@ void EnergyObserver::saveState(StateArchive& archive) const {
 
 void EnergyObserver::restoreState(const StateArchive& archive) {
   series_.restoreState(archive);
-  const std::vector<Real>& reference = archive.get("reference");
-  if (reference.size() != 2) throw InputError("--restart", "the checkpoint's energy reference is not 2 numbers");
+  const std::vector<Real>& reference = archive.numbers("reference", 2);
   initialTotal_ = reference[0];
   maxDrift_ = reference[1];
 }

@@ -167,8 +167,7 @@ void LinearEnergyLedger::restoreState(const StateArchive& archive) {
   archive.getResized("previous_displacement", previousDisplacement_);
   archive.getResized("previous_force", previousForce_);
   archive.getResized("force", force_);
-  const std::vector<Real>& s = archive.get("scalars");
-  if (s.size() != 13) throw InputError("--restart", "the checkpoint's energy ledger is not 13 numbers");
+  const std::vector<Real>& s = archive.numbers("scalars", 13);
   previousTime_ = s[0];
   previousDashpotPower_ = s[1];
   loadWork_ = s[2];

@@ -203,8 +203,7 @@ void saveHistory(StateArchive archive, const std::deque<Real>& amplitudes, Real 
 void restoreHistory(const StateArchive& archive, std::deque<Real>& amplitudes, Real& reference, Real& quietReference) {
   const std::vector<Real>& stored = archive.get("amplitudes");
   amplitudes.assign(stored.begin(), stored.end());
-  const std::vector<Real>& references = archive.get("references");
-  if (references.size() != 2) throw InputError("--restart", "the checkpoint's stability references are not 2 numbers");
+  const std::vector<Real>& references = archive.numbers("references", 2);
   reference = references[0];
   quietReference = references[1];
 }
@@ -228,8 +227,7 @@ void StabilityMonitor::restoreState(const StateArchive& archive) {
   restoreHistory(archive.section("velocity"), velocity_.amplitudes, velocity_.reference, velocity_.quietReference);
   archive.getResized("previous", previous_);
   archive.getResized("before_previous", beforePrevious_);
-  const std::vector<Real>& counters = archive.get("counters");
-  if (counters.size() != 3) throw InputError("--restart", "the checkpoint's stability counters are not 3 numbers");
+  const std::vector<Real>& counters = archive.numbers("counters", 3);
   observations_ = static_cast<long>(counters[0]);
   quietObservations_ = static_cast<long>(counters[1]);
   lastRatio_ = counters[2];

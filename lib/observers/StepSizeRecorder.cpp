@@ -21,8 +21,7 @@ void StepSizeRecorder::saveState(StateArchive& archive) const {
 }
 
 void StepSizeRecorder::restoreState(const StateArchive& archive) {
-  const std::vector<Real>& steps = archive.get("steps");
-  if (steps.size() != 5) throw InputError("--restart", "the checkpoint's step sizes are not 5 numbers");
+  const std::vector<Real>& steps = archive.numbers("steps", 5);
   lastStep_ = static_cast<long>(steps[0]);
   steps_ = static_cast<long>(steps[1]);
   smallest_ = steps[2];

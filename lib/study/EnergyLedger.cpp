@@ -41,8 +41,7 @@ void EnergyLedger<D>::saveState(StateArchive& archive) const {
 template <int D>
 void EnergyLedger<D>::restoreState(const StateArchive& archive) {
   series_.restoreState(archive.section("series"));
-  const std::vector<Real>& initial = archive.get("initial");
-  if (initial.size() != 2) throw InputError("--restart", "the checkpoint's energy ledger references are not 2 numbers");
+  const std::vector<Real>& initial = archive.numbers("initial", 2);
   initialEnergy_ = initial[0];
   initialBalance_ = initial[1];
 }

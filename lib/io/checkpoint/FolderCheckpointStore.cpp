@@ -32,11 +32,7 @@ FolderCheckpointStore::FolderCheckpointStore(std::string outputFolder, std::stri
       settings_(std::move(settings)),
       sceneText_(std::move(sceneText)) {
   if (!settings_.restartFolder.empty()) {
-    const RestartPoint newest = readNewestCheckpoint(settings_.restartFolder, digest_, -1);
-    for (const std::string& skipped : newest.skipped) {
-      std::cerr << "checkpoint skipped: " << skipped << "\n";
-      addNote("checkpoint skipped: " + skipped);
-    }
+    noteSkipped(readNewestCheckpoint(settings_.restartFolder, digest_, -1).skipped);
   }
   if (settings_.restartFolder.empty() || !sameFolder(settings_.restartFolder, folder_))
     for (const std::string& stale : checkpointFiles(folder_)) {
@@ -57,12 +53,7 @@ std::optional<CheckpointPoint> FolderCheckpointStore::resumePoint(int loop) {
     std::cerr << "checkpoint: " << notes().back() << "\n";
     return std::nullopt;
   }
-  for (const std::string& skipped : found.skipped) {
-    const std::string note = "checkpoint skipped: " + skipped;
-    if (std::find(notes().begin(), notes().end(), note) != notes().end()) continue;
-    std::cerr << note << "\n";
-    addNote(note);
-  }
+  noteSkipped(found.skipped);
   CheckpointPoint point;
   point.step = found.checkpoint.step;
   point.time = found.checkpoint.time;
@@ -70,6 +61,15 @@ std::optional<CheckpointPoint> FolderCheckpointStore::resumePoint(int loop) {
   point.source = found.path;
   addNote("time loop " + std::to_string(loop) + " resumed from " + describe(point));
   return point;
+}
+
+void FolderCheckpointStore::noteSkipped(const std::vector<std::string>& skipped) {
+  for (const std::string& file : skipped) {
+    const std::string note = "checkpoint skipped: " + file;
+    if (std::find(notes().begin(), notes().end(), note) != notes().end()) continue;  // said once
+    std::cerr << note << "\n";
+    addNote(note);
+  }
 }
 
 void FolderCheckpointStore::write(int loop, long step, Real time, const StateArchive& archive) {

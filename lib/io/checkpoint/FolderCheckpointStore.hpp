@@ -6,6 +6,7 @@
 #include "core/CheckpointStore.hpp"
 
 #include <string>
+#include <vector>
 
 namespace mfwave {
 
@@ -35,6 +36,9 @@ class FolderCheckpointStore : public CheckpointStore {
   std::string folder() const override { return folder_; }
 
  private:
+  // Says each damaged file skipped (on stderr and in the notes), once however often it is met.
+  void noteSkipped(const std::vector<std::string>& skipped);
+
   std::string folder_;
   std::string digest_;
   CheckpointSettings settings_;

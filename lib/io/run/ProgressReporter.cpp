@@ -55,12 +55,10 @@ void ProgressReporter::saveState(StateArchive& archive) const {
 }
 
 void ProgressReporter::restoreState(const StateArchive& archive) {
-  const std::vector<Real>& start = archive.get("start");
-  if (start.size() != 2) throw InputError("--restart", "the checkpoint's progress start is not 2 numbers");
+  const std::vector<Real>& start = archive.numbers("start", 2);
   startTime_ = start[0];
   startStep_ = static_cast<long>(start[1]);
-  const std::vector<Real>& last = archive.get("last");
-  if (last.size() != 2) throw InputError("--restart", "the checkpoint's progress state is not 2 numbers");
+  const std::vector<Real>& last = archive.numbers("last", 2);
   rateTime_ = lastTime_ = last[0];
   rateStep_ = lastStep_ = static_cast<long>(last[1]);
   wallStart_ = lastPrint_ = std::chrono::steady_clock::now();

@@ -46,8 +46,7 @@ void PngFrameRenderer<D>::saveState(StateArchive& archive) const {
 
 template <int D>
 void PngFrameRenderer<D>::restoreState(const StateArchive& archive) {
-  const std::vector<Real>& counts = archive.get("counts");
-  if (counts.size() != 2) throw InputError("--restart", "the checkpoint's PNG counts are not 2 numbers");
+  const std::vector<Real>& counts = archive.numbers("counts", 2);
   observed_ = static_cast<long>(counts[0]);
   rendered_ = static_cast<long>(counts[1]);
   lastImage_ = rendered_ > 0 ? frameFilePath(folder_, base_, ((observed_ - 1) / every_) * every_, ".png") : std::string();

@@ -64,8 +64,7 @@ class ErrorSampler : public Observer {
   }
   void restoreState(const StateArchive& archive) override {
     series_.restoreState(archive);
-    const std::vector<Real>& maxima = archive.get("maxima");
-    if (maxima.size() != 2) throw InputError("--restart", "the checkpoint's error maxima are not 2 numbers");
+    const std::vector<Real>& maxima = archive.numbers("maxima", 2);
     maxU_ = maxima[0];
     maxErrU_ = maxima[1];
   }
