@@ -12,6 +12,10 @@
 //                        velocity factors, to study.convergence_end_time
 //   vwsph_Hdp<n>_Vf<V>   with study.very_weak_sph: the very weak form SPH (consistent variant) at the
 //                        scene's resolution and the small velocity factor, to integrator.end_time
+//   tlsph_Hdp<n>_Vf<V>   with study.total_lagrangian_sph: the total-Lagrangian SPH (reference kernels,
+//                        Saint Venant-Kirchhoff, hourglass penalty, no artificial terms) at the
+//                        scene's resolution for both velocity factors (the large one to
+//                        integrator.end_time), and at every other resolution at the small one
 //   (study.linearised_modes) the method linearised about rest at every resolution: its first
 //                        bending period without amplitude, artificial terms or time integration
 // The periods over the resolutions get an observed order and a Richardson limit (runs and
@@ -92,6 +96,16 @@ SceneSchema plateSchema() {
       .describedAs("central-difference step of the very weak form case, as a fraction of its operator's stable step");
   schema.add("study.very_weak_ghost_layers", T::Integer).withUnit("-").defaultsTo("2").nonNegative()
       .describedAs("ghost layers on every face of the very weak form case (they complete the kernel sums)");
+  schema.add("study.updated_lagrangian_sph", T::Boolean).defaultsTo("true")
+      .describedAs("run the updated-Lagrangian SPH cases (the main case with frames, the small V_f, the other "
+                   "resolutions); false leaves the other methods' cases");
+  schema.add("study.total_lagrangian_sph", T::Boolean).defaultsTo("true")
+      .describedAs("also run the total-Lagrangian SPH (same particles, kernel and h) at every resolution at the small "
+                   "V_f, and at the scene's resolution at study.velocity_factor to integrator.end_time");
+  schema.add("study.total_lagrangian_hourglass", T::Number).withUnit("-").defaultsTo("1.0").nonNegative()
+      .describedAs("the total-Lagrangian SPH's hourglass penalty, in units of Young's modulus (0: off)");
+  schema.add("study.total_lagrangian_cfl", T::Number).withUnit("-").defaultsTo("0.5").between(0, 1, false, true)
+      .describedAs("central-difference step of the total-Lagrangian cases, as a fraction of 2 / omega_max at rest");
   return schema;
 }
 
@@ -101,6 +115,14 @@ struct Plan {
   Real linearVelocityFactor = 0;  // V_f of the convergence series over resolutions
   std::vector<Index> modeResolutions;  // H / dp of the linearised modes (empty: none)
 };
+
+const char* casePrefix(PlateMethod method) {
+  switch (method) {
+    case PlateMethod::VeryWeak: return "vwsph";
+    case PlateMethod::TotalLagrangian: return "tlsph";
+    default: return "ulsph";
+  }
+}
 
 std::string caseName(const char* method, Index rows, Real velocityFactor) {
   std::ostringstream s;
@@ -189,6 +211,13 @@ Plan readPlan(SceneReader& reader) {
   study.veryWeakSmoothingRate = reader.number("study.very_weak_smoothing_rate");
   study.veryWeakCfl = reader.number("study.very_weak_cfl");
   study.veryWeakGhostLayers = reader.integer("study.very_weak_ghost_layers");
+  const bool totalLagrangian = reader.boolean("study.total_lagrangian_sph");
+  const bool updatedLagrangian = reader.boolean("study.updated_lagrangian_sph");
+  if (!updatedLagrangian && !totalLagrangian && !veryWeak)
+    reader.fail("study.updated_lagrangian_sph",
+                "is false, and so are study.total_lagrangian_sph and study.very_weak_sph: no case would run");
+  study.totalLagrangianHourglass = reader.number("study.total_lagrangian_hourglass");
+  study.totalLagrangianCfl = reader.number("study.total_lagrangian_cfl");
 
   const Index mainRows = rowsOf(reader, "geometry.spacing", study.thickness / scene.geometry.spacing, study);
   // The clamp must hold every neighbour of the plate's first column: its support reaches
@@ -215,8 +244,7 @@ Plan readPlan(SceneReader& reader) {
   const Real linearFactor = small ? smallFactor : velocityFactor;
   plan.linearVelocityFactor = linearFactor;
   const auto add = [&](PlateMethod method, Index rows, Real vf, Real end, bool frames) {
-    plan.cases.push_back(
-        {caseName(method == PlateMethod::VeryWeak ? "vwsph" : "ulsph", rows, vf), method, rows, vf, end, frames});
+    plan.cases.push_back({caseName(casePrefix(method), rows, vf), method, rows, vf, end, frames});
   };
   // The main case (30 periods, frames), then the short cases: the small amplitude and the very weak
   // form SPH at the scene's resolution, and the other resolutions.
@@ -225,18 +253,31 @@ Plan readPlan(SceneReader& reader) {
     plan.modeResolutions.push_back(mainRows);
     std::sort(plan.modeResolutions.begin(), plan.modeResolutions.end());
   }
-  add(PlateMethod::UpdatedLagrangian, mainRows, velocityFactor, endTime, true);
-  if (small) add(PlateMethod::UpdatedLagrangian, mainRows, smallFactor, convergenceEnd, false);
+  if (updatedLagrangian) {
+    add(PlateMethod::UpdatedLagrangian, mainRows, velocityFactor, endTime, true);
+    if (small) add(PlateMethod::UpdatedLagrangian, mainRows, smallFactor, convergenceEnd, false);
+  }
   if (veryWeak) add(PlateMethod::VeryWeak, mainRows, linearFactor, convergenceEnd, false);
-  for (Index rows : others) {
+  for (Index rows : updatedLagrangian ? others : std::vector<Index>{}) {
     add(PlateMethod::UpdatedLagrangian, rows, linearFactor, convergenceEnd, false);
     if (small && largeConvergence) add(PlateMethod::UpdatedLagrangian, rows, velocityFactor, convergenceEnd, false);
+  }
+  // The total-Lagrangian SPH: the main amplitude over the whole run (its energy over 30 periods),
+  // then the small amplitude at every resolution.
+  if (totalLagrangian) {
+    add(PlateMethod::TotalLagrangian, mainRows, velocityFactor, endTime, false);
+    if (small) add(PlateMethod::TotalLagrangian, mainRows, smallFactor, convergenceEnd, false);
+    for (Index rows : others) add(PlateMethod::TotalLagrangian, rows, linearFactor, convergenceEnd, false);
   }
   return plan;
 }
 
 const char* methodName(PlateMethod method) {
-  return method == PlateMethod::VeryWeak ? "very_weak_sph" : "updated_lagrangian_sph";
+  switch (method) {
+    case PlateMethod::VeryWeak: return "very_weak_sph";
+    case PlateMethod::TotalLagrangian: return "total_lagrangian_sph";
+    default: return "updated_lagrangian_sph";
+  }
 }
 
 // cases.csv and the terminal table, one column each.
@@ -398,13 +439,17 @@ int main(int argc, char** argv) {
       summary.figures.push_back({c + "_particle_steps_per_second", r.record.particleStepsPerSecond()});
       summary.figures.push_back({c + "_wall [s]", r.record.setupSeconds + r.record.loopSeconds});
     }
-    std::vector<ConvergenceSample> runSamples;
-    for (const PlateCaseResult& r : results)
-      if (r.settings.method == PlateMethod::UpdatedLagrangian && r.settings.velocityFactor == plan.linearVelocityFactor &&
-          std::isfinite(r.tip.period) && r.tip.period > 0)
-        runSamples.push_back({1 / static_cast<Real>(r.settings.rows), r.tip.period});
-    reportConvergence(runSamples, "the V_f = " + scene::formatNumber(plan.linearVelocityFactor) + " period", "ulsph",
-                      main.timoshenkoPeriod, summary);
+    for (const PlateMethod method : {PlateMethod::UpdatedLagrangian, PlateMethod::TotalLagrangian}) {
+      std::vector<ConvergenceSample> runSamples;
+      for (const PlateCaseResult& r : results)
+        if (r.settings.method == method && r.settings.velocityFactor == plan.linearVelocityFactor &&
+            std::isfinite(r.tip.period) && r.tip.period > 0)
+          runSamples.push_back({1 / static_cast<Real>(r.settings.rows), r.tip.period});
+      reportConvergence(runSamples,
+                        std::string("the ") + methodName(method) + " V_f = " +
+                            scene::formatNumber(plan.linearVelocityFactor) + " period",
+                        casePrefix(method), main.timoshenkoPeriod, summary);
+    }
     if (!plan.modeResolutions.empty()) {
       std::vector<PlateModesResult> modes;
       for (Index rows : plan.modeResolutions) {

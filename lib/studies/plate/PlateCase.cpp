@@ -1,6 +1,7 @@
 #include "PlateCase.hpp"
 
 #include "PlateLattice.hpp"
+#include "TotalLagrangianPlate.hpp"
 #include "VeryWeakPlate.hpp"
 
 #include "core/Error.hpp"
@@ -133,6 +134,8 @@ void analyseTip(PlateCaseResult& result, const TimeSeries& tip, const Cantilever
 PlateCaseResult runPlateCase(const PlateStudy& study, const PlateCaseSettings& settings, const std::string& folder,
                              bool progress) {
   if (settings.method == PlateMethod::VeryWeak) return runVeryWeakPlateCase(study, settings, folder, progress);
+  if (settings.method == PlateMethod::TotalLagrangian)
+    return runTotalLagrangianPlateCase(study, settings, folder, progress);
   return runUpdatedLagrangianCase(study, settings, folder, progress);
 }
 

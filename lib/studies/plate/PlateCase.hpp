@@ -1,7 +1,7 @@
 #pragma once
 // One run of the plate study: the cantilever plate of Gray, Monaghan and Swift (2001) at one
 // resolution and one start velocity, by the updated-Lagrangian SPH (the study's method) or, for
-// the small-deformation comparison, by the very weak form SPH; its tip history analysed for the
+// the small-deformation comparison, by the very weak form SPH, or by the total-Lagrangian SPH; its tip history analysed for the
 // period and the amplitude and compared with the thin-plate and Timoshenko periods.
 
 #include "analysis/Oscillation.hpp"
@@ -18,7 +18,7 @@
 
 namespace mfwave::plate {
 
-enum class PlateMethod { UpdatedLagrangian, VeryWeak };
+enum class PlateMethod { UpdatedLagrangian, VeryWeak, TotalLagrangian };
 
 // What the scene fixes for every case.
 struct PlateStudy {
@@ -36,6 +36,10 @@ struct PlateStudy {
   Real veryWeakSmoothingRate = 1e4;
   Real veryWeakCfl = 0.5;         // central-difference step / the operator's stable step
   Index veryWeakGhostLayers = 2;  // ghost layers on every face (they complete the kernel sums)
+  // The total-Lagrangian cases: the hourglass penalty (times Young's modulus) and the
+  // central-difference step over the linearised system's limit.
+  Real totalLagrangianHourglass = 1;
+  Real totalLagrangianCfl = 0.5;
 };
 
 // What distinguishes one run.

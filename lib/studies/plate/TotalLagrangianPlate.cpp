@@ -1,0 +1,92 @@
+#include "TotalLagrangianPlate.hpp"
+
+#include "PlateLattice.hpp"
+
+#include "core/Stopwatch.hpp"
+#include "integrators/CentralDifference.hpp"
+#include "io/run/ProgressReporter.hpp"
+#include "methods/total_lagrangian_sph/TotalLagrangianSph.hpp"
+#include "observers/EnergyObserver.hpp"
+#include "observers/GroupMeanRecorder.hpp"
+#include "observers/StabilityMonitor.hpp"
+#include "observers/TimeLoop.hpp"
+
+#include <cmath>
+
+namespace mfwave::plate {
+namespace {
+
+constexpr int D = 2;
+
+}  // namespace
+
+PlateCaseResult runTotalLagrangianPlateCase(const PlateStudy& study, const PlateCaseSettings& settings,
+                                            const std::string& folder, bool progress) {
+  const Scene& scene = study.scene;
+  PlateCaseResult result;
+  result.settings = settings;
+  const Stopwatch setupClock;
+  const CantileverPlate plate(study.length, study.thickness, scene.material.material());
+
+  // the particles and the clamp of the updated-Lagrangian cases
+  const PlateLattice lattice =
+      cellCentredPlate(study.length, study.thickness, study.lowerY, settings.rows, study.clampLayers);
+  result.spacing = lattice.spacing;
+  const Index n = lattice.particles.physicalCount();
+  result.record.particles = n;
+  result.fixedParticles = static_cast<Index>(lattice.clamp.size());
+
+  TotalLagrangianSphOptions options;
+  options.material = scene.material.material();
+  options.kernel = study.sph.kernel;
+  options.smoothingLengthRatio = study.sph.smoothingLengthRatio;
+  options.hourglassFactor = study.totalLagrangianHourglass;
+  TotalLagrangianSph<D> system(lattice.particles, options);
+  system.fixParticles(lattice.clamp);
+  result.smoothingLength = system.smoothingLength();
+  result.meanNeighbours = system.meanNeighbourCount();
+
+  Vector v0 = Vector::Zero(n * D);
+  for (Index i = 0; i < n; ++i)
+    v0[i * D + 1] = plate.initialVelocity(lattice.particles.position(i)[0], settings.velocityFactor);
+  system.clamp(v0);
+  for (Index i : lattice.tip) result.tipStartVelocity += v0[i * D + 1];
+  result.tipStartVelocity /= static_cast<Real>(lattice.tip.size());
+
+  // central differences at a fraction of the linearised system's limit 2 / omega_max
+  const Real stableStep = 2 / std::sqrt(system.largestFrequencySquared());
+  const long steps =
+      std::max(1L, static_cast<long>(std::ceil(settings.endTime / (study.totalLagrangianCfl * stableStep))));
+  const Real dt = settings.endTime / static_cast<Real>(steps);
+  CentralDifference integrator;
+  integrator.initialise(system, 0, Vector::Zero(n * D), v0, dt);
+
+  GroupMeanRecorder tip("the plate's tip", lattice.tip, D);
+  EnergyObserver energy([&system](const StateView& state) {
+    const TotalLagrangianSphEnergy e = system.energy(state.displacement, state.velocity);
+    return EnergyTerms{e.kinetic, e.strain + e.hourglass};
+  });
+  ProgressReporter reporter(settings.endTime, n, progress);
+  StabilityMonitor monitor(scene.stability.options(D, 0));
+  TimeLoop loop;
+  loop.add(monitor);
+  loop.add(reporter);
+  loop.add(tip, study.tipEvery);
+  loop.add(energy, study.energyEvery);
+  result.record.setupSeconds = setupClock.seconds();
+
+  const RunStatistics stats = loop.run(integrator, settings.endTime);
+  noteAllowedGrowth(result.notes, settings.name, {monitor.growthMessage()});
+  result.recordLoop(stats);
+  result.record.timeStep = dt;
+  result.energyDrift = energy.maxRelativeDrift();
+
+  tip.series().writeCsv(folder + "/" + settings.name + "-tip.csv");
+  energy.series().writeCsv(folder + "/" + settings.name + "-energy.csv");
+  result.files.push_back(settings.name + "-tip.csv");
+  result.files.push_back(settings.name + "-energy.csv");
+  analyseTip(result, tip.series(), plate, study.shearCoefficient);
+  return result;
+}
+
+}  // namespace mfwave::plate
