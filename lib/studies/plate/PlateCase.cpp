@@ -36,20 +36,13 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
   const CantileverPlate plate(study.length, study.thickness, scene.material.material());
 
   // particles: the plate and its clamp, cell-centred
-  const PlateLattice lattice =
-      cellCentredPlate(study.length, study.thickness, study.lowerY, settings.rows, study.clampLayers);
-  result.spacing = lattice.spacing;
-  result.record.particles = lattice.particles.physicalCount();
-  result.fixedParticles = static_cast<Index>(lattice.clamp.size());
+  const PlateLattice lattice = sphCaseParticles(study, settings, result);
 
   // the method, the clamp, and the first mode's velocity (GMS)
   UpdatedLagrangianSph<D> system(lattice.particles, study.sph);
   system.fixParticles(lattice.clamp);
   result.smoothingLength = system.smoothingLength();
-  Vector v0 = Vector::Zero(result.record.particles * D);
-  for (Index i = 0; i < result.record.particles; ++i)
-    v0[i * D + 1] = plate.initialVelocity(lattice.particles.position(i)[0], settings.velocityFactor);
-  const Vector y0 = system.initialState(v0);
+  const Vector y0 = system.initialState(firstModeVelocity(lattice, plate, settings.velocityFactor));
   const auto& layout = system.layout();
   for (Index i : lattice.tip) result.tipStartVelocity += y0[layout.velocity(i, 1)];
   result.tipStartVelocity /= static_cast<Real>(lattice.tip.size());
@@ -112,6 +105,22 @@ PlateCaseResult runUpdatedLagrangianCase(const PlateStudy& study, const PlateCas
 }
 
 }  // namespace
+
+PlateLattice sphCaseParticles(const PlateStudy& study, const PlateCaseSettings& settings, PlateCaseResult& result) {
+  PlateLattice lattice =
+      cellCentredPlate(study.length, study.thickness, study.lowerY, settings.rows, study.clampLayers);
+  result.spacing = lattice.spacing;
+  result.record.particles = lattice.particles.physicalCount();
+  result.fixedParticles = static_cast<Index>(lattice.clamp.size());
+  return lattice;
+}
+
+Vector firstModeVelocity(const PlateLattice& lattice, const CantileverPlate& plate, Real velocityFactor) {
+  const Index n = lattice.particles.physicalCount();
+  Vector v0 = Vector::Zero(n * D);
+  for (Index i = 0; i < n; ++i) v0[i * D + 1] = plate.initialVelocity(lattice.particles.position(i)[0], velocityFactor);
+  return v0;
+}
 
 void analyseTip(PlateCaseResult& result, const TimeSeries& tip, const CantileverPlate& plate, Real shearCoefficient) {
   result.tip = analyseOscillation(tip.times(), tip.column(1));

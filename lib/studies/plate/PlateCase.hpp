@@ -87,6 +87,12 @@ struct PlateCaseResult : StudyCase {
 PlateCaseResult runPlateCase(const PlateStudy& study, const PlateCaseSettings& settings, const std::string& folder,
                              bool progress);
 
+// The cell-centred particles and clamp of the SPH cases at settings.rows across, with the result's
+// spacing, particle and clamp counts filled in; and the first mode's velocity v_y on them (GMS).
+struct PlateLattice;
+PlateLattice sphCaseParticles(const PlateStudy& study, const PlateCaseSettings& settings, PlateCaseResult& result);
+Vector firstModeVelocity(const PlateLattice& lattice, const CantileverPlate& plate, Real velocityFactor);
+
 // Fills the tip analysis (period, amplitudes), the reference periods, the expected amplitude and
 // the record's errors (ranked by |period error vs Timoshenko|) of `result` from the tip history
 // (columns u_x, u_y, v_x, v_y). Shared by both methods' runs.

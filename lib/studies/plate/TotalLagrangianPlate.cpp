@@ -29,12 +29,8 @@ PlateCaseResult runTotalLagrangianPlateCase(const PlateStudy& study, const Plate
   const CantileverPlate plate(study.length, study.thickness, scene.material.material());
 
   // the particles and the clamp of the updated-Lagrangian cases
-  const PlateLattice lattice =
-      cellCentredPlate(study.length, study.thickness, study.lowerY, settings.rows, study.clampLayers);
-  result.spacing = lattice.spacing;
+  const PlateLattice lattice = sphCaseParticles(study, settings, result);
   const Index n = lattice.particles.physicalCount();
-  result.record.particles = n;
-  result.fixedParticles = static_cast<Index>(lattice.clamp.size());
 
   TotalLagrangianSphOptions options;
   options.material = scene.material.material();
@@ -46,9 +42,7 @@ PlateCaseResult runTotalLagrangianPlateCase(const PlateStudy& study, const Plate
   result.smoothingLength = system.smoothingLength();
   result.meanNeighbours = system.meanNeighbourCount();
 
-  Vector v0 = Vector::Zero(n * D);
-  for (Index i = 0; i < n; ++i)
-    v0[i * D + 1] = plate.initialVelocity(lattice.particles.position(i)[0], settings.velocityFactor);
+  Vector v0 = firstModeVelocity(lattice, plate, settings.velocityFactor);
   system.clamp(v0);
   for (Index i : lattice.tip) result.tipStartVelocity += v0[i * D + 1];
   result.tipStartVelocity /= static_cast<Real>(lattice.tip.size());
