@@ -25,8 +25,12 @@ def number(row, key):
         return math.nan
 
 
+METHOD_LABELS = {"very_weak_sph": "very weak SPH", "updated_lagrangian_sph": "UL-SPH",
+                 "total_lagrangian_sph": "TL-SPH"}
+
+
 def label(case):
-    method = "very weak SPH" if case["method"] == "very_weak_sph" else "UL-SPH"
+    method = METHOD_LABELS.get(case["method"], case["method"])
     return f"{method}, H/dp = {case['H_over_dp']}, V_f = {case['V_f']}"
 
 
@@ -90,15 +94,20 @@ def extrapolated_period(out_dir, key):
 
 def convergence(ax, out_dir, cases, thin, timoshenko):
     """Period against (dp / H)^2: a second-order method approaches the axis on a straight line."""
-    sph = [c for c in cases if c["method"] == "updated_lagrangian_sph"]
-    factors = sorted({c["V_f"] for c in sph}, key=float)
-    for k, vf in enumerate(factors):
-        rows = sorted([c for c in sph if c["V_f"] == vf], key=lambda c: int(c["H_over_dp"]))
-        ax.plot([int(c["H_over_dp"]) ** -2 for c in rows], [number(c, "period [s]") for c in rows], f"C{k}o-",
-                label=f"UL-SPH, V_f = {vf} (H/dp = {', '.join(c['H_over_dp'] for c in rows)})")
-    limit = extrapolated_period(out_dir, "ulsph_extrapolated_period [s]")
-    if limit is not None:
-        ax.plot([0], [limit], "C0*", ms=12, label=f"runs' Richardson limit {limit:.4f} s")
+    colour = 0
+    for method, prefix, marker in (("updated_lagrangian_sph", "ulsph", "o"), ("total_lagrangian_sph", "tlsph", "D")):
+        sph = [c for c in cases if c["method"] == method]
+        factors = sorted({c["V_f"] for c in sph}, key=float)
+        first = colour
+        for vf in factors:
+            rows = sorted([c for c in sph if c["V_f"] == vf], key=lambda c: int(c["H_over_dp"]))
+            ax.plot([int(c["H_over_dp"]) ** -2 for c in rows], [number(c, "period [s]") for c in rows],
+                    f"C{colour}{marker}-",
+                    label=f"{METHOD_LABELS[method]}, V_f = {vf} (H/dp = {', '.join(c['H_over_dp'] for c in rows)})")
+            colour += 1 if colour != 1 else 2  # C2 is the linearised series
+        limit = extrapolated_period(out_dir, f"{prefix}_extrapolated_period [s]")
+        if limit is not None and sph:
+            ax.plot([0], [limit], f"C{first}*", ms=12, label=f"{METHOD_LABELS[method]} Richardson limit {limit:.4f} s")
     modes_path = os.path.join(out_dir, "modes.csv")
     if os.path.exists(modes_path):
         modes = [m for m in read_table(modes_path) if math.isfinite(number(m, "first_period [s]"))]
