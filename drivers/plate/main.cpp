@@ -265,7 +265,7 @@ Plan readPlan(SceneReader& reader) {
   // The total-Lagrangian SPH: the main amplitude over the whole run (its energy over 30 periods),
   // then the small amplitude at every resolution.
   if (totalLagrangian) {
-    add(PlateMethod::TotalLagrangian, mainRows, velocityFactor, endTime, false);
+    add(PlateMethod::TotalLagrangian, mainRows, velocityFactor, endTime, !updatedLagrangian);  // frames if main
     if (small) add(PlateMethod::TotalLagrangian, mainRows, smallFactor, convergenceEnd, false);
     for (Index rows : others) add(PlateMethod::TotalLagrangian, rows, linearFactor, convergenceEnd, false);
   }

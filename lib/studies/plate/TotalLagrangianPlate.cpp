@@ -5,12 +5,14 @@
 #include "core/Stopwatch.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "io/run/ProgressReporter.hpp"
+#include "io/vtk/FrameOutputs.hpp"
 #include "methods/total_lagrangian_sph/TotalLagrangianSph.hpp"
 #include "observers/EnergyObserver.hpp"
 #include "observers/GroupMeanRecorder.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mfwave::plate {
@@ -67,6 +69,13 @@ PlateCaseResult runTotalLagrangianPlateCase(const PlateStudy& study, const Plate
   loop.add(reporter);
   loop.add(tip, study.tipEvery);
   loop.add(energy, study.energyEvery);
+  // Frames of u and v at the reference positions (ParaView: warp by u), when this is the main case.
+  typename ParticleFrames<D>::Settings frameOptions = frameSettings<D>(scene.output, settings.writeFrames);
+  frameOptions.png = frameOptions.png && study.pngFrames > 0;
+  const Real expectedFrames = static_cast<Real>(steps) / static_cast<Real>(scene.output.every);
+  frameOptions.pngEvery = std::max(1L, std::lround(expectedFrames / static_cast<Real>(std::max(1L, study.pngFrames))));
+  ParticleFrames<D> frames(lattice.particles, folder, settings.name, frameOptions);
+  frames.attachTo(loop, scene.output.every);
   result.record.setupSeconds = setupClock.seconds();
 
   const RunStatistics stats = loop.run(integrator, settings.endTime);
@@ -79,6 +88,7 @@ PlateCaseResult runTotalLagrangianPlateCase(const PlateStudy& study, const Plate
   energy.series().writeCsv(folder + "/" + settings.name + "-energy.csv");
   result.files.push_back(settings.name + "-tip.csv");
   result.files.push_back(settings.name + "-energy.csv");
+  frames.report().appendTo(result.files, result.notes);
   analyseTip(result, tip.series(), plate, study.shearCoefficient);
   return result;
 }
