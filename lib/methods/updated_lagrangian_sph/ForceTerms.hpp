@@ -3,6 +3,7 @@
 // outputs written from them. Shared by the separate pass (ForcePass.cpp) and the fused pass of rhs
 // (FusedPass.cpp), so both sum the same terms in the same order.
 
+#include "methods/updated_lagrangian_sph/AlwaysInline.hpp"
 #include "methods/updated_lagrangian_sph/ArtificialStress.hpp"
 #include "methods/updated_lagrangian_sph/ForcePass.hpp"
 
@@ -19,7 +20,8 @@ class ForceRow {
 
   // The pair i, j: r = x_ij, vij = v_i - v_j, gradW = grad_i W_ij, correctedGradW = C_i grad_i W_ij
   // (gradW itself without the correction), w = W_ij (read only with the artificial stress).
-  void add(Index j, const Vec<D>& r, const Vec<D>& vij, const Vec<D>& gradW, const Vec<D>& correctedGradW, Real w) {
+  MFWAVE_ALWAYS_INLINE void add(Index j, const Vec<D>& r, const Vec<D>& vij, const Vec<D>& gradW,
+                                const Vec<D>& correctedGradW, Real w) {
     const ArtificialViscosity& viscosity = inputs_.viscosity;
     const Mat<D>* A = inputs_.stressOverRho2;
     const Real* P = inputs_.pressureOverRho2;

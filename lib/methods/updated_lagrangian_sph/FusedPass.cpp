@@ -30,7 +30,7 @@ void fusedRates(const ParticleView<D>& view, const KinematicsSettings& settings,
       const Vec<D> correctedGradW = view.correctedGradient(i, gradW);
       const Real w = withValues ? pairs.value[static_cast<std::size_t>(k)] : 0.0;
       const Vec<D> vji = view.velocity(j) - vi;
-      kinematics.add(view.m[j], rhoi, view.rho[j], vji, correctedGradW, w, xsph);
+      kinematics.add(view.m[j], view.volume[j], rhoi, view.rho[j], vji, correctedGradW, w, xsph);
       force.add(j, r, Vec<D>(-vji), gradW, correctedGradW, w);  // -(v_j - v_i) is v_i - v_j exactly
     }
     kinematics.write(view, i, settings, layout, qdot);

@@ -26,7 +26,7 @@ void kernelGradientCorrection(const ParticleView<D>& view, Mat<D>* correction) {
       const Index j = pairs.neighbour[static_cast<std::size_t>(k)];
       const Vec<D> r = xi - view.position(j);
       const Vec<D> gradW = pairs.gradientFactor[static_cast<std::size_t>(k)] * r;
-      moment.noalias() -= (view.m[j] / view.rho[j]) * r * gradW.transpose();
+      moment.noalias() -= view.volume[j] * r * gradW.transpose();
     }
     const Real determinant = moment.determinant();
     correction[i] = Mat<D>::Identity();

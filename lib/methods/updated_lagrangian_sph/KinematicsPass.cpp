@@ -24,7 +24,7 @@ void kinematicsRates(const ParticleView<D>& view, const KinematicsSettings& sett
       const Vec<D> r = xi - view.position(j);
       const Vec<D> gradW = view.correctedGradient(i, Vec<D>(pairs.gradientFactor[static_cast<std::size_t>(k)] * r));
       const Real w = xsph ? pairs.value[static_cast<std::size_t>(k)] : 0.0;
-      row.add(view.m[j], rhoi, view.rho[j], Vec<D>(view.velocity(j) - vi), gradW, w, xsph);
+      row.add(view.m[j], view.volume[j], rhoi, view.rho[j], Vec<D>(view.velocity(j) - vi), gradW, w, xsph);
     }
     row.write(view, i, settings, layout, qdot);
   }

@@ -3,6 +3,7 @@
 // particle i and the rates written from them. Shared by the separate pass (KinematicsPass.cpp) and
 // the fused pass of rhs (FusedPass.cpp), so both sum the same terms in the same order.
 
+#include "methods/updated_lagrangian_sph/AlwaysInline.hpp"
 #include "methods/updated_lagrangian_sph/JaumannStressRate.hpp"
 #include "methods/updated_lagrangian_sph/KinematicsPass.hpp"
 #include "methods/updated_lagrangian_sph/StressVoigt.hpp"
@@ -15,10 +16,11 @@ struct KinematicsRow {
   Vec<D> smoothing = Vec<D>::Zero();
   Real densityRate = 0;
 
-  // The pair i, j: vji = v_j - v_i, gradW = grad_i W_ij as row i uses it (C_i grad_i W_ij when
-  // corrected), w = W_ij (read only with XSPH).
-  void add(Real mj, Real rhoi, Real rhoj, const Vec<D>& vji, const Vec<D>& gradW, Real w, bool xsph) {
-    gradient.noalias() += (mj / rhoj) * vji * gradW.transpose();  // Li eq. (22)
+  // The pair i, j: Vj = m_j / rho_j, vji = v_j - v_i, gradW = grad_i W_ij as row i uses it
+  // (C_i grad_i W_ij when corrected), w = W_ij (read only with XSPH).
+  MFWAVE_ALWAYS_INLINE void add(Real mj, Real Vj, Real rhoi, Real rhoj, const Vec<D>& vji, const Vec<D>& gradW, Real w,
+                                bool xsph) {
+    gradient.noalias() += Vj * vji * gradW.transpose();  // Li eq. (22)
     densityRate -= mj * vji.dot(gradW);                             // Li eq. (18)
     if (xsph) smoothing += (2 * mj / (rhoi + rhoj) * w) * vji;
   }

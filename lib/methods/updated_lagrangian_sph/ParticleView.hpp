@@ -27,6 +27,8 @@ struct ParticleView {
   const Real* m = nullptr;    // count masses
   // The pairs inside the support with their kernel terms; set by the system for the rate passes.
   const PairTable* pairs = nullptr;
+  // V_j = m_j / rho_j of this evaluation; set by the system for the rate passes.
+  const Real* volume = nullptr;
   // The kernel-gradient correction C_i per particle (KernelGradientCorrection.hpp); null: none.
   const Mat<D>* correction = nullptr;
 

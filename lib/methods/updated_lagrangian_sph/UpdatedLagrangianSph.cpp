@@ -99,6 +99,7 @@ struct UpdatedLagrangianSph<D>::Impl {
     prescribedGroup.assign(static_cast<std::size_t>(n), -1);
     const auto count = static_cast<std::size_t>(n);
     summedDensity.resize(count);
+    volume.resize(count);
     correction.resize(owner.options_.kernelGradientCorrection ? count : 0);
     stressOverRho2.resize(count);
     correctedStressOverRho2.resize(owner.options_.kernelGradientCorrection ? count : 0);
@@ -136,6 +137,8 @@ struct UpdatedLagrangianSph<D>::Impl {
     buildPairTable<D>(*kernel, neighbours.list(), v.x, v.count, options.xsph > 0 || options.artificialStress.enabled,
                    pairs);
     v.pairs = &pairs;
+    for (Index i = 0; i < v.count; ++i) volume[static_cast<std::size_t>(i)] = v.m[i] / v.rho[i];
+    v.volume = volume.data();
     if (options.kernelGradientCorrection) {
       kernelGradientCorrection(v, correction.data());
       v.correction = correction.data();
@@ -330,6 +333,7 @@ struct UpdatedLagrangianSph<D>::Impl {
 
   // Scratch of one evaluation.
   std::vector<Real> summedDensity;  // summation densities of the last evaluation
+  std::vector<Real> volume;         // m_i / rho_i of the last rate evaluation
   std::vector<Mat<D>> correction;   // kernel-gradient corrections C_i of the last evaluation
   std::vector<Mat<D>> stressOverRho2;
   std::vector<Mat<D>> correctedStressOverRho2;  // A_i C_i, with the correction only
