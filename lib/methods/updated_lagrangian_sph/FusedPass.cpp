@@ -12,6 +12,7 @@ void fusedRates(const ParticleView<D>& view, const KinematicsSettings& settings,
                 const ForceOutputs<D>& outputs) {
   const Index n = view.count;
   const PairTable& pairs = *view.pairs;
+  const NeighbourList& list = *view.neighbours;
   const bool xsph = settings.xsph > 0;
   const bool withValues = xsph || inputs.artificialStress != nullptr;
   // Gather form: row i only writes particle i's rates, so the result does not depend on threads.
@@ -22,9 +23,10 @@ void fusedRates(const ParticleView<D>& view, const KinematicsSettings& settings,
     KinematicsRow<D> kinematics;
     ForceRow<D> force(view, inputs, i);
     const Vec<D> xi = view.position(i);
-    const Index last = pairs.end(i);
-    for (Index k = pairs.begin(i); k < last; ++k) {
-      const Index j = pairs.neighbour[static_cast<std::size_t>(k)];
+    const Index last = list.offsets[static_cast<std::size_t>(i) + 1];
+    for (Index k = list.offsets[static_cast<std::size_t>(i)]; k < last; ++k) {
+      if (!pairs.used(k)) continue;  // i itself, or listed through the skin but outside the support
+      const Index j = list.indices[static_cast<std::size_t>(k)];
       const Vec<D> r = xi - view.position(j);
       const Vec<D> gradW = pairs.gradientFactor[static_cast<std::size_t>(k)] * r;
       const Vec<D> correctedGradW = view.correctedGradient(i, gradW);

@@ -10,6 +10,7 @@ void kinematicsRates(const ParticleView<D>& view, const KinematicsSettings& sett
                      const UpdatedLagrangianSphLayout<D>& layout, Real* qdot) {
   const Index n = view.count;
   const PairTable& pairs = *view.pairs;
+  const NeighbourList& list = *view.neighbours;
   const bool xsph = settings.xsph > 0;
   // Gather form: row i only writes particle i's rates, so the result does not depend on threads.
 #pragma omp parallel for if (n > kParallelParticles) schedule(static)
@@ -18,9 +19,10 @@ void kinematicsRates(const ParticleView<D>& view, const KinematicsSettings& sett
     const Real rhoi = view.rho[i];
     KinematicsRow<D> row;
     const Vec<D> xi = view.position(i);
-    const Index last = pairs.end(i);
-    for (Index k = pairs.begin(i); k < last; ++k) {
-      const Index j = pairs.neighbour[static_cast<std::size_t>(k)];
+    const Index last = list.offsets[static_cast<std::size_t>(i) + 1];
+    for (Index k = list.offsets[static_cast<std::size_t>(i)]; k < last; ++k) {
+      if (!pairs.used(k)) continue;  // i itself, or listed through the skin but outside the support
+      const Index j = list.indices[static_cast<std::size_t>(k)];
       const Vec<D> r = xi - view.position(j);
       const Vec<D> gradW = view.correctedGradient(i, Vec<D>(pairs.gradientFactor[static_cast<std::size_t>(k)] * r));
       const Real w = xsph ? pairs.value[static_cast<std::size_t>(k)] : 0.0;

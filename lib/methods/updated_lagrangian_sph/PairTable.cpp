@@ -1,59 +1,66 @@
 #include "methods/updated_lagrangian_sph/PairTable.hpp"
 
+#include "core/Error.hpp"
 #include "kernels/KernelProfiles.hpp"
 #include "methods/updated_lagrangian_sph/ParallelThreshold.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mfwave {
 
 namespace {
 
-template <int D>
-Real squaredDistance(const Real* x, Index i, Index j) {
-  const Vec<D> r = Eigen::Map<const Vec<D>>(x + i * D) - Eigen::Map<const Vec<D>>(x + j * D);
-  return r.squaredNorm();
+// mirror[e] for every entry: the lists are symmetric (j in row i exactly when i in row j) and each
+// row is sorted, so i is found in row j by bisection.
+void findMirrors(const NeighbourList& list, Index count, std::vector<std::uint32_t>& mirror) {
+  mirror.resize(list.indices.size());
+  const Index* offsets = list.offsets.data();
+  const Index* indices = list.indices.data();
+  bool symmetric = true;
+#pragma omp parallel for if (count > kParallelParticles) schedule(static) reduction(&& : symmetric)
+  for (Index i = 0; i < count; ++i) {
+    for (Index e = offsets[i]; e < offsets[i + 1]; ++e) {
+      const Index j = indices[e];
+      const Index* first = indices + offsets[j];
+      const Index* last = indices + offsets[j + 1];
+      const Index* at = std::lower_bound(first, last, i);
+      symmetric = symmetric && at != last && *at == i;
+      mirror[static_cast<std::size_t>(e)] = static_cast<std::uint32_t>(at - first);
+    }
+  }
+  if (!symmetric) throw Error("buildPairTable: the neighbour lists are not symmetric");
 }
 
 template <int D, class K>
 void fillRows(const K& kernel, const NeighbourList& list, const Real* x, Index count, bool withValues,
               PairTable& table) {
   const Real support2 = kernel.supportRadius2();
-  const Index* listOffsets = list.offsets.data();
+  const Index* offsets = list.offsets.data();
   const Index* indices = list.indices.data();
-  Index* offsets = table.offsets.data();
-  // Count the pairs inside the support per row, then the row offsets (a serial scan).
-#pragma omp parallel for if (count > kParallelParticles) schedule(static)
-  for (Index i = 0; i < count; ++i) {
-    Index inside = 0;
-    for (Index e = listOffsets[i]; e < listOffsets[i + 1]; ++e) {
-      const Index j = indices[e];
-      inside += (j != i && squaredDistance<D>(x, i, j) < support2) ? 1 : 0;
-    }
-    offsets[i + 1] = inside;
-  }
-  offsets[0] = 0;
-  for (Index i = 0; i < count; ++i) offsets[i + 1] += offsets[i];
-  const auto entries = static_cast<std::size_t>(offsets[count]);
-  table.neighbour.resize(entries);
-  table.gradientFactor.resize(entries);
-  table.value.resize(withValues ? entries : 0);
-  Index* neighbour = table.neighbour.data();
+  const std::uint32_t* mirror = table.mirror.data();
+  std::uint8_t* inside = table.inside.data();
   Real* factor = table.gradientFactor.data();
   Real* value = withValues ? table.value.data() : nullptr;
+  // Row i evaluates its pairs with j > i and writes entry (i, j) and its mirror (j, i).
 #pragma omp parallel for if (count > kParallelParticles) schedule(static)
   for (Index i = 0; i < count; ++i) {
-    Index k = offsets[i];
-    for (Index e = listOffsets[i]; e < listOffsets[i + 1]; ++e) {
+    const Vec<D> xi = Eigen::Map<const Vec<D>>(x + i * D);
+    for (Index e = offsets[i]; e < offsets[i + 1]; ++e) {
       const Index j = indices[e];
-      if (j == i) continue;
-      const Real r2 = squaredDistance<D>(x, i, j);
-      if (r2 >= support2) continue;  // listed through the skin but outside the support
+      if (j == i) inside[e] = 0;
+      if (j <= i) continue;
+      const Index m = offsets[j] + mirror[e];
+      const Vec<D> r = xi - Eigen::Map<const Vec<D>>(x + j * D);
+      const Real r2 = r.squaredNorm();
+      if (r2 >= support2) {  // listed through the skin but outside the support
+        inside[e] = inside[m] = 0;
+        continue;
+      }
       const Real distance = std::sqrt(r2);
-      neighbour[k] = j;
-      factor[k] = kernel.gradientFactorAt(distance);
-      if (value != nullptr) value[k] = kernel.valueAt(distance);
-      ++k;
+      inside[e] = inside[m] = 1;
+      factor[e] = factor[m] = kernel.gradientFactorAt(distance);
+      if (value != nullptr) value[e] = value[m] = kernel.valueAt(distance);
     }
   }
 }
@@ -63,7 +70,14 @@ void fillRows(const K& kernel, const NeighbourList& list, const Real* x, Index c
 template <int D>
 void buildPairTable(const Kernel& kernel, const NeighbourList& list, const Real* x, Index count, bool withValues,
                     PairTable& table) {
-  table.offsets.resize(static_cast<std::size_t>(count) + 1);
+  const auto entries = list.indices.size();
+  if (!table.mirrorValid || table.mirror.size() != entries) {
+    findMirrors(list, count, table.mirror);
+    table.mirrorValid = true;
+  }
+  table.inside.resize(entries);
+  table.gradientFactor.resize(entries);
+  table.value.resize(withValues ? entries : 0);
   visitInlineKernel(kernel, [&](const auto& inlined) { fillRows<D>(inlined, list, x, count, withValues, table); });
 }
 
