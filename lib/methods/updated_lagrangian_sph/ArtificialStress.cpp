@@ -16,7 +16,9 @@ Mat<D> artificialStressTensor(const Mat<D>& sigma, Real rho, Real epsilon) {
     // Only the larger: R = scale l_1 e_1 e_1^T with the projector e_1 e_1^T = (sigma - l_2 I) / (l_1 - l_2),
     // where l_1 - l_2 = 2 radius >= l_1 > 0 (well conditioned).
     const Real mean = 0.5 * (sigma(0, 0) + sigma(1, 1));
-    const Real radius = std::hypot(0.5 * (sigma(0, 0) - sigma(1, 1)), 0.5 * (sigma(0, 1) + sigma(1, 0)));
+    const Real halfDifference = 0.5 * (sigma(0, 0) - sigma(1, 1));
+    const Real shear = 0.5 * (sigma(0, 1) + sigma(1, 0));
+    const Real radius = std::sqrt(halfDifference * halfDifference + shear * shear);  // stresses: no overflow
     const Real larger = mean + radius;
     const Real smaller = mean - radius;
     if (!(larger > 0)) return Mat<D>::Zero();  // no tension: no correction

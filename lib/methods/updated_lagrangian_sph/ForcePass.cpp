@@ -10,7 +10,7 @@ void forceRates(const ParticleView<D>& view, const ForceInputs<D>& inputs, const
   const Index n = view.count;
   const PairTable& pairs = *view.pairs;
   const NeighbourList& list = *view.neighbours;
-  const bool withValues = inputs.artificialStress != nullptr;
+  const bool artificialStress = inputs.artificialStress != nullptr;
   // Gather form: row i only writes particle i's outputs, so the result does not depend on threads.
 #pragma omp parallel for if (n > kParallelParticles) schedule(static)
   for (Index i = 0; i < n; ++i) {
@@ -23,8 +23,8 @@ void forceRates(const ParticleView<D>& view, const ForceInputs<D>& inputs, const
       const Index j = list.indices[static_cast<std::size_t>(k)];
       const Vec<D> r = xi - view.position(j);
       const Vec<D> gradW = pairs.gradientFactor[static_cast<std::size_t>(k)] * r;
-      const Real w = withValues ? pairs.value[static_cast<std::size_t>(k)] : 0.0;
-      row.add(j, r, Vec<D>(vi - view.velocity(j)), gradW, view.correctedGradient(i, gradW), w);
+      const Real stressWeight = artificialStress ? pairs.stressWeight[static_cast<std::size_t>(k)] : 0.0;
+      row.add(j, r, Vec<D>(vi - view.velocity(j)), gradW, view.correctedGradient(i, gradW), stressWeight);
     }
     row.write(outputs);
   }

@@ -35,9 +35,7 @@ struct ForceInputs {
   const Mat<D>* correctedStressOverRho2 = nullptr;  // A_i C_i with the correction (view.correction); else null
   const Real* pressureOverRho2 = nullptr;  // P_i = p_i / rho_i^2
   const Real* soundSpeed = nullptr;        // c_i of eq. (21), for Pi_ij
-  const Mat<D>* artificialStress = nullptr;  // R_i; null when the artificial stress is off
-  Real inverseReferenceKernel = 0;         // 1 / W(dp)
-  Real artificialStressExponent = 4;       // n
+  const Mat<D>* artificialStress = nullptr;  // R_i; null when the artificial stress is off (f_ij^n: the pair table)
   ArtificialViscosity viscosity;
 };
 

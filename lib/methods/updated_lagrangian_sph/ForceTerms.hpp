@@ -19,9 +19,9 @@ class ForceRow {
       : view_(view), inputs_(inputs), i_(i) {}
 
   // The pair i, j: r = x_ij, vij = v_i - v_j, gradW = grad_i W_ij, correctedGradW = C_i grad_i W_ij
-  // (gradW itself without the correction), w = W_ij (read only with the artificial stress).
+  // (gradW itself without the correction), stressWeight = f_ij^n (read only with the artificial stress).
   MFWAVE_ALWAYS_INLINE void add(Index j, const Vec<D>& r, const Vec<D>& vij, const Vec<D>& gradW,
-                                const Vec<D>& correctedGradW, Real w) {
+                                const Vec<D>& correctedGradW, Real stressWeight) {
     const ArtificialViscosity& viscosity = inputs_.viscosity;
     const Mat<D>* A = inputs_.stressOverRho2;
     const Real* P = inputs_.pressureOverRho2;
@@ -40,8 +40,7 @@ class ForceRow {
     Vec<D> force = AC != nullptr ? Vec<D>(AC[i] * gradW + AC[j] * gradW) : Vec<D>((A[i] + A[j]) * gradW);
     force -= pi * gradW;
     if (inputs_.artificialStress != nullptr) {
-      const Real weight = artificialStressWeight(w, inputs_.inverseReferenceKernel, inputs_.artificialStressExponent);
-      const Vec<D> extra = weight * ((inputs_.artificialStress[i] + inputs_.artificialStress[j]) * gradW);
+      const Vec<D> extra = stressWeight * ((inputs_.artificialStress[i] + inputs_.artificialStress[j]) * gradW);
       force += extra;
       artificialWork_ += mj * vij.dot(extra);
     }

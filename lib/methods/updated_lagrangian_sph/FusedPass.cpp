@@ -14,12 +14,11 @@ void fusedRates(const ParticleView<D>& view, const KinematicsSettings& settings,
   const PairTable& pairs = *view.pairs;
   const NeighbourList& list = *view.neighbours;
   const bool xsph = settings.xsph > 0;
-  const bool withValues = xsph || inputs.artificialStress != nullptr;
+  const bool artificialStress = inputs.artificialStress != nullptr;
   // Gather form: row i only writes particle i's rates, so the result does not depend on threads.
 #pragma omp parallel for if (n > kParallelParticles) schedule(static)
   for (Index i = 0; i < n; ++i) {
     const Vec<D> vi = view.velocity(i);
-    const Real rhoi = view.rho[i];
     KinematicsRow<D> kinematics;
     ForceRow<D> force(view, inputs, i);
     const Vec<D> xi = view.position(i);
@@ -30,10 +29,11 @@ void fusedRates(const ParticleView<D>& view, const KinematicsSettings& settings,
       const Vec<D> r = xi - view.position(j);
       const Vec<D> gradW = pairs.gradientFactor[static_cast<std::size_t>(k)] * r;
       const Vec<D> correctedGradW = view.correctedGradient(i, gradW);
-      const Real w = withValues ? pairs.value[static_cast<std::size_t>(k)] : 0.0;
+      const Real smoothingWeight = xsph ? pairs.smoothingWeight[static_cast<std::size_t>(k)] : 0.0;
+      const Real stressWeight = artificialStress ? pairs.stressWeight[static_cast<std::size_t>(k)] : 0.0;
       const Vec<D> vji = view.velocity(j) - vi;
-      kinematics.add(view.m[j], view.volume[j], rhoi, view.rho[j], vji, correctedGradW, w, xsph);
-      force.add(j, r, Vec<D>(-vji), gradW, correctedGradW, w);  // -(v_j - v_i) is v_i - v_j exactly
+      kinematics.add(view.m[j], view.volume[j], vji, correctedGradW, smoothingWeight, xsph);
+      force.add(j, r, Vec<D>(-vji), gradW, correctedGradW, stressWeight);  // -(v_j - v_i) is v_i - v_j exactly
     }
     kinematics.write(view, i, settings, layout, qdot);
     force.write(outputs);

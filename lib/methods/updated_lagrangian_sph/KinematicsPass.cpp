@@ -16,7 +16,6 @@ void kinematicsRates(const ParticleView<D>& view, const KinematicsSettings& sett
 #pragma omp parallel for if (n > kParallelParticles) schedule(static)
   for (Index i = 0; i < n; ++i) {
     const Vec<D> vi = view.velocity(i);
-    const Real rhoi = view.rho[i];
     KinematicsRow<D> row;
     const Vec<D> xi = view.position(i);
     const Index last = list.offsets[static_cast<std::size_t>(i) + 1];
@@ -25,8 +24,8 @@ void kinematicsRates(const ParticleView<D>& view, const KinematicsSettings& sett
       const Index j = list.indices[static_cast<std::size_t>(k)];
       const Vec<D> r = xi - view.position(j);
       const Vec<D> gradW = view.correctedGradient(i, Vec<D>(pairs.gradientFactor[static_cast<std::size_t>(k)] * r));
-      const Real w = xsph ? pairs.value[static_cast<std::size_t>(k)] : 0.0;
-      row.add(view.m[j], view.volume[j], rhoi, view.rho[j], Vec<D>(view.velocity(j) - vi), gradW, w, xsph);
+      const Real smoothingWeight = xsph ? pairs.smoothingWeight[static_cast<std::size_t>(k)] : 0.0;
+      row.add(view.m[j], view.volume[j], Vec<D>(view.velocity(j) - vi), gradW, smoothingWeight, xsph);
     }
     row.write(view, i, settings, layout, qdot);
   }

@@ -17,12 +17,12 @@ struct KinematicsRow {
   Real densityRate = 0;
 
   // The pair i, j: Vj = m_j / rho_j, vji = v_j - v_i, gradW = grad_i W_ij as row i uses it
-  // (C_i grad_i W_ij when corrected), w = W_ij (read only with XSPH).
-  MFWAVE_ALWAYS_INLINE void add(Real mj, Real Vj, Real rhoi, Real rhoj, const Vec<D>& vji, const Vec<D>& gradW, Real w,
+  // (C_i grad_i W_ij when corrected), smoothingWeight = 2 W_ij / (rho_i + rho_j) (read only with XSPH).
+  MFWAVE_ALWAYS_INLINE void add(Real mj, Real Vj, const Vec<D>& vji, const Vec<D>& gradW, Real smoothingWeight,
                                 bool xsph) {
     gradient.noalias() += Vj * vji * gradW.transpose();  // Li eq. (22)
     densityRate -= mj * vji.dot(gradW);                             // Li eq. (18)
-    if (xsph) smoothing += (2 * mj / (rhoi + rhoj) * w) * vji;
+    if (xsph) smoothing += (mj * smoothingWeight) * vji;  // m_j / rhobar_ij W_ij (v_j - v_i)
   }
 
   // dx_i/dt (with XSPH), drho_i/dt and ds_i/dt (Li eq. 24-26) into qdot.

@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "kernels/KernelProfiles.hpp"
+#include "methods/updated_lagrangian_sph/ArtificialStress.hpp"
 #include "methods/updated_lagrangian_sph/ParallelThreshold.hpp"
 
 #include <algorithm>
@@ -33,15 +34,17 @@ void findMirrors(const NeighbourList& list, Index count, std::vector<std::uint32
 }
 
 template <int D, class K>
-void fillRows(const K& kernel, const NeighbourList& list, const Real* x, Index count, bool withValues,
-              PairTable& table) {
+void fillRows(const K& kernel, const NeighbourList& list, const Real* x, Index count,
+              const PairTableSettings& settings, PairTable& table) {
   const Real support2 = kernel.supportRadius2();
   const Index* offsets = list.offsets.data();
   const Index* indices = list.indices.data();
   const std::uint32_t* mirror = table.mirror.data();
   std::uint8_t* inside = table.inside.data();
   Real* factor = table.gradientFactor.data();
-  Real* value = withValues ? table.value.data() : nullptr;
+  Real* smoothing = settings.xsph ? table.smoothingWeight.data() : nullptr;
+  Real* stress = settings.artificialStress ? table.stressWeight.data() : nullptr;
+  const Real* rho = settings.rho;
   // Row i evaluates its pairs with j > i and writes entry (i, j) and its mirror (j, i).
 #pragma omp parallel for if (count > kParallelParticles) schedule(static)
   for (Index i = 0; i < count; ++i) {
@@ -60,7 +63,13 @@ void fillRows(const K& kernel, const NeighbourList& list, const Real* x, Index c
       const Real distance = std::sqrt(r2);
       inside[e] = inside[m] = 1;
       factor[e] = factor[m] = kernel.gradientFactorAt(distance);
-      if (value != nullptr) value[e] = value[m] = kernel.valueAt(distance);
+      if (smoothing != nullptr || stress != nullptr) {
+        const Real w = kernel.valueAt(distance);
+        if (smoothing != nullptr) smoothing[e] = smoothing[m] = 2 * w / (rho[i] + rho[j]);
+        if (stress != nullptr)
+          stress[e] = stress[m] =
+              artificialStressWeight(w, settings.inverseReferenceKernel, settings.artificialStressExponent);
+      }
     }
   }
 }
@@ -68,8 +77,8 @@ void fillRows(const K& kernel, const NeighbourList& list, const Real* x, Index c
 }  // namespace
 
 template <int D>
-void buildPairTable(const Kernel& kernel, const NeighbourList& list, const Real* x, Index count, bool withValues,
-                    PairTable& table) {
+void buildPairTable(const Kernel& kernel, const NeighbourList& list, const Real* x, Index count,
+                    const PairTableSettings& settings, PairTable& table) {
   const auto entries = list.indices.size();
   if (!table.mirrorValid || table.mirror.size() != entries) {
     findMirrors(list, count, table.mirror);
@@ -77,12 +86,16 @@ void buildPairTable(const Kernel& kernel, const NeighbourList& list, const Real*
   }
   table.inside.resize(entries);
   table.gradientFactor.resize(entries);
-  table.value.resize(withValues ? entries : 0);
-  visitInlineKernel(kernel, [&](const auto& inlined) { fillRows<D>(inlined, list, x, count, withValues, table); });
+  table.smoothingWeight.resize(settings.xsph ? entries : 0);
+  table.stressWeight.resize(settings.artificialStress ? entries : 0);
+  visitInlineKernel(kernel, [&](const auto& inlined) { fillRows<D>(inlined, list, x, count, settings, table); });
 }
 
-template void buildPairTable<1>(const Kernel&, const NeighbourList&, const Real*, Index, bool, PairTable&);
-template void buildPairTable<2>(const Kernel&, const NeighbourList&, const Real*, Index, bool, PairTable&);
-template void buildPairTable<3>(const Kernel&, const NeighbourList&, const Real*, Index, bool, PairTable&);
+template void buildPairTable<1>(const Kernel&, const NeighbourList&, const Real*, Index, const PairTableSettings&,
+                                PairTable&);
+template void buildPairTable<2>(const Kernel&, const NeighbourList&, const Real*, Index, const PairTableSettings&,
+                                PairTable&);
+template void buildPairTable<3>(const Kernel&, const NeighbourList&, const Real*, Index, const PairTableSettings&,
+                                PairTable&);
 
 }  // namespace mfwave

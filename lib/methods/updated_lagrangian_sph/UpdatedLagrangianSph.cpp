@@ -128,14 +128,19 @@ struct UpdatedLagrangianSph<D>::Impl {
     return v;
   }
 
-  // view(y) with the pair table of this evaluation (W_ij only when XSPH or the artificial stress
-  // read it) and the kernel-gradient corrections when the options ask for them: what the rate
+  // view(y) with the pair table of this evaluation (the XSPH and artificial-stress weights only
+  // when those are on) and the kernel-gradient corrections when the options ask for them: what the rate
   // passes use (the diagnostics do not need them).
   ParticleView<D> rateView(const Real* y) {
     ParticleView<D> v = view(y);
     const UpdatedLagrangianSphOptions& options = system.options_;
-    buildPairTable<D>(*kernel, neighbours.list(), v.x, v.count, options.xsph > 0 || options.artificialStress.enabled,
-                   pairs);
+    PairTableSettings settings;
+    settings.rho = v.rho;
+    settings.xsph = options.xsph > 0;
+    settings.artificialStress = options.artificialStress.enabled;
+    settings.inverseReferenceKernel = inverseReferenceKernel;
+    settings.artificialStressExponent = options.artificialStress.exponent;
+    buildPairTable<D>(*kernel, neighbours.list(), v.x, v.count, settings, pairs);
     v.pairs = &pairs;
     for (Index i = 0; i < v.count; ++i) volume[static_cast<std::size_t>(i)] = v.m[i] / v.rho[i];
     v.volume = volume.data();
@@ -223,8 +228,6 @@ struct UpdatedLagrangianSph<D>::Impl {
     inputs.pressureOverRho2 = pressureOverRho2.data();
     inputs.soundSpeed = soundSpeed.data();
     inputs.artificialStress = options.artificialStress.enabled ? artificialStress.data() : nullptr;
-    inputs.inverseReferenceKernel = inverseReferenceKernel;
-    inputs.artificialStressExponent = options.artificialStress.exponent;
     inputs.viscosity = viscosity;
     return inputs;
   }
