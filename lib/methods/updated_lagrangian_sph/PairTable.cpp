@@ -5,32 +5,30 @@
 #include "methods/updated_lagrangian_sph/ArtificialStress.hpp"
 #include "methods/updated_lagrangian_sph/ParallelThreshold.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace mfwave {
 
 namespace {
 
-// mirror[e] for every entry: the lists are symmetric (j in row i exactly when i in row j) and each
-// row is sorted, so i is found in row j by bisection.
-void findMirrors(const NeighbourList& list, Index count, std::vector<std::uint32_t>& mirror) {
+// mirror[e] for every entry. The lists are symmetric (j in row i exactly when i in row j) and each
+// row is sorted, so visiting the rows in increasing i meets the entries of row j in its order: the
+// entry (i, j) mirrors the next unvisited entry of row j (one pass, no search). Checked on the way.
+void findMirrors(const NeighbourList& list, Index count, std::vector<Index>& next,
+                 std::vector<std::uint32_t>& mirror) {
   mirror.resize(list.indices.size());
+  next.assign(static_cast<std::size_t>(count), 0);
   const Index* offsets = list.offsets.data();
   const Index* indices = list.indices.data();
-  bool symmetric = true;
-#pragma omp parallel for if (count > kParallelParticles) schedule(static) reduction(&& : symmetric)
   for (Index i = 0; i < count; ++i) {
     for (Index e = offsets[i]; e < offsets[i + 1]; ++e) {
       const Index j = indices[e];
-      const Index* first = indices + offsets[j];
-      const Index* last = indices + offsets[j + 1];
-      const Index* at = std::lower_bound(first, last, i);
-      symmetric = symmetric && at != last && *at == i;
-      mirror[static_cast<std::size_t>(e)] = static_cast<std::uint32_t>(at - first);
+      const Index position = next[static_cast<std::size_t>(j)]++;
+      if (offsets[j] + position >= offsets[j + 1] || indices[offsets[j] + position] != i)
+        throw Error("buildPairTable: the neighbour lists are not symmetric");
+      mirror[static_cast<std::size_t>(e)] = static_cast<std::uint32_t>(position);
     }
   }
-  if (!symmetric) throw Error("buildPairTable: the neighbour lists are not symmetric");
 }
 
 template <int D, class K>
@@ -81,7 +79,7 @@ void buildPairTable(const Kernel& kernel, const NeighbourList& list, const Real*
                     const PairTableSettings& settings, PairTable& table) {
   const auto entries = list.indices.size();
   if (!table.mirrorValid || table.mirror.size() != entries) {
-    findMirrors(list, count, table.mirror);
+    findMirrors(list, count, table.mirrorScratch, table.mirror);
     table.mirrorValid = true;
   }
   table.inside.resize(entries);

@@ -10,8 +10,8 @@
 // The passes form x_i - x_j from the same positions, so F_ij (x_i - x_j) is what Kernel::gradient
 // computes. All three are symmetric in i, j: each is evaluated once per unordered pair, by the row of
 // the smaller index, and stored in both entries through the mirror index (the position of i in row
-// j, found once per list rebuild). Each entry is written by exactly one row, with the same value on
-// any number of threads. The kernel is evaluated through its inline profile
+// j, found once per list rebuild in one serial pass). Each entry is written by exactly one row, with
+// the same value on any number of threads. The kernel is evaluated through its inline profile
 // (kernels/KernelProfiles.hpp), with the same expressions as the virtual kernel. The storage is
 // reused between evaluations (13 to 29 bytes per listed pair).
 
@@ -31,6 +31,7 @@ struct PairTable {
   std::vector<Real> stressWeight;     // f_ij^n; empty without the artificial stress
   std::vector<std::uint32_t> mirror;  // position of i in row j, for the entry (i, j)
   bool mirrorValid = false;           // false: the lists were rebuilt since the mirror was found
+  std::vector<Index> mirrorScratch;   // per row, while the mirror is found
 
   bool used(Index e) const { return inside[static_cast<std::size_t>(e)] != 0; }
 };
