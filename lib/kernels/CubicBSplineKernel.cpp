@@ -1,5 +1,7 @@
 #include "kernels/CubicBSplineKernel.hpp"
 
+#include "kernels/KernelProfiles.hpp"
+
 #include <array>
 #include <cmath>
 
@@ -14,24 +16,10 @@ constexpr std::array<Real, 3> kSigma = {2.0, 60.0 / (7.0 * kPi), 12.0 / kPi};
 CubicBSplineKernel::CubicBSplineKernel(int dimension, Real supportRadius)
     : Kernel(dimension, supportRadius, 1.0, kSigma, "support_radius") {}
 
-Real CubicBSplineKernel::shape(Real z) const {
-  if (z < 0.5) return 2.0 / 3.0 + z * z * (-4.0 + 4.0 * z);
-  if (z < 1.0) {
-    const Real t = 1.0 - z;
-    return 4.0 / 3.0 * t * t * t;
-  }
-  return 0.0;
-}
+Real CubicBSplineKernel::shape(Real z) const { return CubicBSplineProfile{}.shape(z); }
 
 // phi' = -8 z + 12 z^2 (z <= 1/2), -4 (1 - z)^2; phi'' = -8 + 24 z, 8 (1 - z).
-Real CubicBSplineKernel::slopeOverQ(Real z) const {
-  if (z < 0.5) return -8.0 + 12.0 * z;
-  if (z < 1.0) {
-    const Real t = 1.0 - z;
-    return -4.0 * t * t / z;
-  }
-  return 0.0;
-}
+Real CubicBSplineKernel::slopeOverQ(Real z) const { return CubicBSplineProfile{}.slopeOverQ(z); }
 
 Kernel::Curvature CubicBSplineKernel::curvature(Real z) const {
   if (z < 0.5) return {-8.0 + 12.0 * z, -8.0 + 24.0 * z};

@@ -1,5 +1,7 @@
 #include "kernels/CubicSplineKernel.hpp"
 
+#include "kernels/KernelProfiles.hpp"
+
 #include <array>
 #include <cmath>
 
@@ -14,23 +16,9 @@ CubicSplineKernel::CubicSplineKernel(int dimension, Real h)
     : Kernel(dimension, h, 2.0, kSigma, "smoothing_length") {}
 
 // f = 1 - 3/2 q^2 + 3/4 q^3 (q <= 1), 1/4 (2 - q)^3 (1 < q <= 2).
-Real CubicSplineKernel::shape(Real q) const {
-  if (q < 1.0) return 1.0 + q * q * (-1.5 + 0.75 * q);
-  if (q < 2.0) {
-    const Real t = 2.0 - q;
-    return 0.25 * t * t * t;
-  }
-  return 0.0;
-}
+Real CubicSplineKernel::shape(Real q) const { return CubicSplineProfile{}.shape(q); }
 
-Real CubicSplineKernel::slopeOverQ(Real q) const {
-  if (q < 1.0) return -3.0 + 2.25 * q;
-  if (q < 2.0) {
-    const Real t = 2.0 - q;
-    return -0.75 * t * t / q;
-  }
-  return 0.0;
-}
+Real CubicSplineKernel::slopeOverQ(Real q) const { return CubicSplineProfile{}.slopeOverQ(q); }
 
 Kernel::Curvature CubicSplineKernel::curvature(Real q) const {
   if (q < 1.0) return {-3.0 + 2.25 * q, -3.0 + 4.5 * q};

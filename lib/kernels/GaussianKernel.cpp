@@ -1,5 +1,7 @@
 #include "kernels/GaussianKernel.hpp"
 
+#include "kernels/KernelProfiles.hpp"
+
 #include <array>
 #include <cmath>
 
@@ -30,10 +32,10 @@ std::array<Real, 3> gaussianSigma() {
 
 GaussianKernel::GaussianKernel(int dimension, Real h) : Kernel(dimension, h, kCut, gaussianSigma(), "smoothing_length") {}
 
-Real GaussianKernel::shape(Real q) const { return q < kCut ? std::exp(-q * q) : 0.0; }
+Real GaussianKernel::shape(Real q) const { return GaussianProfile{}.shape(q); }
 
 // f' = -2 q e^{-q^2}; f'' = (4 q^2 - 2) e^{-q^2}.
-Real GaussianKernel::slopeOverQ(Real q) const { return q < kCut ? -2.0 * std::exp(-q * q) : 0.0; }
+Real GaussianKernel::slopeOverQ(Real q) const { return GaussianProfile{}.slopeOverQ(q); }
 
 Kernel::Curvature GaussianKernel::curvature(Real q) const {
   if (q >= kCut) return {0.0, 0.0};

@@ -39,6 +39,11 @@ class Kernel {
   Real supportFactor() const { return kappa_; }
   // sigma_d: makes W integrate to 1 over R^d.
   Real normalisation() const { return sigma_; }
+  // 1 / h, sigma / h^d (W = this * f) and sigma / h^{d+2} (grad W = this * (f'/q) r): what
+  // InlineKernel (KernelProfiles.hpp) needs to evaluate W exactly as value() and gradient() do.
+  Real inverseSmoothingLength() const { return invH_; }
+  Real valueScale() const { return valueScale_; }
+  Real derivativeScale() const { return derivativeScale_; }
 
   // Dimensionless profile. All are zero for q >= supportFactor().
   virtual Real shape(Real q) const = 0;            // f(q)

@@ -1,5 +1,7 @@
 #include "kernels/WendlandC2Kernel.hpp"
 
+#include "kernels/KernelProfiles.hpp"
+
 #include <array>
 #include <cmath>
 
@@ -17,19 +19,9 @@ WendlandC2Kernel::WendlandC2Kernel(int dimension, Real h)
 // With s = 1 - q/2:
 //   1-D:    f = s^3 (3/2 q + 1),  f'/q = -3 s^2,  f'' = 3/2 s (3 q - 2)
 //   2-/3-D: f = s^4 (2 q + 1),    f'/q = -5 s^3,  f'' = 5 s^2 (2 q - 1)
-Real WendlandC2Kernel::shape(Real q) const {
-  if (q >= 2.0) return 0.0;
-  const Real s = 1.0 - 0.5 * q;
-  if (oneD_) return s * s * s * (1.5 * q + 1.0);
-  return (s * s) * (s * s) * (2.0 * q + 1.0);
-}
+Real WendlandC2Kernel::shape(Real q) const { return WendlandC2Profile{oneD_}.shape(q); }
 
-Real WendlandC2Kernel::slopeOverQ(Real q) const {
-  if (q >= 2.0) return 0.0;
-  const Real s = 1.0 - 0.5 * q;
-  if (oneD_) return -3.0 * s * s;
-  return -5.0 * s * s * s;
-}
+Real WendlandC2Kernel::slopeOverQ(Real q) const { return WendlandC2Profile{oneD_}.slopeOverQ(q); }
 
 Kernel::Curvature WendlandC2Kernel::curvature(Real q) const {
   if (q >= 2.0) return {0.0, 0.0};

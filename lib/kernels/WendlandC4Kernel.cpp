@@ -1,5 +1,7 @@
 #include "kernels/WendlandC4Kernel.hpp"
 
+#include "kernels/KernelProfiles.hpp"
+
 #include <array>
 #include <cmath>
 
@@ -19,21 +21,9 @@ WendlandC4Kernel::WendlandC4Kernel(int dimension, Real h)
 //           f'' = 7/4 s^3 (12 q^2 - 3 q - 2)
 //   2-/3-D: f = s^6 (35/12 q^2 + 3 q + 1),    f'/q = -7/3 s^5 (5 q + 2),
 //           f'' = 7/6 s^4 (35 q^2 - 8 q - 4)
-Real WendlandC4Kernel::shape(Real q) const {
-  if (q >= 2.0) return 0.0;
-  const Real s = 1.0 - 0.5 * q;
-  const Real s2 = s * s;
-  if (oneD_) return s2 * s2 * s * ((2.0 * q + 2.5) * q + 1.0);
-  return s2 * s2 * s2 * ((35.0 / 12.0 * q + 3.0) * q + 1.0);
-}
+Real WendlandC4Kernel::shape(Real q) const { return WendlandC4Profile{oneD_}.shape(q); }
 
-Real WendlandC4Kernel::slopeOverQ(Real q) const {
-  if (q >= 2.0) return 0.0;
-  const Real s = 1.0 - 0.5 * q;
-  const Real s2 = s * s;
-  if (oneD_) return -3.5 * s2 * s2 * (2.0 * q + 1.0);
-  return -7.0 / 3.0 * s2 * s2 * s * (5.0 * q + 2.0);
-}
+Real WendlandC4Kernel::slopeOverQ(Real q) const { return WendlandC4Profile{oneD_}.slopeOverQ(q); }
 
 Kernel::Curvature WendlandC4Kernel::curvature(Real q) const {
   if (q >= 2.0) return {0.0, 0.0};

@@ -1,6 +1,8 @@
 #pragma once
 // The force pass: everything the momentum rate dp/dt = (dv/dt, de/dt, ledger) needs, in one pass
-// over the pairs. With A_i = sigma_i / rho_i^2 (sigma = s - p I, Li eq. 28), P_i = p_i / rho_i^2,
+// over the pairs of the view's pair table (grad W and W from there, not from the kernel). The
+// per-pair terms are in ForceTerms.hpp; rhs sums them in the same sweep as the velocity gradient
+// (FusedPass.hpp). With A_i = sigma_i / rho_i^2 (sigma = s - p I, Li eq. 28), P_i = p_i / rho_i^2,
 // v_ij = v_i - v_j and the pair tensor M_ij = A_i + A_j - Pi_ij I + f_ij^n (R_i + R_j):
 //   dv_i/dt = sum_j m_j M_ij grad_i W_ij (+ body force and loads, added by the caller)   Li eq. (30)
 //   de_i/dt = -(s_i / rho_i^2) : sum_j m_j v_ij grad_i W_ij^T
@@ -30,11 +32,10 @@ namespace mfwave {
 template <int D>
 struct ForceInputs {
   const Mat<D>* stressOverRho2 = nullptr;  // A_i = sigma_i / rho_i^2
+  const Mat<D>* correctedStressOverRho2 = nullptr;  // A_i C_i with the correction (view.correction); else null
   const Real* pressureOverRho2 = nullptr;  // P_i = p_i / rho_i^2
   const Real* soundSpeed = nullptr;        // c_i of eq. (21), for Pi_ij
-  const Mat<D>* artificialStress = nullptr;  // R_i; null when the artificial stress is off
-  Real inverseReferenceKernel = 0;         // 1 / W(dp)
-  Real artificialStressExponent = 4;       // n
+  const Mat<D>* artificialStress = nullptr;  // R_i; null when the artificial stress is off (f_ij^n: the pair table)
   ArtificialViscosity viscosity;
 };
 

@@ -11,8 +11,8 @@ namespace mfwave {
 template <int D>
 void kernelGradientCorrection(const ParticleView<D>& view, Mat<D>* correction) {
   const Index n = view.count;
-  const Kernel& kernel = *view.kernel;
-  const Real support2 = kernel.supportRadius() * kernel.supportRadius();
+  const PairTable& pairs = *view.pairs;
+  const NeighbourList& list = *view.neighbours;
   // A full support gives M = I, a flat free surface about diag(1, 1/2), a 3-D corner about I / 2.
   // A particle that has lost most of its neighbours (a fragment, a line of particles) has a near
   // singular M, and its inverse would amplify noise: it keeps C = I when an entry of M^{-1} would
@@ -20,13 +20,15 @@ void kernelGradientCorrection(const ParticleView<D>& view, Mat<D>* correction) {
   constexpr Real largestCorrection = 10;
 #pragma omp parallel for if (n > kParallelParticles) schedule(static)
   for (Index i = 0; i < n; ++i) {
-    const Vec<D> xi = view.position(i);
     Mat<D> moment = Mat<D>::Zero();
-    for (Index j : view.neighbours->row(i)) {
-      if (j == i) continue;
+    const Vec<D> xi = view.position(i);
+    const Index last = list.offsets[static_cast<std::size_t>(i) + 1];
+    for (Index k = list.offsets[static_cast<std::size_t>(i)]; k < last; ++k) {
+      if (!pairs.used(k)) continue;  // i itself, or listed through the skin but outside the support
+      const Index j = list.indices[static_cast<std::size_t>(k)];
       const Vec<D> r = xi - view.position(j);
-      if (r.squaredNorm() >= support2) continue;
-      moment.noalias() -= (view.m[j] / view.rho[j]) * r * kernel.gradient(r).transpose();
+      const Vec<D> gradW = pairs.gradientFactor[static_cast<std::size_t>(k)] * r;
+      moment.noalias() -= view.volume[j] * r * gradW.transpose();
     }
     const Real determinant = moment.determinant();
     correction[i] = Mat<D>::Identity();

@@ -14,7 +14,7 @@
 
 namespace mfwave {
 
-// Fills correction[i] = C_i for every particle of the view.
+// Fills correction[i] = C_i for every particle of the view, from its pair table.
 template <int D>
 void kernelGradientCorrection(const ParticleView<D>& view, Mat<D>* correction);
 

@@ -1,7 +1,9 @@
 #pragma once
 // The velocity-gradient pass: everything the configuration rate dq/dt = (dx/dt, drho/dt, ds/dt)
 // needs, from positions, velocities, densities and stresses only (no pressures, no forces), so the
-// leapfrog's drift costs one pass over the pairs.
+// leapfrog's drift costs one pass over the pairs (those of the view's pair table, which holds grad W
+// and W). The per-pair terms are in KinematicsTerms.hpp; rhs sums them in the same sweep as the
+// forces (FusedPass.hpp).
 //   L_i = sum_j V_j (v_j - v_i) grad_i W_ij^T, V_j = m_j / rho_j     Li eq. (22), L_ab = dv_a/dx_b
 //   ds_i/dt = 2G dev(eps'_i) + Omega_i s_i - s_i Omega_i              Li eq. (24)-(26)
 //   drho_i/dt = sum_j m_j (v_i - v_j) . grad_i W_ij                   Li eq. (18), continuity only

@@ -1,11 +1,14 @@
 #pragma once
 // A read-only view of the per-particle fields one evaluation works on: positions, velocities and
 // deviatoric stresses straight from the state vector y (particle-major), the current densities
-// (from y, or the summation densities of this evaluation) and the masses. The pair passes take
-// this instead of the system, so each pass is a plain function of its inputs.
+// (from y, or the summation densities of this evaluation), the masses and, for the rate passes,
+// the pair table of this evaluation (PairTable.hpp: the pairs inside the support with grad W and W,
+// computed once and read by every pass). The pair passes take this instead of the system, so each
+// pass is a plain function of its inputs.
 
 #include "core/Types.hpp"
 #include "kernels/Kernel.hpp"
+#include "methods/updated_lagrangian_sph/PairTable.hpp"
 #include "neighbours/NeighbourList.hpp"
 
 namespace mfwave {
@@ -22,6 +25,10 @@ struct ParticleView {
   const Real* s = nullptr;    // count * stressComponents, Voigt order
   const Real* rho = nullptr;  // count densities
   const Real* m = nullptr;    // count masses
+  // The pairs inside the support with their kernel terms; set by the system for the rate passes.
+  const PairTable* pairs = nullptr;
+  // V_j = m_j / rho_j of this evaluation; set by the system for the rate passes.
+  const Real* volume = nullptr;
   // The kernel-gradient correction C_i per particle (KernelGradientCorrection.hpp); null: none.
   const Mat<D>* correction = nullptr;
 

@@ -1,6 +1,10 @@
-// The system: owns the kernel, the skinned neighbour lists, the constraints and the scratch arrays,
-// and turns one state y into its rate by the two pair passes (KinematicsPass, ForcePass). The
-// equations are in those files and in docs/theory/updated-lagrangian-sph.md.
+// The system: owns the kernel, the skinned neighbour lists, the pair table, the constraints and the
+// scratch arrays, and turns one state y into its rate. Per evaluation: refresh the lists, sum the
+// densities (summation density), tabulate each pair's kernel gradient and value once (PairTable),
+// the kernel-gradient corrections when asked for (a pass over the table), then the rate passes:
+// configurationRate runs KinematicsPass, momentumRate ForcePass, and rhs, where both parts are
+// taken at one state, the two in one sweep (FusedPass). The equations are in those files and in
+// docs/theory/updated-lagrangian-sph.md.
 
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
 
@@ -10,10 +14,12 @@
 #include "methods/updated_lagrangian_sph/Diagnostics.hpp"
 #include "methods/updated_lagrangian_sph/EquationOfState.hpp"
 #include "methods/updated_lagrangian_sph/ForcePass.hpp"
+#include "methods/updated_lagrangian_sph/FusedPass.hpp"
 #include "methods/updated_lagrangian_sph/HistoryRate.hpp"
 #include "methods/updated_lagrangian_sph/KernelGradientCorrection.hpp"
 #include "methods/updated_lagrangian_sph/KinematicsPass.hpp"
 #include "methods/updated_lagrangian_sph/OptionsValidation.hpp"
+#include "methods/updated_lagrangian_sph/PairTable.hpp"
 #include "methods/updated_lagrangian_sph/ParallelThreshold.hpp"
 #include "methods/updated_lagrangian_sph/SkinnedNeighbours.hpp"
 #include "methods/updated_lagrangian_sph/StressVoigt.hpp"
@@ -93,8 +99,10 @@ struct UpdatedLagrangianSph<D>::Impl {
     prescribedGroup.assign(static_cast<std::size_t>(n), -1);
     const auto count = static_cast<std::size_t>(n);
     summedDensity.resize(count);
+    volume.resize(count);
     correction.resize(owner.options_.kernelGradientCorrection ? count : 0);
     stressOverRho2.resize(count);
+    correctedStressOverRho2.resize(owner.options_.kernelGradientCorrection ? count : 0);
     artificialStress.resize(owner.options_.artificialStress.enabled ? count : 0);
     pressureOverRho2.resize(count);
     soundSpeed.resize(count);
@@ -111,7 +119,7 @@ struct UpdatedLagrangianSph<D>::Impl {
 
   // The view of y with neighbour lists made valid for its positions and current densities.
   ParticleView<D> view(const Real* y) {
-    neighbours.refresh(y + system.layout_.positionOffset(), system.layout_.particles);
+    if (neighbours.refresh(y + system.layout_.positionOffset(), system.layout_.particles)) pairs.mirrorValid = false;
     ParticleView<D> v = constView(y);
     if (system.options_.density == DensityUpdate::Summation) {
       summationDensity(v, summedDensity.data());  // Li eq. (17); the state's rho entries are not used
@@ -120,11 +128,23 @@ struct UpdatedLagrangianSph<D>::Impl {
     return v;
   }
 
-  // view(y) with the kernel-gradient corrections of this evaluation when the options ask for
-  // them: what the rate passes use (the diagnostics do not need the extra pair pass).
+  // view(y) with the pair table of this evaluation (the XSPH and artificial-stress weights only
+  // when those are on) and the kernel-gradient corrections when the options ask for them: what the rate
+  // passes use (the diagnostics do not need them).
   ParticleView<D> rateView(const Real* y) {
     ParticleView<D> v = view(y);
-    if (system.options_.kernelGradientCorrection) {
+    const UpdatedLagrangianSphOptions& options = system.options_;
+    PairTableSettings settings;
+    settings.rho = v.rho;
+    settings.xsph = options.xsph > 0;
+    settings.artificialStress = options.artificialStress.enabled;
+    settings.inverseReferenceKernel = inverseReferenceKernel;
+    settings.artificialStressExponent = options.artificialStress.exponent;
+    buildPairTable<D>(*kernel, neighbours.list(), v.x, v.count, settings, pairs);
+    v.pairs = &pairs;
+    for (Index i = 0; i < v.count; ++i) volume[static_cast<std::size_t>(i)] = v.m[i] / v.rho[i];
+    v.volume = volume.data();
+    if (options.kernelGradientCorrection) {
       kernelGradientCorrection(v, correction.data());
       v.correction = correction.data();
     }
@@ -146,22 +166,48 @@ struct UpdatedLagrangianSph<D>::Impl {
     return v;
   }
 
-  // Current densities for const accessors: from y, or summed over the last lists at y's positions.
-  std::vector<Real> currentDensities(const Real* y) const {
+  // Current densities for const accessors: y's own (continuity), or summed over the last lists at
+  // y's positions into a scratch array (so the pointer is valid until the next call).
+  const Real* currentDensities(const Real* y) const {
     ParticleView<D> v = constView(y);
-    std::vector<Real> result(v.rho, v.rho + v.count);
-    if (system.options_.density == DensityUpdate::Summation) summationDensity(v, result.data());
-    return result;
+    if (system.options_.density != DensityUpdate::Summation) return v.rho;
+    densityScratch.resize(static_cast<std::size_t>(v.count));
+    summationDensity(v, densityScratch.data());
+    return densityScratch.data();
   }
 
-  void configurationRate(Real t, const ParticleView<D>& v, Real* qdot) const {
-    const auto& layout = system.layout_;
+  KinematicsSettings kinematicsSettings() const {
     const UpdatedLagrangianSphOptions& options = system.options_;
     KinematicsSettings settings;
     settings.shearModulus = options.material.mu();
     settings.xsph = options.xsph;
     settings.continuity = options.density == DensityUpdate::Continuity;
-    kinematicsRates(v, settings, layout, qdot);
+    return settings;
+  }
+
+  void configurationRate(Real t, const ParticleView<D>& v, Real* qdot) const {
+    kinematicsRates(v, kinematicsSettings(), system.layout_, qdot);
+    finishConfigurationRate(t, v, qdot);
+  }
+
+  // pdot points at the momentum part (layout.velocityOffset() is its entry 0).
+  void momentumRate(Real t, const ParticleView<D>& v, const Real* y, Real* pdot) {
+    prepareStresses(v, y + system.layout_.energyOffset());
+    forceRates(v, forceInputs(), forceOutputs());
+    finishMomentumRate(t, v, pdot);
+  }
+
+  // Both parts at one state, the two pair passes in one sweep (FusedPass.hpp).
+  void rate(Real t, const ParticleView<D>& v, const Real* y, Real* ydot) {
+    prepareStresses(v, y + system.layout_.energyOffset());
+    fusedRates(v, kinematicsSettings(), system.layout_, ydot, forceInputs(), forceOutputs());
+    finishConfigurationRate(t, v, ydot);
+    finishMomentumRate(t, v, ydot + system.layout_.configurationSize());
+  }
+
+  // The constraints on the configuration rate and the finiteness check.
+  void finishConfigurationRate(Real t, const ParticleView<D>& v, Real* qdot) const {
+    const auto& layout = system.layout_;
     constexpr int S = Layout::stressComponents;
     for (Index i = 0; i < layout.particles; ++i) {
       const Constraint kind = constraint[static_cast<std::size_t>(i)];
@@ -174,28 +220,34 @@ struct UpdatedLagrangianSph<D>::Impl {
     }
   }
 
-  // pdot points at the momentum part (layout.velocityOffset() is its entry 0).
-  void momentumRate(Real t, const ParticleView<D>& v, const Real* y, Real* pdot) {
-    const auto& layout = system.layout_;
+  ForceInputs<D> forceInputs() const {
     const UpdatedLagrangianSphOptions& options = system.options_;
-    const Index n = layout.particles;
-    const Index base = layout.velocityOffset();
-    prepareStresses(v, y + layout.energyOffset());
     ForceInputs<D> inputs;
     inputs.stressOverRho2 = stressOverRho2.data();
+    inputs.correctedStressOverRho2 = options.kernelGradientCorrection ? correctedStressOverRho2.data() : nullptr;
     inputs.pressureOverRho2 = pressureOverRho2.data();
     inputs.soundSpeed = soundSpeed.data();
     inputs.artificialStress = options.artificialStress.enabled ? artificialStress.data() : nullptr;
-    inputs.inverseReferenceKernel = inverseReferenceKernel;
-    inputs.artificialStressExponent = options.artificialStress.exponent;
     inputs.viscosity = viscosity;
+    return inputs;
+  }
+
+  ForceOutputs<D> forceOutputs() {
     ForceOutputs<D> outputs;
     outputs.acceleration = pairAcceleration.data();
     outputs.energyRate = energyRate.data();
     outputs.viscousPower = viscousPower.data();
     outputs.artificialStressPower = artificialStressPower.data();
     outputs.largestMu = largestMu.data();
-    forceRates(v, inputs, outputs);
+    return outputs;
+  }
+
+  // The accelerations and energy rates from the force pass's pair sums, with loads, body force and
+  // constraints, the finiteness check and the ledger rates. pdot as in momentumRate.
+  void finishMomentumRate(Real t, const ParticleView<D>& v, Real* pdot) {
+    const auto& layout = system.layout_;
+    const Index n = layout.particles;
+    const Index base = layout.velocityOffset();
 
     // Loads: tractions (force traction * history * area) and the body force g.
     std::fill(load.begin(), load.end(), Vec<D>::Zero());
@@ -203,7 +255,7 @@ struct UpdatedLagrangianSph<D>::Impl {
       const Vec<D> force = group.traction * (group.history(t) * group.area);
       for (Index i : group.particles) load[static_cast<std::size_t>(i)] += force;
     }
-    std::vector<Real> historyRates(prescribed.size());
+    historyRates.resize(prescribed.size());
     for (std::size_t g = 0; g < prescribed.size(); ++g) historyRates[g] = historyRate(prescribed[g].history, t);
 
     for (Index i = 0; i < n; ++i) {
@@ -242,10 +294,12 @@ struct UpdatedLagrangianSph<D>::Impl {
   }
 
   // Per particle: p (eq. 20), c (eq. 21), sigma / rho^2 with sigma = s - p I (eq. 28), p / rho^2,
-  // and the artificial stress R_i.
+  // the artificial stress R_i and, with the correction, (sigma / rho^2) C_i. They depend on the
+  // state only (and on C_i of this evaluation), not on any rate.
   void prepareStresses(const ParticleView<D>& v, const Real* e) {
     constexpr int S = Layout::stressComponents;
     const Index n = v.count;
+    const bool corrected = v.correction != nullptr;
     const bool withArtificialStress = system.options_.artificialStress.enabled;
     const Real epsilon = system.options_.artificialStress.epsilon;
 #pragma omp parallel for if (n > kParallelParticles) schedule(static)
@@ -260,12 +314,14 @@ struct UpdatedLagrangianSph<D>::Impl {
       pressureOverRho2[k] = p * inverseRho2;
       soundSpeed[k] = eos.soundSpeed(rho, e[i]);
       if (withArtificialStress) artificialStress[k] = artificialStressTensor<D>(sigma, rho, epsilon);
+      if (corrected) correctedStressOverRho2[k] = stressOverRho2[k] * v.correction[i];
     }
   }
 
   const UpdatedLagrangianSph& system;
   std::unique_ptr<Kernel> kernel;
   SkinnedNeighbours<D> neighbours;
+  PairTable pairs;  // the pairs inside the support and their kernel terms, of the last rate evaluation
   Real spacing;
   Vector initialPositions;  // N D, particle-major
   StiffenedGasEos eos;
@@ -280,8 +336,10 @@ struct UpdatedLagrangianSph<D>::Impl {
 
   // Scratch of one evaluation.
   std::vector<Real> summedDensity;  // summation densities of the last evaluation
+  std::vector<Real> volume;         // m_i / rho_i of the last rate evaluation
   std::vector<Mat<D>> correction;   // kernel-gradient corrections C_i of the last evaluation
   std::vector<Mat<D>> stressOverRho2;
+  std::vector<Mat<D>> correctedStressOverRho2;  // A_i C_i, with the correction only
   std::vector<Mat<D>> artificialStress;
   std::vector<Real> pressureOverRho2;
   std::vector<Real> soundSpeed;
@@ -291,6 +349,8 @@ struct UpdatedLagrangianSph<D>::Impl {
   std::vector<Real> artificialStressPower;
   std::vector<Real> loadPower;
   std::vector<Vec<D>> load;  // traction force per particle
+  std::vector<Real> historyRates;  // per prescribed group
+  mutable std::vector<Real> densityScratch;  // currentDensities' summation densities
   // Kept from the last momentum evaluation for stableStep.
   std::vector<Real> largestMu;
   std::vector<Real> accelerationNorm;
@@ -405,10 +465,10 @@ void UpdatedLagrangianSph<D>::momentumRate(Real t, Eigen::Ref<const Vector> y, E
 
 template <int D>
 void UpdatedLagrangianSph<D>::rhs(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) {
-  // One neighbour refresh and one density summation for both parts.
+  // One neighbour refresh, density summation, pair table and correction for both parts, and one
+  // sweep over the pairs.
   const ParticleView<D> view = impl_->rateView(y.data());
-  impl_->configurationRate(t, view, ydot.data());
-  impl_->momentumRate(t, view, y.data(), ydot.data() + configurationSize());
+  impl_->rate(t, view, y.data(), ydot.data());
 }
 
 template <int D>
@@ -429,6 +489,7 @@ void UpdatedLagrangianSph<D>::restoreState(const StateArchive& archive) {
     throw InputError("--restart", "the checkpoint's updated-Lagrangian SPH has " + std::to_string(largestMu.size()) +
                                       " particles, this run " + std::to_string(n));
   impl_->neighbours.restoreState(archive.section("skin"));
+  impl_->pairs.mirrorValid = false;
   if (impl_->neighbours.list().rowCount() != layout_.particles)
     throw InputError("--restart", "the checkpoint's neighbour lists are not of this run's particles");
   impl_->largestMu = largestMu;
@@ -441,7 +502,7 @@ Real UpdatedLagrangianSph<D>::stableStep(const Vector& y) const {
   if (!impl_->haveForces)
     throw Error("UpdatedLagrangianSph::stableStep: no momentum evaluation yet, so no viscous or force criterion; "
                 "call evaluateStepCriteria(t, y) first");
-  const std::vector<Real> rho = impl_->currentDensities(y.data());
+  const Real* rho = impl_->currentDensities(y.data());
   const Real h = smoothingLength();
   const Real alpha = options_.viscosity.alpha;
   const Real beta = options_.viscosity.beta;
@@ -472,9 +533,8 @@ Real UpdatedLagrangianSph<D>::evaluateStepCriteria(Real t, const Vector& y) {
 
 template <int D>
 UpdatedLagrangianSphEnergy UpdatedLagrangianSph<D>::energy(const Vector& y) const {
-  const std::vector<Real> rho = impl_->currentDensities(y.data());
   ParticleView<D> view = impl_->constView(y.data());
-  view.rho = rho.data();
+  view.rho = impl_->currentDensities(y.data());
   UpdatedLagrangianSphEnergy result =
       stateEnergy(view, y.data() + layout_.energyOffset(), impl_->eos, options_.material.mu());
   result.loadWork = y[layout_.ledger(Layout::LoadWork)];

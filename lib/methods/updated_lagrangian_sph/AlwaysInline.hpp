@@ -1,0 +1,10 @@
+#pragma once
+// MFWAVE_ALWAYS_INLINE: asks the compiler to inline a per-pair function into its pair loop (GCC
+// and Clang otherwise may keep a large member such as ForceRow::add out of line, and the call with
+// its arguments through memory then costs as much as the arithmetic).
+
+#if defined(__GNUC__) || defined(__clang__)
+#define MFWAVE_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define MFWAVE_ALWAYS_INLINE inline
+#endif
