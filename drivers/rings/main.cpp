@@ -107,11 +107,11 @@ Plan readPlan(SceneReader& reader) {
     reader.fail("geometry.spacing", "leaves fewer than 2 particles across the ring wall (" +
                                         scene::formatNumber(study.outerRadius - study.innerRadius) + " m)");
   {
-    // Two rings of pi (R^2 - r^2) / dp^2 particles; the UL-SPH in 2-D: 1.4 KiB per particle measured, doubled.
+    // Two rings of pi (R^2 - r^2) / dp^2 particles; the UL-SPH in 2-D: 2.0 KiB per particle, with a margin.
     const Real area = 3.14159265358979 * (study.outerRadius * study.outerRadius - study.innerRadius * study.innerRadius);
     const std::string why =
         memoryRefusal("rings at dp = " + scene::formatNumber(scene.geometry.spacing),
-                      {2 * area / (scene.geometry.spacing * scene.geometry.spacing), 3072, "the UL-SPH in 2-D, 1.4 KiB measured"});
+                      {2 * area / (scene.geometry.spacing * scene.geometry.spacing), 3072, "the UL-SPH in 2-D, 2.0 KiB: 1.4 KiB measured and its pair table"});
     if (!why.empty()) reader.fail("geometry.spacing", why);
   }
   study.gap = reader.number("study.gap");

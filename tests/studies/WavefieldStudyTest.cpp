@@ -180,7 +180,7 @@ TEST(WavefieldStudy, ResolutionsAndRunsBeyondAnyMachineAreRefusedNamingTheKey) {
        "study.spacings: case galerkin_0.01 (dx = 0.01) needs about 2628 GiB"},
       // The other methods' measured costs per particle (io/run/MemoryGuard).
       {LAMB3D_EXECUTABLE, "--scene " + scenes + "lamb3d.toml --set method.name=updated_lagrangian_sph --set 'study.spacings=[0.5, 0.02]'",
-       "study.spacings: case ulsph_0.02 (dx = 0.02) needs about 206 GiB (43243551 particles at about 5120 bytes each"},
+       "study.spacings: case ulsph_0.02 (dx = 0.02) needs about 330 GiB (43243551 particles at about 8192 bytes each"},
       {PLANE2D_EXECUTABLE, "--scene " + scenes + "plane2d.toml --set 'study.cells=[1500]'",
        "study.cells: 1500 cells per side needs about 68.8 GiB (2253001 particles at about 32768 bytes each"},
   };
