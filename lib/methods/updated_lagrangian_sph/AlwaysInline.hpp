@@ -3,8 +3,13 @@
 // and Clang otherwise may keep a large member such as ForceRow::add out of line, and the call with
 // its arguments through memory then costs as much as the arithmetic).
 
+// MFWAVE_INLINE_LAMBDA: the same for a lambda handed to a pair loop (ParticleView::forEachPair),
+// written after its parameter list.
+
 #if defined(__GNUC__) || defined(__clang__)
 #define MFWAVE_ALWAYS_INLINE inline __attribute__((always_inline))
+#define MFWAVE_INLINE_LAMBDA __attribute__((always_inline))
 #else
 #define MFWAVE_ALWAYS_INLINE inline
+#define MFWAVE_INLINE_LAMBDA
 #endif

@@ -9,23 +9,16 @@ template <int D>
 void forceRates(const ParticleView<D>& view, const ForceInputs<D>& inputs, const ForceOutputs<D>& outputs) {
   const Index n = view.count;
   const PairTable& pairs = *view.pairs;
-  const NeighbourList& list = *view.neighbours;
   const bool artificialStress = inputs.artificialStress != nullptr;
   // Gather form: row i only writes particle i's outputs, so the result does not depend on threads.
 #pragma omp parallel for if (n > kParallelParticles) schedule(static)
   for (Index i = 0; i < n; ++i) {
     const Vec<D> vi = view.velocity(i);
     ForceRow<D> row(view, inputs, i);
-    const Vec<D> xi = view.position(i);
-    const Index last = list.offsets[static_cast<std::size_t>(i) + 1];
-    for (Index k = list.offsets[static_cast<std::size_t>(i)]; k < last; ++k) {
-      if (!pairs.used(k)) continue;  // i itself, or listed through the skin but outside the support
-      const Index j = list.indices[static_cast<std::size_t>(k)];
-      const Vec<D> r = xi - view.position(j);
-      const Vec<D> gradW = pairs.gradientFactor[static_cast<std::size_t>(k)] * r;
+    view.forEachPair(i, [&](Index k, Index j, const Vec<D>& r, const Vec<D>& gradW) MFWAVE_INLINE_LAMBDA {
       const Real stressWeight = artificialStress ? pairs.stressWeight[static_cast<std::size_t>(k)] : 0.0;
       row.add(j, r, Vec<D>(vi - view.velocity(j)), gradW, view.correctedGradient(i, gradW), stressWeight);
-    }
+    });
     row.write(outputs);
   }
 }

@@ -12,7 +12,6 @@ void fusedRates(const ParticleView<D>& view, const KinematicsSettings& settings,
                 const ForceOutputs<D>& outputs) {
   const Index n = view.count;
   const PairTable& pairs = *view.pairs;
-  const NeighbourList& list = *view.neighbours;
   const bool xsph = settings.xsph > 0;
   const bool artificialStress = inputs.artificialStress != nullptr;
   // Gather form: row i only writes particle i's rates, so the result does not depend on threads.
@@ -21,20 +20,14 @@ void fusedRates(const ParticleView<D>& view, const KinematicsSettings& settings,
     const Vec<D> vi = view.velocity(i);
     KinematicsRow<D> kinematics;
     ForceRow<D> force(view, inputs, i);
-    const Vec<D> xi = view.position(i);
-    const Index last = list.offsets[static_cast<std::size_t>(i) + 1];
-    for (Index k = list.offsets[static_cast<std::size_t>(i)]; k < last; ++k) {
-      if (!pairs.used(k)) continue;  // i itself, or listed through the skin but outside the support
-      const Index j = list.indices[static_cast<std::size_t>(k)];
-      const Vec<D> r = xi - view.position(j);
-      const Vec<D> gradW = pairs.gradientFactor[static_cast<std::size_t>(k)] * r;
+    view.forEachPair(i, [&](Index k, Index j, const Vec<D>& r, const Vec<D>& gradW) MFWAVE_INLINE_LAMBDA {
       const Vec<D> correctedGradW = view.correctedGradient(i, gradW);
       const Real smoothingWeight = xsph ? pairs.smoothingWeight[static_cast<std::size_t>(k)] : 0.0;
       const Real stressWeight = artificialStress ? pairs.stressWeight[static_cast<std::size_t>(k)] : 0.0;
       const Vec<D> vji = view.velocity(j) - vi;
       kinematics.add(view.m[j], view.volume[j], vji, correctedGradW, smoothingWeight, xsph);
       force.add(j, r, Vec<D>(-vji), gradW, correctedGradW, stressWeight);  // -(v_j - v_i) is v_i - v_j exactly
-    }
+    });
     kinematics.write(view, i, settings, layout, qdot);
     force.write(outputs);
   }

@@ -11,8 +11,6 @@ namespace mfwave {
 template <int D>
 void kernelGradientCorrection(const ParticleView<D>& view, Mat<D>* correction) {
   const Index n = view.count;
-  const PairTable& pairs = *view.pairs;
-  const NeighbourList& list = *view.neighbours;
   // A full support gives M = I, a flat free surface about diag(1, 1/2), a 3-D corner about I / 2.
   // A particle that has lost most of its neighbours (a fragment, a line of particles) has a near
   // singular M, and its inverse would amplify noise: it keeps C = I when an entry of M^{-1} would
@@ -21,15 +19,9 @@ void kernelGradientCorrection(const ParticleView<D>& view, Mat<D>* correction) {
 #pragma omp parallel for if (n > kParallelParticles) schedule(static)
   for (Index i = 0; i < n; ++i) {
     Mat<D> moment = Mat<D>::Zero();
-    const Vec<D> xi = view.position(i);
-    const Index last = list.offsets[static_cast<std::size_t>(i) + 1];
-    for (Index k = list.offsets[static_cast<std::size_t>(i)]; k < last; ++k) {
-      if (!pairs.used(k)) continue;  // i itself, or listed through the skin but outside the support
-      const Index j = list.indices[static_cast<std::size_t>(k)];
-      const Vec<D> r = xi - view.position(j);
-      const Vec<D> gradW = pairs.gradientFactor[static_cast<std::size_t>(k)] * r;
+    view.forEachPair(i, [&](Index, Index j, const Vec<D>& r, const Vec<D>& gradW) MFWAVE_INLINE_LAMBDA {
       moment.noalias() -= view.volume[j] * r * gradW.transpose();
-    }
+    });
     const Real determinant = moment.determinant();
     correction[i] = Mat<D>::Identity();
     if (std::abs(determinant) > 1e-12) {
