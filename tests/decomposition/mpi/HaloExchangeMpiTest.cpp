@@ -1,0 +1,113 @@
+// The halo exchange under mpirun (ctest runs this program on 1, 2, 3 and 4 ranks): every rank
+// fills the nodes it owns with a value that names the node, exchanges, and checks that its whole
+// local box (its block and its halo) then holds each node's own value, in 1-D, 2-D and 3-D, for
+// reaches 1 and 2 and with costly face rows that make the blocks unequal.
+#include "decomposition/mpi/HaloExchange.hpp"
+
+#include "core/Error.hpp"
+
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+using namespace mfwave;
+
+namespace {
+
+int worldRank() {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank;
+}
+
+int worldSize() {
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  return size;
+}
+
+// A value no two (node, component) pairs share.
+template <int D>
+Real nodeValue(const LatticeRowTypes<D>& types, const std::array<Index, D>& node, int component, int components) {
+  Index linear = 0;
+  for (int a = D - 1; a >= 0; --a) linear = linear * types.nodes()[static_cast<std::size_t>(a)] + node[static_cast<std::size_t>(a)];
+  return static_cast<Real>(linear * components + component) + 0.25;
+}
+
+template <int D>
+void expectExchangeFillsTheHalo(const LatticeRowTypes<D>& types, const std::array<Index, D>& reach, int components,
+                                const std::vector<Real>& typeCost = {}) {
+  const BlockDecomposition<D> decomposition(types, worldSize(), typeCost);
+  HaloExchange<D> exchange(HaloPlan<D>(decomposition, worldRank(), reach), components, MPI_COMM_WORLD);
+  const HaloPlan<D>& plan = exchange.plan();
+  std::vector<Real> local(static_cast<std::size_t>(exchange.localSize()), std::numeric_limits<Real>::quiet_NaN());
+  plan.owned().forEachNode([&](const std::array<Index, D>& node) {
+    for (int c = 0; c < components; ++c)
+      local[static_cast<std::size_t>(plan.local().localIndex(node) * components + c)] = nodeValue<D>(types, node, c, components);
+  });
+  exchange.exchange(local.data());
+  Index wrong = 0;
+  plan.local().forEachNode([&](const std::array<Index, D>& node) {
+    for (int c = 0; c < components; ++c)
+      if (local[static_cast<std::size_t>(plan.local().localIndex(node) * components + c)] != nodeValue<D>(types, node, c, components)) ++wrong;
+  });
+  EXPECT_EQ(wrong, 0) << "rank " << worldRank() << " of " << worldSize();
+  // Every node is owned once over all ranks.
+  long owned = static_cast<long>(plan.owned().count()), total = 0;
+  MPI_Allreduce(&owned, &total, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(total, static_cast<long>(types.nodeCount()));
+}
+
+}  // namespace
+
+TEST(HaloExchangeMpiTest, FillsTheHaloWithTheOwnersValuesIn1d2d3d) {
+  expectExchangeFillsTheHalo<1>(LatticeRowTypes<1>({57}, 2), {2}, 1);
+  expectExchangeFillsTheHalo<2>(LatticeRowTypes<2>({31, 23}, 2), {2, 2}, 2);
+  expectExchangeFillsTheHalo<3>(LatticeRowTypes<3>({17, 13, 11}, 1), {1, 1, 1}, 3);
+  expectExchangeFillsTheHalo<3>(LatticeRowTypes<3>({14, 12, 10}, 2), {2, 2, 2}, 3);
+}
+
+TEST(HaloExchangeMpiTest, UnequalBlocksFromCostlyFaceRowsExchangeToo) {
+  const LatticeRowTypes<2> types({40, 30}, 4);
+  std::vector<Real> cost(static_cast<std::size_t>(types.typeCount()), 1.0);
+  for (Index t = 0; t < types.typeCount(); ++t)
+    if (t % types.compactNodes()[0] != types.depth()) cost[static_cast<std::size_t>(t)] = 4.0;
+  expectExchangeFillsTheHalo<2>(types, {2, 2}, 2, cost);
+}
+
+TEST(HaloExchangeMpiTest, RepeatedExchangesWithStartAndFinishApart) {
+  const LatticeRowTypes<3> types({16, 9, 7}, 1);
+  const BlockDecomposition<3> decomposition(types, worldSize());
+  HaloExchange<3> exchange(HaloPlan<3>(decomposition, worldRank(), {1, 1, 1}), 1, MPI_COMM_WORLD, 7);
+  const HaloPlan<3>& plan = exchange.plan();
+  std::vector<Real> local(static_cast<std::size_t>(exchange.localSize()), 0.0);
+  for (int round = 1; round <= 3; ++round) {
+    plan.owned().forEachNode([&](const std::array<Index, 3>& node) {
+      local[static_cast<std::size_t>(plan.local().localIndex(node))] = round * nodeValue<3>(types, node, 0, 1);
+    });
+    exchange.start(local.data());
+    exchange.finish(local.data());
+    plan.local().forEachNode([&](const std::array<Index, 3>& node) {
+      ASSERT_EQ(local[static_cast<std::size_t>(plan.local().localIndex(node))], round * nodeValue<3>(types, node, 0, 1));
+    });
+  }
+  EXPECT_THROW(exchange.finish(local.data()), Error);
+}
+
+// GoogleTest inside MPI: every rank runs the tests; rank 0 prints; the exit code is the worst rank's.
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  if (worldRank() != 0) {
+    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
+    delete listeners.Release(listeners.default_result_printer());
+  }
+  int result = RUN_ALL_TESTS();
+  int worst = 0;
+  MPI_Allreduce(&result, &worst, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Finalize();
+  return worst;
+}
