@@ -14,21 +14,8 @@ namespace {
 // How many nodes of [lo, hi) on `axis` have compact index c.
 template <int D>
 Index nodesWithCompactIndex(const LatticeRowTypes<D>& types, int axis, Index c, Index lo, Index hi) {
-  const auto s = static_cast<std::size_t>(axis);
-  const Index n = types.nodes()[s];
-  const Index m = types.compactNodes()[s];
-  const Index depth = types.depth();
-  Index first = c, last = c + 1;  // the nodes with compact index c: one node, or the interior run
-  if (n != m) {
-    if (c == depth) {
-      first = depth;
-      last = n - depth;
-    } else if (c > depth) {
-      first = c + (n - m);
-      last = first + 1;
-    }
-  }
-  return std::max<Index>(0, std::min(hi, last) - std::max(lo, first));
+  const std::array<Index, 2> run = types.nodesOfCompactIndex(axis, c);
+  return std::max<Index>(0, std::min(hi, run[1]) - std::max(lo, run[0]));
 }
 
 // The cost of the nodes of `box`: every type's cost times how many of its nodes the box holds.
@@ -59,10 +46,8 @@ std::vector<Real> marginalCost(const LatticeRowTypes<D>& types, const std::vecto
   plane.hi = types.nodes();
   std::vector<Real> byCompactIndex(static_cast<std::size_t>(types.compactNodes()[s]));
   for (Index c = 0; c < types.compactNodes()[s]; ++c) {
-    // A representative node of compact index c, and the plane through it.
-    const Index node = c <= types.depth() || types.nodes()[s] == types.compactNodes()[s]
-                           ? c
-                           : c + (types.nodes()[s] - types.compactNodes()[s]);
+    // A node of compact index c, and the plane through it.
+    const Index node = types.nodesOfCompactIndex(axis, c)[0];
     plane.lo[s] = node;
     plane.hi[s] = node + 1;
     byCompactIndex[static_cast<std::size_t>(c)] = boxCost(types, typeCost, plane);

@@ -42,6 +42,7 @@ struct Box {
     return index;
   }
   bool operator==(const Box& other) const { return lo == other.lo && hi == other.hi; }
+  bool operator!=(const Box& other) const { return !(*this == other); }
 
   // Calls visit(node) for every node of the box, x fastest.
   template <class Visit>

@@ -39,6 +39,15 @@ class LatticeRowTypes {
     if (i >= n - depth_) return i - (n - m);
     return depth_;
   }
+  // The nodes along `axis` whose compact index is c: [first, last), one node near a face or the
+  // whole interior run.
+  std::array<Index, 2> nodesOfCompactIndex(int axis, Index c) const {
+    const Index n = nodes_[static_cast<std::size_t>(axis)];
+    const Index m = compact_[static_cast<std::size_t>(axis)];
+    if (n == m || c < depth_) return {c, c + 1};
+    if (c == depth_) return {depth_, n - depth_};
+    return {c + (n - m), c + (n - m) + 1};
+  }
   // The row type of a node: the linear index (x fastest) of its compact node.
   Index typeOf(const std::array<Index, D>& node) const;
   // The node of linear index p.

@@ -81,11 +81,15 @@ class LatticeStencils {
   }
 
   // The row of node p (of type `type`) applied to x: out[c] = sum_e sum_d B_e[c][d] x[D (p + o_e) + d].
-  void rowProduct(Index type, Index p, const Real* x, Real* out) const {
+  void rowProduct(Index type, Index p, const Real* x, Real* out) const { rowProductAt(type, x + D * p, flat_.data(), out); }
+  // The same sum with the node's values at xNode and the entries' node offsets `flat` (indexed by
+  // entry): this table's, or those of another storage of the same lattice (a rank's local box,
+  // lib/decomposition/LocalStencils), so that both sum every row in one order.
+  void rowProductAt(Index type, const Real* xNode, const Index* flat, Real* out) const {
     Real acc[D] = {};
     for (Index e = start_[static_cast<std::size_t>(type)]; e < start_[static_cast<std::size_t>(type) + 1]; ++e) {
       const Real* b = &block_[static_cast<std::size_t>(D * D * e)];
-      const Real* xe = x + D * (p + flat_[static_cast<std::size_t>(e)]);
+      const Real* xe = xNode + D * flat[e];
       for (int c = 0; c < D; ++c)
         for (int d = 0; d < D; ++d) acc[c] += b[D * c + d] * xe[d];
     }

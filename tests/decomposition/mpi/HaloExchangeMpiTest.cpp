@@ -1,15 +1,20 @@
 // The halo exchange under mpirun (ctest runs this program on 1, 2, 3 and 4 ranks): every rank
 // fills the nodes it owns with a value that names the node, exchanges, and checks that its whole
 // local box (its block and its halo) then holds each node's own value, in 1-D, 2-D and 3-D, for
-// reaches 1 and 2 and with costly face rows that make the blocks unequal.
+// reaches 1 and 2 and with costly face rows that make the blocks unequal; and a lattice operator
+// applied across the ranks gives the serial product's bits.
+#include "decomposition/LocalStencils.hpp"
 #include "decomposition/mpi/HaloExchange.hpp"
 
 #include "core/Error.hpp"
+
+#include "support/RandomVector.hpp"
 
 #include <gtest/gtest.h>
 #include <mpi.h>
 
 #include <cmath>
+#include <random>
 #include <limits>
 #include <vector>
 
@@ -95,6 +100,58 @@ TEST(HaloExchangeMpiTest, RepeatedExchangesWithStartAndFinishApart) {
     });
   }
   EXPECT_THROW(exchange.finish(local.data()), Error);
+}
+
+// A lattice operator applied across the ranks (each rank fills its own nodes, exchanges its halo,
+// applies its rows) gives every row bitwise as the serial product on one process does.
+TEST(HaloExchangeMpiTest, TheDistributedProductIsTheSerialProductBitForBit) {
+  const LatticeRowTypes<3> types({29, 17, 13}, 2);
+  // A 3-component operator coupling every node to the nodes within 2 along each axis.
+  std::mt19937 random(17);
+  std::uniform_real_distribution<Real> value(-1.0, 1.0);
+  Box<3> compact;
+  compact.hi = types.compactNodes();
+  std::vector<Triplet> entries;
+  compact.forEachNode([&](const std::array<Index, 3>& row) {
+    Box<3> around;
+    for (std::size_t s = 0; s < 3; ++s) {
+      around.lo[s] = row[s] - 2;
+      around.hi[s] = row[s] + 3;
+    }
+    intersection(around, compact).forEachNode([&](const std::array<Index, 3>& column) {
+      for (int c = 0; c < 3; ++c)
+        for (int d = 0; d < 3; ++d)
+          entries.emplace_back(static_cast<int>(3 * compact.localIndex(row) + c),
+                               static_cast<int>(3 * compact.localIndex(column) + d), value(random));
+    });
+  });
+  SparseMatrix matrix(3 * compact.count(), 3 * compact.count());
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  const LatticeStencils<3> stencils(types, matrix);
+  const Vector x = test::randomVector(3 * types.nodeCount(), 9);
+  Vector serial;
+  stencils.multiply(x, serial);
+
+  const BlockDecomposition<3> decomposition(types, worldSize());
+  HaloExchange<3> exchange(HaloPlan<3>(decomposition, worldRank(), stencilReach(stencils)), 3, MPI_COMM_WORLD);
+  const HaloPlan<3>& plan = exchange.plan();
+  Box<3> all;
+  all.hi = types.nodes();
+  std::vector<Real> local(static_cast<std::size_t>(exchange.localSize()), std::numeric_limits<Real>::quiet_NaN());
+  plan.owned().forEachNode([&](const std::array<Index, 3>& node) {
+    for (int c = 0; c < 3; ++c) local[static_cast<std::size_t>(3 * plan.local().localIndex(node) + c)] = x[3 * all.localIndex(node) + c];
+  });
+  exchange.exchange(local.data());
+  const LocalStencils<3> rows(stencils, plan.owned(), plan.local());
+  std::vector<Real> y(static_cast<std::size_t>(3 * plan.owned().count()));
+  rows.multiply(local.data(), y.data());
+  long different = 0;
+  plan.owned().forEachNode([&](const std::array<Index, 3>& node) {
+    for (int c = 0; c < 3; ++c)
+      if (y[static_cast<std::size_t>(3 * plan.owned().localIndex(node) + c)] != serial[3 * all.localIndex(node) + c]) ++different;
+  });
+  MPI_Allreduce(MPI_IN_PLACE, &different, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(different, 0);
 }
 
 // GoogleTest inside MPI: every rank runs the tests; rank 0 prints; the exit code is the worst rank's.
