@@ -81,7 +81,7 @@ std::vector<Index> balancedCuts(const std::vector<Real>& marginal, int parts) {
 // The grid of `ranks` blocks with the fewest nodes on the faces between blocks (the first found
 // in the order of enumeration when several tie), or an all-zero grid when none fits the lattice.
 template <int D>
-std::array<int, D> smallestInterfaceGrid(const std::array<Index, D>& nodes, int ranks) {
+std::array<int, D> smallestInterfaceGrid(const std::array<Index, D>& nodes, int ranks, const std::array<bool, D>& splittable) {
   std::array<int, D> best{};
   Real bestArea = std::numeric_limits<Real>::infinity();
   std::array<int, D> grid{};
@@ -89,7 +89,7 @@ std::array<int, D> smallestInterfaceGrid(const std::array<Index, D>& nodes, int 
     const auto s = static_cast<std::size_t>(axis);
     if (axis == D - 1) {
       grid[s] = remaining;
-      if (remaining > nodes[s]) return;
+      if (remaining > nodes[s] || (remaining > 1 && !splittable[s])) return;
       Real area = 0;
       for (int a = 0; a < D; ++a) {
         Real face = 1;
@@ -104,7 +104,7 @@ std::array<int, D> smallestInterfaceGrid(const std::array<Index, D>& nodes, int 
       return;
     }
     for (int p = 1; p <= remaining; ++p)
-      if (remaining % p == 0 && p <= nodes[s]) {
+      if (remaining % p == 0 && p <= nodes[s] && (p == 1 || splittable[s])) {
         grid[s] = p;
         self(self, axis + 1, remaining / p);
       }
@@ -116,7 +116,8 @@ std::array<int, D> smallestInterfaceGrid(const std::array<Index, D>& nodes, int 
 }  // namespace
 
 template <int D>
-BlockDecomposition<D>::BlockDecomposition(const LatticeRowTypes<D>& types, int ranks, const std::vector<Real>& typeCost)
+BlockDecomposition<D>::BlockDecomposition(const LatticeRowTypes<D>& types, int ranks, const std::vector<Real>& typeCost,
+                                          const std::array<bool, D>& splittable)
     : types_(types), ranks_(ranks), typeCost_(typeCost) {
   if (ranks < 1) throw InputError("ranks", "must be at least 1, got " + std::to_string(ranks));
   if (!typeCost.empty()) {
@@ -126,12 +127,12 @@ BlockDecomposition<D>::BlockDecomposition(const LatticeRowTypes<D>& types, int r
     for (Real c : typeCost)
       if (!(c >= 0) || !std::isfinite(c)) throw InputError("cost", "every row type's cost must be finite and >= 0");
   }
-  grid_ = smallestInterfaceGrid<D>(types.nodes(), ranks);
+  grid_ = smallestInterfaceGrid<D>(types.nodes(), ranks, splittable);
   if (grid_[0] == 0) {
     std::string shape;
     for (int a = 0; a < D; ++a) shape += (a ? " x " : "") + std::to_string(types.nodes()[static_cast<std::size_t>(a)]);
     throw InputError("ranks", std::to_string(ranks) + " ranks do not split a lattice of " + shape +
-                                  " nodes into blocks of at least one node");
+                                  " nodes into blocks of at least one node along the axes that may be split");
   }
   for (int a = 0; a < D; ++a)
     cuts_[static_cast<std::size_t>(a)] = balancedCuts(marginalCost(types_, typeCost_, a), grid_[static_cast<std::size_t>(a)]);

@@ -27,9 +27,18 @@ template <int D>
 class BlockDecomposition {
  public:
   // Throws InputError("ranks") for ranks < 1 or more ranks than the lattice has nodes along the
-  // grid's axes, InputError("cost") for a cost list of the wrong length or a negative or non-finite
-  // cost. `typeCost` empty: every node costs 1.
-  BlockDecomposition(const LatticeRowTypes<D>& types, int ranks, const std::vector<Real>& typeCost = {});
+  // splittable axes, InputError("cost") for a cost list of the wrong length or a negative or
+  // non-finite cost. `typeCost` empty: every node costs 1. `splittable[a]` false keeps axis a whole:
+  // with x whole every rank owns whole lattice lines, whose sums (energies, norms) are then the
+  // serial ones, combined in the serial order by sumInLatticeOrder (mpi/LineSums.hpp).
+  BlockDecomposition(const LatticeRowTypes<D>& types, int ranks, const std::vector<Real>& typeCost = {},
+                     const std::array<bool, D>& splittable = allAxes());
+
+  static std::array<bool, D> allAxes() {
+    std::array<bool, D> all{};
+    all.fill(true);
+    return all;
+  }
 
   int ranks() const { return ranks_; }
   const std::array<Index, D>& nodes() const { return types_.nodes(); }

@@ -53,6 +53,17 @@ TEST(BlockDecompositionTest, TheGridCutsTheLongAxesFirst) {
   EXPECT_EQ(cube.interfaceNodes(), 3 * 100 * 100);
 }
 
+TEST(BlockDecompositionTest, AxesKeptWholeAreNotCut) {
+  // On a cube 8 ranks would be 2 x 2 x 2; with x whole, every rank owns whole lattice lines.
+  const BlockDecomposition<3> lines(LatticeRowTypes<3>({100, 100, 100}, 1), 8, {}, {false, true, true});
+  EXPECT_EQ(lines.grid()[0], 1);
+  EXPECT_EQ(lines.grid()[1] * lines.grid()[2], 8);
+  for (int r = 0; r < 8; ++r) EXPECT_EQ(lines.block(r).extent(0), 100);
+  expectPartition(lines);
+  // Nothing left to cut: a clear error.
+  EXPECT_THROW(BlockDecomposition<2>(LatticeRowTypes<2>({50, 1}, 1), 2, {}, {false, true}), InputError);
+}
+
 TEST(BlockDecompositionTest, EqualCostsGiveBlocksWithinOneNodePlaneOfEachOther) {
   const BlockDecomposition<2> d(LatticeRowTypes<2>({1000, 10}, 3), 3);
   ASSERT_EQ(d.grid(), (std::array<int, 2>{3, 1}));

@@ -5,6 +5,8 @@
 // applied across the ranks gives the serial product's bits.
 #include "decomposition/LocalStencils.hpp"
 #include "decomposition/mpi/HaloExchange.hpp"
+#include "decomposition/mpi/LineSums.hpp"
+#include "lattice/LatticeSecondOrderSystem.hpp"
 
 #include "core/Error.hpp"
 
@@ -66,8 +68,6 @@ void expectExchangeFillsTheHalo(const LatticeRowTypes<D>& types, const std::arra
   EXPECT_EQ(total, static_cast<long>(types.nodeCount()));
 }
 
-}  // namespace
-
 TEST(HaloExchangeMpiTest, FillsTheHaloWithTheOwnersValuesIn1d2d3d) {
   expectExchangeFillsTheHalo<1>(LatticeRowTypes<1>({57}, 2), {2}, 1);
   expectExchangeFillsTheHalo<2>(LatticeRowTypes<2>({31, 23}, 2), {2, 2}, 2);
@@ -104,10 +104,10 @@ TEST(HaloExchangeMpiTest, RepeatedExchangesWithStartAndFinishApart) {
 
 // A lattice operator applied across the ranks (each rank fills its own nodes, exchanges its halo,
 // applies its rows) gives every row bitwise as the serial product on one process does.
-TEST(HaloExchangeMpiTest, TheDistributedProductIsTheSerialProductBitForBit) {
-  const LatticeRowTypes<3> types({29, 17, 13}, 2);
-  // A 3-component operator coupling every node to the nodes within 2 along each axis.
-  std::mt19937 random(17);
+// A 3-component operator on the compact lattice of `types`, coupling every node to the nodes
+// within 2 along each axis.
+SparseMatrix randomCompactOperator(const LatticeRowTypes<3>& types, unsigned seed) {
+  std::mt19937 random(seed);
   std::uniform_real_distribution<Real> value(-1.0, 1.0);
   Box<3> compact;
   compact.hi = types.compactNodes();
@@ -127,6 +127,30 @@ TEST(HaloExchangeMpiTest, TheDistributedProductIsTheSerialProductBitForBit) {
   });
   SparseMatrix matrix(3 * compact.count(), 3 * compact.count());
   matrix.setFromTriplets(entries.begin(), entries.end());
+  return matrix;
+}
+
+// This rank's local box filled from the whole lattice's x at the nodes it owns, NaN in its halo,
+// then exchanged.
+std::vector<Real> exchangedLocal(HaloExchange<3>& exchange, const LatticeRowTypes<3>& types, const Vector& x) {
+  const HaloPlan<3>& plan = exchange.plan();
+  Box<3> all;
+  all.hi = types.nodes();
+  std::vector<Real> local(static_cast<std::size_t>(exchange.localSize()), std::numeric_limits<Real>::quiet_NaN());
+  plan.owned().forEachNode([&](const std::array<Index, 3>& node) {
+    for (int c = 0; c < 3; ++c) local[static_cast<std::size_t>(3 * plan.local().localIndex(node) + c)] = x[3 * all.localIndex(node) + c];
+  });
+  exchange.exchange(local.data());
+  return local;
+}
+
+}  // namespace
+
+// A lattice operator applied across the ranks (each rank fills its own nodes, exchanges its halo,
+// applies its rows) gives every row bitwise as the serial product on one process does.
+TEST(HaloExchangeMpiTest, TheDistributedProductIsTheSerialProductBitForBit) {
+  const LatticeRowTypes<3> types({29, 17, 13}, 2);
+  const SparseMatrix matrix = randomCompactOperator(types, 17u);
   const LatticeStencils<3> stencils(types, matrix);
   const Vector x = test::randomVector(3 * types.nodeCount(), 9);
   Vector serial;
@@ -137,11 +161,7 @@ TEST(HaloExchangeMpiTest, TheDistributedProductIsTheSerialProductBitForBit) {
   const HaloPlan<3>& plan = exchange.plan();
   Box<3> all;
   all.hi = types.nodes();
-  std::vector<Real> local(static_cast<std::size_t>(exchange.localSize()), std::numeric_limits<Real>::quiet_NaN());
-  plan.owned().forEachNode([&](const std::array<Index, 3>& node) {
-    for (int c = 0; c < 3; ++c) local[static_cast<std::size_t>(3 * plan.local().localIndex(node) + c)] = x[3 * all.localIndex(node) + c];
-  });
-  exchange.exchange(local.data());
+  const std::vector<Real> local = exchangedLocal(exchange, types, x);
   const LocalStencils<3> rows(stencils, plan.owned(), plan.local());
   std::vector<Real> y(static_cast<std::size_t>(3 * plan.owned().count()));
   rows.multiply(local.data(), y.data());
@@ -152,6 +172,48 @@ TEST(HaloExchangeMpiTest, TheDistributedProductIsTheSerialProductBitForBit) {
   });
   MPI_Allreduce(MPI_IN_PLACE, &different, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
   EXPECT_EQ(different, 0);
+}
+
+// The strain energy u . K u / 2 summed over the ranks: with x kept whole, each rank's line sums are
+// the serial ones and sumInLatticeOrder adds them in the serial order, so every rank gets the
+// serial system's figure bit for bit.
+TEST(HaloExchangeMpiTest, AnEnergyOverTheRanksIsTheSerialEnergyBitForBit) {
+  const LatticeRowTypes<3> types({23, 19, 14}, 2);
+  const LatticeStencils<3> stiffness(types, randomCompactOperator(types, 23u));
+  SparseMatrix identity(3 * types.compactNodes()[0] * types.compactNodes()[1] * types.compactNodes()[2],
+                        3 * types.compactNodes()[0] * types.compactNodes()[1] * types.compactNodes()[2]);
+  identity.setIdentity();
+  const LatticeSecondOrderSystem<3> system(LatticeStencils<3>(types, identity), LatticeStencils<3>(), stiffness);
+  const Vector u = test::randomVector(3 * types.nodeCount(), 4);
+  const Real serial = system.strainEnergy(u);
+
+  const BlockDecomposition<3> decomposition(types, worldSize(), {}, {false, true, true});
+  ASSERT_EQ(decomposition.grid()[0], 1);
+  HaloExchange<3> exchange(HaloPlan<3>(decomposition, worldRank(), stencilReach(stiffness)), 3, MPI_COMM_WORLD);
+  const HaloPlan<3>& plan = exchange.plan();
+  const std::vector<Real> local = exchangedLocal(exchange, types, u);
+  const LocalStencils<3> rows(stiffness, plan.owned(), plan.local());
+  std::vector<Real> ku(static_cast<std::size_t>(3 * plan.owned().count()));
+  rows.multiply(local.data(), ku.data());
+  // Per owned line, u . K u node by node along x, as the serial sum adds them.
+  const Index nx = plan.owned().extent(0);
+  std::vector<Real> lineSums(static_cast<std::size_t>(plan.owned().count() / nx), 0.0);
+  plan.owned().forEachNode([&](const std::array<Index, 3>& node) {
+    const Index k = plan.owned().localIndex(node);
+    const Real* un = local.data() + 3 * plan.local().localIndex(node);
+    Real s = 0;
+    for (int c = 0; c < 3; ++c) s += un[c] * ku[static_cast<std::size_t>(3 * k + c)];
+    lineSums[static_cast<std::size_t>(k / nx)] += s;
+  });
+  const Real distributed = 0.5 * sumInLatticeOrder(decomposition, worldRank(), lineSums, MPI_COMM_WORLD);
+  EXPECT_EQ(distributed, serial) << "difference " << distributed - serial;
+  EXPECT_GT(std::abs(serial), 0.0);
+  // A decomposition that splits x cannot promise the serial order, and says so.
+  if (worldSize() > 1) {
+    const BlockDecomposition<3> slabs(LatticeRowTypes<3>({40, 5, 5}, 1), worldSize());
+    ASSERT_GT(slabs.grid()[0], 1);
+    EXPECT_THROW(sumInLatticeOrder(slabs, worldRank(), std::vector<Real>(1), MPI_COMM_WORLD), Error);
+  }
 }
 
 // GoogleTest inside MPI: every rank runs the tests; rank 0 prints; the exit code is the worst rank's.
