@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libbenchmark-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libx11-dev xvfb xauth python3-matplotlib python3-numpy
   clang libclang-rt-14-dev libomp-dev
+  dpkg-dev file  # CPack's Debian package: dpkg-shlibdeps finds the programs' dependencies (scripts/check-install.sh)
 )
 
 missing=()

@@ -1,5 +1,7 @@
 #include "io/run/RunSummary.hpp"
 
+#include "io/run/BuildInfo.hpp"
+
 #include "core/AtomicFile.hpp"
 #include "core/CheckpointStore.hpp"
 #include "core/Error.hpp"
@@ -120,6 +122,8 @@ void RunSummary::print(std::ostream& out) const {
 void RunSummary::writeJson(const std::string& path) const {
   nlohmann::ordered_json j;
   j["program"] = program;
+  j["mfwave_version"] = mfwaveVersion();  // which build made the result
+  j["git_revision"] = mfwaveGitRevision();
   j["scene"] = scene;
   j["method"] = method;
   j["integrator"] = integrator;
