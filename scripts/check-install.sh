@@ -84,7 +84,9 @@ timeout 600 "$lamb3d" --set 'study.spacings=[0.5]' --out "$work/run/lamb3d" > "$
   || { cat "$work/lamb3d.log"; fail "lamb3d from the package exited with $?"; }
 grep -q "shipped scene $work/root/usr/share/mfwave/data/scenes/lamb3d.toml" "$work/lamb3d.log" \
   || { cat "$work/lamb3d.log"; fail "lamb3d did not run the package's shipped scene"; }
-grep -E 'galerkin_0.5|error' "$work/lamb3d.log" | head -4 | sed 's/^/  /'
+grep -q "plot: /usr/bin/python3 $work/root/usr/share/mfwave/analysis/plot_lamb3d.py" "$work/lamb3d.log" \
+  || { cat "$work/lamb3d.log"; fail "lamb3d did not name the package's plot script"; }
+grep -E '^galerkin_0.5 |centre_relative_l2|plot:' "$work/lamb3d.log" | sed 's/^/  /'
 /usr/bin/python3 - "$work/run/lamb3d/summary.json" <<'PY' || fail "summary.json of the packaged lamb3d"
 import json, sys
 s = json.load(open(sys.argv[1]))

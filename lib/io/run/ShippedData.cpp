@@ -4,6 +4,7 @@
 
 #include "core/Error.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <system_error>
@@ -60,6 +61,12 @@ std::string describeShippedSearch(const std::string& relative, const std::string
     text += "  " + (fs::path(place.folder) / relative).string() + " (" + place.origin + ")\n";
   if (!std::getenv("MFWAVE_DATA_DIR")) text += "  (MFWAVE_DATA_DIR is not set)\n";
   return text;
+}
+
+std::optional<std::string> findPlotScript(const std::string& program) {
+  std::string name = program;
+  std::replace(name.begin(), name.end(), '-', '_');
+  return findShippedFile("analysis/plot_" + name + ".py");
 }
 
 std::string resolveDataFile(const std::string& path, const std::string& key) {

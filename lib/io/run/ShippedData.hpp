@@ -27,6 +27,9 @@ std::optional<std::string> findShippedFile(const std::string& relative, const st
 // Every place `relative` was looked for, one per line, for the message when none has it.
 std::string describeShippedSearch(const std::string& relative, const std::string& executable = {});
 
+// The plot script a program ships, analysis/plot_<program>.py ('-' as '_'), if any place has one.
+std::optional<std::string> findPlotScript(const std::string& program);
+
 // A data file a scene names (e.g. study.rk_reference = "data/reference/..."): `path` itself when it
 // exists from the working folder, else, when relative, the first shipped place that has it; throws
 // InputError(key, ...) naming every place looked otherwise.

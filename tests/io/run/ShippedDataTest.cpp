@@ -120,3 +120,15 @@ TEST(ShippedData, DataFilesFallBackToTheShippedPlaces) {
   }
   EXPECT_THROW(resolveDataFile("/nonexistent/absolute.csv", "study.table"), InputError);
 }
+
+// A program's plot script: analysis/plot_<program>.py with '-' as '_' (here from the source tree).
+TEST(ShippedData, FindsAProgramsPlotScript) {
+  DataDirVariable variable;
+  const auto lamb3d = findPlotScript("lamb3d");
+  ASSERT_TRUE(lamb3d.has_value());
+  EXPECT_EQ(fs::path(*lamb3d).filename(), "plot_lamb3d.py");
+  const auto bars = findPlotScript("bar1d-sph");
+  ASSERT_TRUE(bars.has_value());
+  EXPECT_EQ(fs::path(*bars).filename(), "plot_bar1d_sph.py");
+  EXPECT_FALSE(findPlotScript("tool").has_value());
+}
