@@ -17,6 +17,7 @@
 #include "io/run/RunDriver.hpp"
 #include "io/run/SceneDriver.hpp"
 #include "io/run/RunSummary.hpp"
+#include "io/run/ShippedData.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "methods/collocation/RadialBasisShapeFunctions.hpp"
 #include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
@@ -79,8 +80,10 @@ struct Published {
 std::map<long, Published> readReference(const std::string& path, const std::string& key) {
   std::map<long, Published> table;
   if (path.empty()) return table;
-  std::ifstream in(path);
-  if (!in) throw InputError(key, "cannot read '" + path + "'");
+  // A relative path not in the working folder is looked up in the shipped data (an installed tool).
+  const std::string file = resolveDataFile(path, key);
+  std::ifstream in(file);
+  if (!in) throw InputError(key, "cannot read '" + file + "'");
   std::string line;
   bool header = true;
   while (std::getline(in, line)) {

@@ -1,5 +1,7 @@
 # Helpers that give every project target the same standard, warnings and layout.
 
+include(GNUInstallDirs)
+
 # Warnings for project code only: dependencies come in through imported targets, whose
 # headers are SYSTEM includes and so stay quiet.
 function(mfwave_set_warnings target)
@@ -27,17 +29,27 @@ function(mfwave_add_library folder)
   get_filename_component(parent ${includes}/${relative} DIRECTORY)
   file(MAKE_DIRECTORY ${parent})
   file(CREATE_LINK ${CMAKE_CURRENT_SOURCE_DIR} ${includes}/${relative} SYMBOLIC)
+  # Installed, the headers of every library sit side by side under include/mfwave/<folder under lib/>
+  # (the real files, not the links), so a user's "io/run/RunSummary.hpp" and the headers' own
+  # includes resolve against one directory; the installed layering is not enforced.
   if(ARG_SOURCES)
     add_library(${target} STATIC ${ARG_SOURCES})
-    target_include_directories(${target} PUBLIC ${includes})
+    target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${includes}>
+                                                $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/mfwave>)
     target_link_libraries(${target} PUBLIC ${ARG_DEPENDS})
     mfwave_set_warnings(${target})
   else()
     add_library(${target} INTERFACE)
-    target_include_directories(${target} INTERFACE ${includes})
+    target_include_directories(${target} INTERFACE $<BUILD_INTERFACE:${includes}>
+                                                   $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/mfwave>)
     target_link_libraries(${target} INTERFACE ${ARG_DEPENDS})
   endif()
   add_library(mfwave::${folder} ALIAS ${target})
+  # Exported as mfwave::<folder>, the name the build tree uses (cmake/MfwaveInstall.cmake).
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${folder})
+  install(TARGETS ${target} EXPORT mfwaveTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/mfwave/${relative}
+          FILES_MATCHING PATTERN "*.hpp")
 endfunction()
 
 # mfwave_add_test(<name> SOURCES ... DEPENDS ...): a GoogleTest executable registered with CTest.
@@ -63,4 +75,5 @@ function(mfwave_add_executable name)
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS})
   mfwave_set_warnings(${name})
+  install(TARGETS ${name} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endfunction()

@@ -10,6 +10,7 @@ packages=(
   libx11-dev xvfb xauth python3-matplotlib python3-numpy
   clang libclang-rt-14-dev libomp-dev
   libopenmpi-dev openmpi-bin
+  dpkg-dev file  # CPack's Debian package: dpkg-shlibdeps finds the programs' dependencies (scripts/check-install.sh)
 )
 
 missing=()

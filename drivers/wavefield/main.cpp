@@ -177,6 +177,7 @@ int main(int argc, char** argv) {
   const SceneSchema schema = SceneSchema::common();
   DriverCommandLine cli(kProgram, "wavefield: run a scene with the reference finite-difference scalar wave",
                         schema.describe());
+  cli.setDefaultScene("block-ricker.toml");
   if (const auto exit = cli.parse(argc, argv)) return *exit;
 
   return runDriver(kProgram, [&]() -> int {

@@ -52,6 +52,23 @@ std::string firstLineValue(const fs::path& file, const std::string& marker) {
 
 }  // namespace
 
+// Without --scene a driver runs its shipped scene (wavefield: block-ricker.toml), found from the
+// build folder in the source tree, and its summary names the build.
+TEST(WavefieldStudy, WithoutASceneRunsTheShippedOne) {
+  const fs::path out = fs::temp_directory_path() / "mfwave-wavefield-shipped";
+  fs::remove_all(out);
+  const WavefieldOutcome run = runWavefield("--set integrator.end_time=0.1 --out " + out.string(), "shipped",
+                                            "env -u MFWAVE_DATA_DIR ");
+  ASSERT_TRUE(run.exited && run.exitCode == 0) << run.log;
+  const nlohmann::json summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  EXPECT_EQ(summary["scene"], "block-ricker");
+  EXPECT_EQ(summary["mfwave_version"], MFWAVE_EXPECTED_VERSION);
+  EXPECT_EQ(summary["git_revision"], MFWAVE_EXPECTED_REVISION);
+  EXPECT_EQ(firstLineValue(out / "scene.resolved.toml", "# Resolved scene: "),
+            fs::path(std::string(SCENES_FOLDER) + "/block-ricker.toml").lexically_normal().string() +
+                " with every override applied and every default filled in.");
+}
+
 TEST(WavefieldStudy, SampleBlockSceneWritesFramesProbesAndSummary) {
   const fs::path out = fs::temp_directory_path() / "mfwave-wavefield-block";
   fs::remove_all(out);

@@ -1,5 +1,8 @@
 #include "io/run/DriverCommandLine.hpp"
 
+#include "io/run/BuildInfo.hpp"
+#include "io/run/ShippedData.hpp"
+
 #include <omp.h>
 
 #include <cmath>
@@ -8,19 +11,18 @@
 
 namespace mfwave {
 
-#ifndef MFWAVE_VERSION
-#define MFWAVE_VERSION "unknown"
-#endif
-
-std::string versionString(const std::string& program) { return program + " (mfwave " MFWAVE_VERSION ")"; }
+std::string versionString(const std::string& program) {
+  return program + " (mfwave " + mfwaveVersion() + ", git " + mfwaveGitRevision() + ")";
+}
 
 DriverCommandLine::DriverCommandLine(std::string program, std::string description, std::string sceneKeys,
                                      bool sceneRequired)
-    : program_(std::move(program)), sceneRequired_(sceneRequired), app_(std::move(description), program_) {
-  app_.add_option("--scene", options_.scenePath,
-                  std::string("scene file (TOML); see docs/scenes.md") +
-                      (sceneRequired ? " (required, unless --restart gives the folder whose scene to go on with)" : ""))
-      ->check(CLI::ExistingFile);
+    : program_(std::move(program)),
+      sceneRequired_(sceneRequired),
+      defaultScene_(program_ + ".toml"),
+      app_(std::move(description), program_) {
+  sceneOption_ = app_.add_option("--scene", options_.scenePath)->check(CLI::ExistingFile);
+  setDefaultScene(defaultScene_);
   app_.add_option("--set", options_.overrides,
                   "override a scene key, e.g. --set geometry.spacing=0.05 (repeatable)")
       ->allow_extra_args(false)
@@ -39,6 +41,14 @@ DriverCommandLine::DriverCommandLine(std::string program, std::string descriptio
   if (!sceneKeys.empty()) app_.footer("Scene keys read by " + program_ + ":\n" + sceneKeys);
 }
 
+void DriverCommandLine::setDefaultScene(std::string fileName) {
+  defaultScene_ = std::move(fileName);
+  sceneOption_->description(std::string("scene file (TOML); see docs/scenes.md") +
+                            (sceneRequired_ ? " (default: the shipped data/scenes/" + defaultScene_ +
+                                                  "; with --restart, the scene of the folder it goes on from)"
+                                            : ""));
+}
+
 std::optional<int> DriverCommandLine::parse(int argc, char** argv) {
   try {
     app_.parse(argc, argv);
@@ -54,8 +64,16 @@ std::optional<int> DriverCommandLine::parse(int argc, char** argv) {
     std::cerr << program_ << ": " << message << "\n(run " << program_ << " --help for the options)\n";
     return 2;
   };
-  if (sceneRequired_ && options_.scenePath.empty() && options_.restartFolder.empty())
-    return usage("--scene is required (or --restart with an output folder to go on from)");
+  if (sceneRequired_ && options_.scenePath.empty() && options_.restartFolder.empty()) {
+    const std::string relative = "data/scenes/" + defaultScene_;
+    const std::optional<std::string> shipped = findShippedFile(relative);
+    if (!shipped)
+      return usage("no --scene given, and the shipped scene " + relative + " is in none of the places looked:\n" +
+                   describeShippedSearch(relative) +
+                   "give --scene FILE, or set MFWAVE_DATA_DIR to the folder holding data/scenes");
+    options_.scenePath = *shipped;
+    if (!options_.quiet) std::cout << program_ << ": no --scene given: the shipped scene " << *shipped << '\n';
+  }
   if (!checkpointEvery_.empty()) {
     const bool seconds = checkpointEvery_.back() == 's';
     const std::string number = seconds ? checkpointEvery_.substr(0, checkpointEvery_.size() - 1) : checkpointEvery_;

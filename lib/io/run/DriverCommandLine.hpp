@@ -3,7 +3,9 @@
 //   --scene FILE, --set key.path=value (repeated), --out DIR, --threads N, --quiet, --help, --version,
 //   --checkpoint-every N | Ts, --restart DIR.
 // A driver may add its own options to app() before parse(). --help lists the options and, in its
-// footer, the scene keys the driver reads.
+// footer, the scene keys the driver reads. A driver whose scene is required runs its shipped scene,
+// data/scenes/<program>.toml (or the one setDefaultScene names), when none is given: found beside
+// the program or in the source tree (io/run/ShippedData), so an installed `lamb3d` runs the study.
 
 #include <CLI/CLI.hpp>
 
@@ -34,6 +36,9 @@ class DriverCommandLine {
 
   CLI::App& app() { return app_; }
 
+  // The shipped scene (a file name in data/scenes) run when neither --scene nor --restart is given.
+  void setDefaultScene(std::string fileName);
+
   // Parses argv. Returns an exit code when the program should stop now (0 after --help or
   // --version, 2 after a usage error, with the message printed), or nothing to carry on.
   // Applies --threads to OpenMP.
@@ -45,12 +50,14 @@ class DriverCommandLine {
  private:
   std::string program_;
   bool sceneRequired_;
+  std::string defaultScene_;
   std::string checkpointEvery_;  // as given, parsed after CLI11
   CLI::App app_;
+  CLI::Option* sceneOption_ = nullptr;
   DriverOptions options_;
 };
 
-// The version string every driver prints: "<program> (mfwave <version>)".
+// The version string every driver prints: "<program> (mfwave <version>, git <revision>)".
 std::string versionString(const std::string& program);
 
 }  // namespace mfwave

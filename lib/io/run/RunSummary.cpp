@@ -1,5 +1,8 @@
 #include "io/run/RunSummary.hpp"
 
+#include "io/run/BuildInfo.hpp"
+#include "io/run/ShippedData.hpp"
+
 #include "core/AtomicFile.hpp"
 #include "core/CheckpointStore.hpp"
 #include "core/Error.hpp"
@@ -120,6 +123,8 @@ void RunSummary::print(std::ostream& out) const {
 void RunSummary::writeJson(const std::string& path) const {
   nlohmann::ordered_json j;
   j["program"] = program;
+  j["mfwave_version"] = mfwaveVersion();  // which build made the result
+  j["git_revision"] = mfwaveGitRevision();
   j["scene"] = scene;
   j["method"] = method;
   j["integrator"] = integrator;
@@ -187,7 +192,12 @@ void RunSummary::conclude(const std::string& folder, std::ostream* terminal) {
     for (const std::string& note : store->notes()) notes.add(note);
   finish();
   writeJson(folder + "/summary.json");
-  if (terminal) print(*terminal);
+  if (!terminal) return;
+  print(*terminal);
+  // How to draw what the run wrote, from wherever the program's plot script is (installed or the
+  // source tree); on the terminal only, as its path depends on the machine.
+  if (const std::optional<std::string> script = findPlotScript(program))
+    *terminal << "   plot: /usr/bin/python3 " << *script << ' ' << folder << '\n';
 }
 
 }  // namespace mfwave

@@ -78,6 +78,9 @@ TEST(RunSummary, WritesEveryFigureAsJson) {
   EXPECT_DOUBLE_EQ(j["errors"]["relative_l2"].get<double>(), 0.125);
   EXPECT_DOUBLE_EQ(j["particle_steps_per_second"].get<double>(), 463050.0);
   EXPECT_EQ(j["notes"][0], "no PNG: no display");
+  // Which build made it: the project's version and the revision CMake read at configure time.
+  EXPECT_EQ(j["mfwave_version"], MFWAVE_EXPECTED_VERSION);
+  EXPECT_EQ(j["git_revision"], MFWAVE_EXPECTED_REVISION);
   std::ostringstream text;
   s.print(text);
   EXPECT_NE(text.str().find("particles 9261"), std::string::npos) << text.str();
