@@ -12,6 +12,7 @@
 // and two 4-wide add pipes, x threads; the loop does not fuse multiply and add, to stay bitwise
 // equal across instruction sets).
 
+#include "GalerkinBlock.hpp"
 #include "core/TimeFunction.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "methods/very_weak_sph/VeryWeakSphProblem.hpp"
@@ -35,16 +36,7 @@ namespace {
 constexpr Real kSpacing = 0.05;
 
 VeryWeakSphProblemSettings<3> settingsFor(Index side) {
-  VeryWeakSphProblemSettings<3> s;
-  s.options.material = Material::fromLame(1, 1, 1);
-  s.options.variant = VeryWeakSphVariant::Galerkin;
-  s.spacing = kSpacing;
-  s.smoothingLength = kSpacing;
-  s.lower = Vec3::Zero();
-  s.upper = Vec3::Constant(kSpacing * static_cast<Real>(side - 1));
-  s.transmittingFaces = static_cast<std::uint8_t>(allFaces(3) & ~faceBit(BoxFace::PlusZ));
-  s.storage = OperatorStorage::Lattice;
-  return s;
+  return bench::galerkinBlock({side, side, side}, kSpacing, static_cast<std::uint8_t>(allFaces(3) & ~faceBit(BoxFace::PlusZ)));
 }
 
 // The triad a = b + s c over 3 x 2e7 doubles on `threads` threads, bytes per second (best of 5).

@@ -9,6 +9,7 @@
 // exchange, and the wall time of an exchange (the slowest rank's mean over repeated exchanges,
 // after a warm-up), with the bandwidth that implies. Rank 0 prints a Markdown table
 // (docs/scaling.md shows it). The smallest cube measures the latency of a near-empty exchange.
+#include "MpiArguments.hpp"
 #include "decomposition/mpi/HaloExchange.hpp"
 
 #include <mpi.h>
@@ -59,25 +60,11 @@ Figures measure(Index n, Index reach, int rank, int ranks) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  int rank = 0, ranks = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  Index reach = 1;
-  std::vector<Index> sizes;
-  for (int a = 1; a < argc; ++a) {
-    char* end = nullptr;
-    const long value = std::strtol(argv[a], &end, 10);
-    if (end == argv[a] || *end != '\0' || value < 1) {
-      if (rank == 0) std::fprintf(stderr, "halo_exchange_cost: argument %d (\"%s\") is not a positive integer\n", a, argv[a]);
-      MPI_Finalize();
-      return 2;
-    }
-    if (a == 1)
-      reach = value;
-    else
-      sizes.push_back(value);
-  }
+  const bench::MpiRun mpi = bench::startMpi(argc, argv, 1, 16);
+  const int rank = mpi.rank, ranks = mpi.ranks;
+  const std::vector<long>& arguments = mpi.arguments;
+  const Index reach = arguments.empty() ? 1 : arguments[0];
+  std::vector<Index> sizes(arguments.size() > 1 ? arguments.begin() + 1 : arguments.end(), arguments.end());
   if (sizes.empty()) sizes = {8, 32, 64, 128, 200};
   if (rank == 0) {
     std::printf("Halo exchange, %d ranks, reach %ld, 3 values per node (rank 0's halo; time: slowest rank)\n", ranks,

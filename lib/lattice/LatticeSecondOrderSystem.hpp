@@ -35,6 +35,7 @@ class LatticeSecondOrderSystem : public LinearOperatorSystem {
 
   void force(Real t, Vector& f) const override;
   void setForce(ForceFunction force) { force_ = std::move(force); }
+  bool hasForce() const { return static_cast<bool>(force_); }
   void applyStiffness(const Vector& x, Vector& y) const override { stiffness_.multiply(x, y); }
   Real kineticEnergy(const Vector& v) const override;
   Real strainEnergy(const Vector& u) const override;

@@ -14,6 +14,8 @@ DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSy
     : serial_(serial), decomposition_(decomposition), rank_(rank), communicator_(communicator) {
   if (serial.hasDamping())
     throw InputError("damping", "the distributed lattice system does not take dashpots yet (docs/scaling.md)");
+  if (serial.hasForce())
+    throw InputError("loads", "the distributed lattice system does not take loads yet (docs/scaling.md)");
   if (decomposition.grid()[0] != 1)
     throw InputError("ranks", "the decomposition splits x into " + std::to_string(decomposition.grid()[0]) +
                                   " blocks; the distributed system needs whole lattice lines per rank");

@@ -26,8 +26,8 @@ template <int D>
 class DistributedLatticeSystem : public SecondOrderSystem {
  public:
   // `decomposition` must keep x whole (the energies' order) and outlive this object. Throws
-  // InputError("damping") for a system with dashpots, InputError("ranks") for a decomposition that
-  // splits x.
+  // InputError("damping") for a system with dashpots, InputError("loads") for one with loads,
+  // InputError("ranks") for a decomposition that splits x.
   DistributedLatticeSystem(const LatticeSecondOrderSystem<D>& serial, const BlockDecomposition<D>& decomposition,
                            int rank, MPI_Comm communicator);
 
