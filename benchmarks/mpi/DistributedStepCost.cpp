@@ -57,7 +57,6 @@ void row(const char* mode, const std::array<Index, 3>& nodes, int steps, int ran
   for (Index i = 0; i < u0.size(); ++i) u0[i] = 1e-3 * std::sin(0.37 * static_cast<Real>(i));
   const BlockDecomposition<3> decomposition(serial.types(), ranks, {}, {false, true, true});
   DistributedLatticeSystem<3> distributed(serial, decomposition, rank, MPI_COMM_WORLD);
-  const HaloPlan<3> plan(decomposition, rank, stencilReach(serial.stiffness()));
   const double seconds = timeSteps(distributed, distributed.restrict(u0), steps);
   std::string serialCost = "";
   if (ranks == 1) {
@@ -69,7 +68,7 @@ void row(const char* mode, const std::array<Index, 3>& nodes, int steps, int ran
     const double perRank = static_cast<double>(total) / ranks;
     std::printf("| %s | %ld x %ld x %ld | %d | %.3g | %zu | %d | %.2f | %s | %.3g | %.3g |\n", mode,
                 static_cast<long>(nodes[0]), static_cast<long>(nodes[1]), static_cast<long>(nodes[2]), ranks, perRank,
-                static_cast<std::size_t>(plan.sentNodes() * 3) * sizeof(Real), static_cast<int>(plan.sends().size()),
+                distributed.exchange().bytesSent(), distributed.exchange().messagesSent(),
                 seconds * 1e3, serialCost.empty() ? "-" : serialCost.c_str(), static_cast<double>(total) / seconds,
                 perRank / seconds);
   }

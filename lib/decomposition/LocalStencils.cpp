@@ -50,14 +50,9 @@ LocalStencils<D>::LocalStencils(const LatticeStencils<D>& stencils, const Box<D>
                                        ", beyond the local box: the halo is shallower than the stencils' reach");
       }
   });
-  flat_.resize(static_cast<std::size_t>(stencils.entryCount()));
-  dx_.resize(flat_.size());
-  for (Index e = 0; e < stencils.entryCount(); ++e) {
-    Index flat = 0;
-    for (int a = D - 1; a >= 0; --a) flat = flat * local.extent(a) + stencils.offset(e)[static_cast<std::size_t>(a)];
-    flat_[static_cast<std::size_t>(e)] = flat;
-    dx_[static_cast<std::size_t>(e)] = stencils.offset(e)[0];
-  }
+  std::array<Index, D> storage{};
+  for (int a = 0; a < D; ++a) storage[static_cast<std::size_t>(a)] = local.extent(a);
+  flat_ = stencils.flatOffsets(storage);
   table_ = freshStencilNumbers(static_cast<std::uint64_t>(std::max<Index>(stencils.typeCount(), 1)));
 }
 
@@ -96,9 +91,10 @@ void LocalStencils<D>::multiply(const Real* x, Real* y) const {
     for (Index i = owned_.lo[0]; i < std::min(middleFirst, owned_.hi[0]); ++i) single(i);
     if (middleLast > middleFirst) {
       const Index type = base + depth, count = middleLast - middleFirst;
-      const auto b = static_cast<std::size_t>(stencils.begin(type));
-      const StencilView view{stencils.block(stencils.begin(type)), flat_.data() + b, dx_.data() + b,
-                             stencils.end(type) - stencils.begin(type), table_ + static_cast<std::uint64_t>(type)};
+      // The type's stencil with the local box's offsets, under this table's own numbers.
+      StencilView view = stencils.view(type);
+      view.flat = flat_.data() + stencils.begin(type);
+      view.table = table_ + static_cast<std::uint64_t>(type);
       thread_local StencilRunCache cache;
       thread_local std::vector<Real> run;
       if (run.size() < static_cast<std::size_t>(D * count)) run.resize(static_cast<std::size_t>(D * count));

@@ -38,7 +38,6 @@ class LocalStencils {
   const LatticeStencils<D>* stencils_;
   Box<D> owned_, local_;
   std::vector<Index> flat_;  // per entry: the offset as a node-index difference in the local box
-  std::vector<Index> dx_;    // per entry: the offset's x part
   std::uint64_t table_ = 0;  // stencil numbers of these offsets (freshStencilNumbers)
 };
 

@@ -52,14 +52,20 @@ LatticeStencils<D>::LatticeStencils(const LatticeRowTypes<D>& types, const Spars
 template <int D>
 void LatticeStencils<D>::bind() {
   table_ = freshStencilNumbers(static_cast<std::uint64_t>(std::max<Index>(typeCount(), 1)));
-  flat_.resize(offset_.size());
+  flat_ = flatOffsets(types_.nodes());
   dx_.resize(offset_.size());
+  for (std::size_t e = 0; e < offset_.size(); ++e) dx_[e] = offset_[e][0];
+}
+
+template <int D>
+std::vector<Index> LatticeStencils<D>::flatOffsets(const std::array<Index, D>& storage) const {
+  std::vector<Index> flat(offset_.size());
   for (std::size_t e = 0; e < offset_.size(); ++e) {
-    dx_[e] = offset_[e][0];
-    Index flat = 0;
-    for (int a = D - 1; a >= 0; --a) flat = flat * types_.nodes()[static_cast<std::size_t>(a)] + offset_[e][static_cast<std::size_t>(a)];
-    flat_[e] = flat;
+    Index f = 0;
+    for (int a = D - 1; a >= 0; --a) f = f * storage[static_cast<std::size_t>(a)] + offset_[e][static_cast<std::size_t>(a)];
+    flat[e] = f;
   }
+  return flat;
 }
 
 template <int D>

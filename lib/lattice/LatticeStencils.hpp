@@ -60,6 +60,10 @@ class LatticeStencils {
   // same method: 0 (up to round-off) when the stencils give every row of it.
   Real mismatch(const SparseMatrix& matrix) const;
 
+  // Each entry's offset as a node-index difference in an array of `storage` nodes per axis (x
+  // fastest): the lattice's own (bind) or a rank's local box (lib/decomposition/LocalStencils).
+  std::vector<Index> flatOffsets(const std::array<Index, D>& storage) const;
+
   // The node an entry of node p's row reads.
   Index column(Index entry, Index p) const { return p + flat_[static_cast<std::size_t>(entry)]; }
   // The stencil of a type, for stencilRun.

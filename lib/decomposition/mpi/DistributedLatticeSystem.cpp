@@ -106,15 +106,6 @@ Vector DistributedLatticeSystem<D>::restrict(const Vector& whole) const {
   return part;
 }
 
-template <int D>
-void DistributedLatticeSystem<D>::scatterInto(const Vector& part, Vector& whole) const {
-  Box<D> all;
-  all.hi = serial_.types().nodes();
-  owned().forEachNode([&](const std::array<Index, D>& node) {
-    for (int c = 0; c < D; ++c) whole[D * all.localIndex(node) + c] = part[D * owned().localIndex(node) + c];
-  });
-}
-
 template class DistributedLatticeSystem<1>;
 template class DistributedLatticeSystem<2>;
 template class DistributedLatticeSystem<3>;

@@ -41,9 +41,10 @@ class DistributedLatticeSystem : public SecondOrderSystem {
   Real strainEnergy(const Vector& u);
 
   const Box<D>& owned() const { return exchange_->plan().owned(); }
-  // The owned part of a whole-lattice vector (D values per node), and back into one.
+  // The halo exchange of each acceleration (its plan, bytes and messages).
+  const HaloExchange<D>& exchange() const { return *exchange_; }
+  // The owned part of a whole-lattice vector (D values per node).
   Vector restrict(const Vector& whole) const;
-  void scatterInto(const Vector& owned, Vector& whole) const;
 
  private:
   // u into the local box, halo exchanged; then K u for the owned rows into ku_.
