@@ -57,7 +57,7 @@ LocalStencils<D>::LocalStencils(const LatticeStencils<D>& stencils, const Box<D>
 }
 
 template <int D>
-void LocalStencils<D>::multiply(const Real* x, Real* y) const {
+void LocalStencils<D>::multiply(const Real* x, Real* y, const std::vector<char>* direct) const {
   const LatticeStencils<D>& stencils = *stencils_;
   const LatticeRowTypes<D>& types = stencils.types();
   const Index nx = types.nodes()[0], depth = types.depth();
@@ -89,7 +89,9 @@ void LocalStencils<D>::multiply(const Real* x, Real* y) const {
                             y + D * (out + i - owned_.lo[0]));
     };
     for (Index i = owned_.lo[0]; i < std::min(middleFirst, owned_.hi[0]); ++i) single(i);
-    if (middleLast > middleFirst) {
+    if (middleLast > middleFirst && direct && (*direct)[static_cast<std::size_t>(base + depth)]) {
+      for (Index i = middleFirst; i < middleLast; ++i) single(i);
+    } else if (middleLast > middleFirst) {
       const Index type = base + depth, count = middleLast - middleFirst;
       // The type's stencil with the local box's offsets, under this table's own numbers.
       StencilView view = stencils.view(type);

@@ -31,8 +31,10 @@ class LocalStencils {
   const Box<D>& local() const { return local_; }
 
   // y (D values per owned node, in the owned box's order) = the owned rows applied to x (D values
-  // per node of the local box, in its order). OpenMP-parallel over lines along x.
-  void multiply(const Real* x, Real* y) const;
+  // per node of the local box, in its order). OpenMP-parallel over lines along x. `direct`, when
+  // given, marks the row types whose middle of line is computed row by row, as the serial
+  // LatticeStencils::forEachProduct does for its `direct` types (the dashpot rows of a fused solve).
+  void multiply(const Real* x, Real* y, const std::vector<char>* direct = nullptr) const;
 
  private:
   const LatticeStencils<D>* stencils_;

@@ -203,6 +203,20 @@ LatticeSecondOrderSystem<D>::LatticeSecondOrderSystem(LatticeStencils<D> mass, L
 }
 
 template <int D>
+LatticeSecondOrderSystem<D>::LatticeSecondOrderSystem(LatticeStencils<D> mass, LatticeStencils<D> damping,
+                                                      LatticeStencils<D> stiffness, std::vector<SparseLoad> loads)
+    : LatticeSecondOrderSystem(std::move(mass), std::move(damping), std::move(stiffness)) {
+  if (loads.empty()) return;
+  for (const SparseLoad& load : loads)
+    for (Index dof : load.dofs)
+      if (dof < 0 || dof >= size())
+        throw InputError("loads", "dof " + std::to_string(dof) + " is outside the system's " + std::to_string(size()) +
+                                      " unknowns");
+  loads_ = std::make_shared<const std::vector<SparseLoad>>(std::move(loads));
+  force_ = [loads = loads_](Real t, Eigen::Ref<Vector> f) { addSparseLoads(*loads, t, f.data()); };
+}
+
+template <int D>
 std::vector<Real> LatticeSecondOrderSystem<D>::inverseBlocks(Real s) const {
   const Index typeCount = stiffness_.typeCount();
   std::vector<Real> inverse(static_cast<std::size_t>(D * D * typeCount));
@@ -286,6 +300,15 @@ Real LatticeSecondOrderSystem<D>::strainEnergy(const Vector& u) const {
   Real sum = 0;
   for (Real s : lineSums) sum += s;
   return 0.5 * sum;
+}
+
+template <int D>
+Real LatticeSecondOrderSystem<D>::dot(const Vector& a, const Vector& b) const {
+  return sumOverLatticeNodes<D>(types(), [&](Index p, Index) {
+    Real s = 0;
+    for (int c = 0; c < D; ++c) s += a[D * p + c] * b[D * p + c];
+    return s;
+  });
 }
 
 template <int D>

@@ -12,8 +12,10 @@
 
 #include "lattice/LatticeStencils.hpp"
 #include "systems/LinearOperatorSystem.hpp"
+#include "systems/SparseLoads.hpp"
 
 #include <functional>
+#include <memory>
 
 namespace mfwave {
 
@@ -28,18 +30,30 @@ class LatticeSecondOrderSystem : public LinearOperatorSystem {
   // dashpots on another lattice.
   LatticeSecondOrderSystem(LatticeStencils<D> mass, LatticeStencils<D> damping, LatticeStencils<D> stiffness,
                            ForceFunction force = {});
+  // The same with the loads as nonzero entries (SparseLoads.hpp), which a rank can restrict to the
+  // nodes it owns (lib/decomposition); an empty list is no load.
+  LatticeSecondOrderSystem(LatticeStencils<D> mass, LatticeStencils<D> damping, LatticeStencils<D> stiffness,
+                           std::vector<SparseLoad> loads);
 
   Index size() const override { return D * stiffness_.types().nodeCount(); }
   bool hasDamping() const override { return hasDamping_; }
   void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) override;
 
   void force(Real t, Vector& f) const override;
-  void setForce(ForceFunction force) { force_ = std::move(force); }
+  void setForce(ForceFunction force) {
+    force_ = std::move(force);
+    loads_.reset();
+  }
   bool hasForce() const { return static_cast<bool>(force_); }
+  // The loads as nonzero entries when the system was built from them; null for a force given as a
+  // function (or set by setForce).
+  const std::vector<SparseLoad>* sparseLoads() const { return loads_.get(); }
   void applyStiffness(const Vector& x, Vector& y) const override { stiffness_.multiply(x, y); }
   Real kineticEnergy(const Vector& v) const override;
   Real strainEnergy(const Vector& u) const override;
   Real dampingPower(const Vector& v) const override;
+  // Per lattice line along x node by node, then the lines in order (as the energies).
+  Real dot(const Vector& a, const Vector& b) const override;
   Vector lumpedMass() const override;
   Vector stiffnessAbsoluteRowSums() const override { return stiffness_.absoluteRowSums(); }
   std::unique_ptr<CentredDampingSolve> centredDamping(Real dt, const std::vector<Index>& prescribedDofs) const override;
@@ -60,6 +74,7 @@ class LatticeSecondOrderSystem : public LinearOperatorSystem {
  private:
   LatticeStencils<D> mass_, damping_, stiffness_;
   ForceFunction force_;
+  std::shared_ptr<const std::vector<SparseLoad>> loads_;  // shared with force_
   bool hasDamping_ = false;
   std::vector<Real> inverseMass_;  // per type
 };

@@ -46,8 +46,12 @@ void LinearEnergyLedger::integrate(const StateView& state) {
   const bool quiet = previousTime_ > options_.quietAfter;
   if (!quiet) {
     system_.force(state.time, force_);
-    // one lazy expression: no displacement-sized temporary
-    loadWork_ += 0.5 * (previousForce_ + force_).dot(state.displacement - previousDisplacement_);
+    // In place, no displacement-sized temporary: f_prev + f_now into previousForce_ and u - u_prev
+    // into previousDisplacement_ (reset to u below while the loads act, unused once they are quiet).
+    // The system's dot fixes the order of the sum (a distributed system's is its serial one).
+    previousForce_ += force_;
+    previousDisplacement_ = state.displacement - previousDisplacement_;
+    loadWork_ += 0.5 * system_.dot(previousForce_, previousDisplacement_);
     previousForce_.swap(force_);
   }
   if (system_.hasDamping()) {

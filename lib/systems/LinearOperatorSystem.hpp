@@ -35,6 +35,9 @@ class LinearOperatorSystem : public SecondOrderSystem {
   virtual Real kineticEnergy(const Vector& v) const = 0;
   virtual Real strainEnergy(const Vector& u) const = 0;
   virtual Real dampingPower(const Vector& v) const = 0;
+  // a . b over all the system's unknowns (the load work of the energy ledger). A system may fix the
+  // order of the sum, so that a distributed system (lib/decomposition) gives its serial bits.
+  virtual Real dot(const Vector& a, const Vector& b) const { return a.dot(b); }
   // The diagonal of a lumped M; throws InputError("mass") when M is not diagonal.
   virtual Vector lumpedMass() const = 0;
   // sum_j |K_ij| for every row i (Gershgorin).

@@ -3,19 +3,44 @@
 #include "core/Error.hpp"
 #include "decomposition/mpi/LineSums.hpp"
 
+#include <algorithm>
 #include <string>
 
 namespace mfwave {
+
+namespace {
+
+// Ding-Long-Wu eq. (32) on one rank's nodes: the per-type inverse blocks of M + dt/2 C, applied by
+// DistributedLatticeSystem::solve (the serial LatticeCentredDamping without prescribed dofs).
+template <int D>
+class DistributedCentredDamping : public CentredDampingSolve {
+ public:
+  DistributedCentredDamping(const DistributedLatticeSystem<D>& system, std::vector<Real> inverse)
+      : system_(system), inverse_(std::move(inverse)) {}
+
+  void acceleration(Real t, const Vector& u, const Vector& vHalf, const Vector&, Vector& a) override {
+    a.resize(system_.size());
+    system_.solve(inverse_, t, u.data(), vHalf.data(), a.data());
+  }
+
+ private:
+  const DistributedLatticeSystem<D>& system_;
+  std::vector<Real> inverse_;
+};
+
+}  // namespace
 
 template <int D>
 DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSystem<D>& serial,
                                                       const BlockDecomposition<D>& decomposition, int rank,
                                                       MPI_Comm communicator)
     : serial_(serial), decomposition_(decomposition), rank_(rank), communicator_(communicator) {
-  if (serial.hasDamping())
-    throw InputError("damping", "the distributed lattice system does not take dashpots yet (docs/scaling.md)");
-  if (serial.hasForce())
-    throw InputError("loads", "the distributed lattice system does not take loads yet (docs/scaling.md)");
+  if (serial.hasDamping() && !serial.damping().blockDiagonal())
+    throw InputError("damping", "the distributed lattice system takes dashpots on each node's own dofs only; these "
+                                "couple nodes (docs/scaling.md)");
+  if (serial.hasForce() && !serial.sparseLoads())
+    throw InputError("loads", "the distributed lattice system needs its loads as nonzero entries (SparseLoads), not "
+                              "as a function of the whole lattice's vector");
   if (decomposition.grid()[0] != 1)
     throw InputError("ranks", "the decomposition splits x into " + std::to_string(decomposition.grid()[0]) +
                                   " blocks; the distributed system needs whole lattice lines per rank");
@@ -23,13 +48,30 @@ DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSy
                                                 communicator);
   stiffness_ = std::make_unique<LocalStencils<D>>(serial.stiffness(), exchange_->plan().owned(), exchange_->plan().local());
   inverseMass_ = serial.inverseBlocks(0);
-  massFlat_.assign(static_cast<std::size_t>(serial.mass().entryCount()), 0);
+  nodeFlat_.assign(static_cast<std::size_t>(std::max(serial.mass().entryCount(), serial.damping().entryCount())), 0);
+  for (Index type = 0; type < serial.stiffness().typeCount(); ++type)
+    dashpotTypes_.push_back(serial.hasDamping() && serial.damping().begin(type) != serial.damping().end(type));
   local_.resize(static_cast<std::size_t>(exchange_->localSize()));
   ku_.resize(static_cast<std::size_t>(size()));
+  // The loads' owned entries, in their serial order: each owned dof receives the same additions.
+  if (const std::vector<SparseLoad>* loads = serial.sparseLoads()) {
+    const LatticeRowTypes<D>& types = serial.types();
+    for (const SparseLoad& load : *loads) {
+      SparseLoad mine;
+      mine.history = load.history;
+      for (std::size_t k = 0; k < load.dofs.size(); ++k) {
+        const std::array<Index, D> node = types.node(load.dofs[k] / D);
+        if (!owned().contains(node)) continue;
+        mine.dofs.push_back(D * owned().localIndex(node) + load.dofs[k] % D);
+        mine.values.push_back(load.values[k]);
+      }
+      loads_.push_back(std::move(mine));
+    }
+  }
 }
 
 template <int D>
-void DistributedLatticeSystem<D>::applyStiffness(const Real* u) {
+void DistributedLatticeSystem<D>::multiplyStiffness(const Real* u, const std::vector<char>* direct) const {
   const Box<D>& own = owned();
   const Box<D>& local = exchange_->plan().local();
   own.forEachNode([&](const std::array<Index, D>& node) {
@@ -38,21 +80,31 @@ void DistributedLatticeSystem<D>::applyStiffness(const Real* u) {
     for (int c = 0; c < D; ++c) to[c] = from[c];
   });
   exchange_->exchange(local_.data());
-  stiffness_->multiply(local_.data(), ku_.data());
+  stiffness_->multiply(local_.data(), ku_.data(), direct);
 }
 
 template <int D>
-void DistributedLatticeSystem<D>::acceleration(Real, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector>,
-                                               Eigen::Ref<Vector> a) {
-  applyStiffness(u.data());
+void DistributedLatticeSystem<D>::solve(const std::vector<Real>& inverseBlocks, Real t, const Real* u, const Real* v,
+                                        Real* a) const {
+  std::fill(a, a + size(), 0.0);
+  addSparseLoads(loads_, t, a);
+  const bool damped = serial_.hasDamping() && v != nullptr;
+  multiplyStiffness(u, damped ? &dashpotTypes_ : nullptr);
   const LatticeRowTypes<D>& types = serial_.types();
+  const LatticeStencils<D>& damping = serial_.damping();
   const Box<D>& own = owned();
   own.forEachNode([&](const std::array<Index, D>& node) {
     const Index k = own.localIndex(node);
-    // LatticeSecondOrderSystem::fusedSolve with a = 0 (no loads): r = a - K u, a = M^-1 r.
+    const Index type = types.typeOf(node);
+    // LatticeSecondOrderSystem::fusedSolve: r = f - K u - C v, a = B r.
     Real r[D];
-    for (int c = 0; c < D; ++c) r[c] = 0.0 - ku_[static_cast<std::size_t>(D * k + c)];
-    const Real* b = &inverseMass_[static_cast<std::size_t>(D * D * types.typeOf(node))];
+    for (int c = 0; c < D; ++c) r[c] = a[D * k + c] - ku_[static_cast<std::size_t>(D * k + c)];
+    if (damped && damping.begin(type) != damping.end(type)) {
+      Real cv[D];
+      damping.rowProductAt(type, v + D * k, nodeFlat_.data(), cv);
+      for (int c = 0; c < D; ++c) r[c] -= cv[c];
+    }
+    const Real* b = &inverseBlocks[static_cast<std::size_t>(D * D * type)];
     for (int c = 0; c < D; ++c) {
       Real s = 0;
       for (int d = 0; d < D; ++d) s += b[D * c + d] * r[d];
@@ -62,37 +114,122 @@ void DistributedLatticeSystem<D>::acceleration(Real, Eigen::Ref<const Vector> u,
 }
 
 template <int D>
-Real DistributedLatticeSystem<D>::kineticEnergy(const Vector& v) const {
-  // LatticeSecondOrderSystem::kineticEnergy: v . M v per node (row by row), summed per line.
+void DistributedLatticeSystem<D>::acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v,
+                                               Eigen::Ref<Vector> a) {
+  solve(inverseMass_, t, u.data(), v.size() == size() ? v.data() : nullptr, a.data());
+}
+
+template <int D>
+void DistributedLatticeSystem<D>::force(Real t, Vector& f) const {
+  f.setZero(size());
+  addSparseLoads(loads_, t, f.data());
+}
+
+template <int D>
+void DistributedLatticeSystem<D>::applyStiffness(const Vector& x, Vector& y) const {
+  multiplyStiffness(x.data());
+  y = Eigen::Map<const Vector>(ku_.data(), size());
+}
+
+template <int D>
+template <class Function>
+Real DistributedLatticeSystem<D>::sumOverOwnedNodes(Function&& g) const {
+  // Line by line along x in node order, as sumOverLatticeNodes adds them; the lines over the ranks
+  // in the lattice's order.
   const Box<D>& own = owned();
   const LatticeRowTypes<D>& types = serial_.types();
   const Index nx = own.extent(0);
   std::vector<Real> lineSums(static_cast<std::size_t>(own.count() / nx), 0.0);
   own.forEachNode([&](const std::array<Index, D>& node) {
     const Index k = own.localIndex(node);
-    Real mv[D];
-    serial_.mass().rowProductAt(types.typeOf(node), v.data() + D * k, massFlat_.data(), mv);
-    Real s = 0;
-    for (int c = 0; c < D; ++c) s += v[D * k + c] * mv[c];
-    lineSums[static_cast<std::size_t>(k / nx)] += s;
+    lineSums[static_cast<std::size_t>(k / nx)] += g(k, types.typeOf(node));
   });
-  return 0.5 * sumInLatticeOrder(decomposition_, rank_, lineSums, communicator_);
+  return sumInLatticeOrder(decomposition_, rank_, lineSums, communicator_);
 }
 
 template <int D>
-Real DistributedLatticeSystem<D>::strainEnergy(const Vector& u) {
-  // LatticeSecondOrderSystem::strainEnergy: u . K u per node, summed per line.
-  applyStiffness(u.data());
+Real DistributedLatticeSystem<D>::kineticEnergy(const Vector& v) const {
+  return 0.5 * sumOverOwnedNodes([&](Index k, Index type) {
+           Real mv[D];
+           serial_.mass().rowProductAt(type, v.data() + D * k, nodeFlat_.data(), mv);
+           Real s = 0;
+           for (int c = 0; c < D; ++c) s += v[D * k + c] * mv[c];
+           return s;
+         });
+}
+
+template <int D>
+Real DistributedLatticeSystem<D>::strainEnergy(const Vector& u) const {
+  multiplyStiffness(u.data());
+  return 0.5 * sumOverOwnedNodes([&](Index k, Index) {
+           Real s = 0;
+           for (int c = 0; c < D; ++c) s += u[D * k + c] * ku_[static_cast<std::size_t>(D * k + c)];
+           return s;
+         });
+}
+
+template <int D>
+Real DistributedLatticeSystem<D>::dampingPower(const Vector& v) const {
+  if (!serial_.hasDamping()) return 0;
+  // The serial sum adds only the nodes with dashpots; the others add nothing here either (a line
+  // without dashpots sums to +0 in both).
+  const LatticeStencils<D>& damping = serial_.damping();
   const Box<D>& own = owned();
+  const LatticeRowTypes<D>& types = serial_.types();
   const Index nx = own.extent(0);
   std::vector<Real> lineSums(static_cast<std::size_t>(own.count() / nx), 0.0);
   own.forEachNode([&](const std::array<Index, D>& node) {
+    const Index type = types.typeOf(node);
+    if (damping.begin(type) == damping.end(type)) return;
     const Index k = own.localIndex(node);
-    Real s = 0;
-    for (int c = 0; c < D; ++c) s += u[D * k + c] * ku_[static_cast<std::size_t>(D * k + c)];
-    lineSums[static_cast<std::size_t>(k / nx)] += s;
+    Real cv[D];
+    damping.rowProductAt(type, v.data() + D * k, nodeFlat_.data(), cv);
+    Real& sum = lineSums[static_cast<std::size_t>(k / nx)];
+    for (int c = 0; c < D; ++c) sum += v[D * k + c] * cv[c];
   });
-  return 0.5 * sumInLatticeOrder(decomposition_, rank_, lineSums, communicator_);
+  return sumInLatticeOrder(decomposition_, rank_, lineSums, communicator_);
+}
+
+template <int D>
+Real DistributedLatticeSystem<D>::dot(const Vector& a, const Vector& b) const {
+  return sumOverOwnedNodes([&](Index k, Index) {
+    Real s = 0;
+    for (int c = 0; c < D; ++c) s += a[D * k + c] * b[D * k + c];
+    return s;
+  });
+}
+
+template <int D>
+Vector DistributedLatticeSystem<D>::lumpedMass() const {
+  const Vector perType = [&] {  // the serial diagonal per type (throws InputError("mass") as it does)
+    Vector diagonal(D * serial_.mass().typeCount());
+    for (Index type = 0; type < serial_.mass().typeCount(); ++type) {
+      Real b[D * D];
+      serial_.mass().typeSum(type, b);
+      for (int c = 0; c < D; ++c) {
+        for (int d = 0; d < D; ++d)
+          if (c != d && b[D * c + d] != 0) throw InputError("mass", "needs a diagonal (lumped) mass matrix");
+        diagonal[D * type + c] = b[D * c + c];
+      }
+    }
+    return diagonal;
+  }();
+  Vector m(size());
+  const LatticeRowTypes<D>& types = serial_.types();
+  owned().forEachNode([&](const std::array<Index, D>& node) {
+    const Index k = owned().localIndex(node);
+    for (int c = 0; c < D; ++c) m[D * k + c] = perType[D * types.typeOf(node) + c];
+  });
+  return m;
+}
+
+template <int D>
+std::unique_ptr<CentredDampingSolve> DistributedLatticeSystem<D>::centredDamping(
+    Real dt, const std::vector<Index>& prescribedDofs) const {
+  if (!prescribedDofs.empty())
+    throw InputError("prescribed_displacement",
+                     "the distributed lattice system does not take prescribed displacements yet (docs/scaling.md)");
+  return std::make_unique<DistributedCentredDamping<D>>(*this, serial_.inverseBlocks(0.5 * dt));
 }
 
 template <int D>

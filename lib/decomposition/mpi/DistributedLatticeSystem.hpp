@@ -1,19 +1,23 @@
 #pragma once
-// M u'' + K u = 0 on a box lattice, one rank's share (issue 22): the same stencils as the serial
-// LatticeSecondOrderSystem, the state of the nodes this rank owns only, the halo of u exchanged
-// once per acceleration. Any SecondOrderSystem integrator steps it unchanged on the owned vectors
-// (integrators never see particles, nor ranks), and since every owned node's acceleration is the
-// serial one bit for bit (LocalStencils, the same inverse mass blocks, the same expressions as
-// LatticeSecondOrderSystem::fusedSolve), a run on any number of ranks keeps the serial bits.
-// The energies are summed in the serial order over the ranks (LineSums.hpp).
+// M u'' + C u' + K u = f(t) on a box lattice, one rank's share (issue 22): the same stencils as the
+// serial LatticeSecondOrderSystem, the state of the nodes this rank owns only, the halo of u
+// exchanged once per stiffness product. Any integrator of a LinearOperatorSystem steps it unchanged
+// on the owned vectors (integrators never see particles, nor ranks): central difference takes its
+// dashpot solve (Ding-Long-Wu eq. (32)) from centredDamping(), the energy ledger its energies and
+// load work from the methods below. Every owned node's acceleration is the serial one bit for bit
+// (LocalStencils, the same inverse blocks, the same expressions as
+// LatticeSecondOrderSystem::fusedSolve, the loads added in the same order), so a run on any number
+// of ranks keeps the serial bits; the energies, the dashpot power and dot() are summed in the
+// serial order over the ranks (LineSums.hpp), so every rank's figures are the serial ones too.
 //
-// This first step covers undamped systems without loads; dashpots, loads and prescribed
-// displacements come next (docs/scaling.md).
+// Covered: dashpots on each node's own dofs (block-diagonal C, the Galerkin very weak SPH's
+// transmitting faces), loads given as nonzero entries (SparseLoads.hpp). Not yet: dashpots that
+// couple nodes (their factorised surface solve), prescribed displacements (docs/scaling.md).
 
 #include "decomposition/LocalStencils.hpp"
 #include "decomposition/mpi/HaloExchange.hpp"
 #include "lattice/LatticeSecondOrderSystem.hpp"
-#include "systems/SecondOrderSystem.hpp"
+#include "systems/LinearOperatorSystem.hpp"
 
 #include <mpi.h>
 
@@ -23,32 +27,55 @@
 namespace mfwave {
 
 template <int D>
-class DistributedLatticeSystem : public SecondOrderSystem {
+class DistributedLatticeSystem : public LinearOperatorSystem {
  public:
-  // `decomposition` must keep x whole (the energies' order) and outlive this object. Throws
-  // InputError("damping") for a system with dashpots, InputError("loads") for one with loads,
-  // InputError("ranks") for a decomposition that splits x.
+  // `serial` and `decomposition` must outlive this object; `decomposition` must keep x whole (the
+  // sums' order). Throws InputError("damping") for dashpots that couple nodes, InputError("loads")
+  // for a force given as a function rather than as sparse loads, InputError("ranks") for a
+  // decomposition that splits x.
   DistributedLatticeSystem(const LatticeSecondOrderSystem<D>& serial, const BlockDecomposition<D>& decomposition,
                            int rank, MPI_Comm communicator);
 
   // D values per owned node, in the owned box's order.
   Index size() const override { return D * owned().count(); }
-  bool dependsOnVelocity() const override { return false; }
+  bool hasDamping() const override { return serial_.hasDamping(); }
   void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) override;
 
-  // Over all ranks, bitwise the serial system's (every rank gets the total).
-  Real kineticEnergy(const Vector& v) const;
-  Real strainEnergy(const Vector& u);
+  // The owned part of f(t).
+  void force(Real t, Vector& f) const override;
+  // The owned rows of K x (x owned; its halo is exchanged).
+  void applyStiffness(const Vector& x, Vector& y) const override;
+  // Over all ranks, bitwise the serial system's (every rank gets the total; every rank must call).
+  Real kineticEnergy(const Vector& v) const override;
+  Real strainEnergy(const Vector& u) const override;
+  Real dampingPower(const Vector& v) const override;
+  Real dot(const Vector& a, const Vector& b) const override;
+  // The owned part of the serial figures. stiffnessAbsoluteRowSums builds the whole lattice's
+  // vector first: a set-up cost of D N values per rank (the stable step is estimated on the serial
+  // system anyway, docs/scaling.md).
+  Vector lumpedMass() const override;
+  Vector stiffnessAbsoluteRowSums() const override { return restrict(serial_.stiffnessAbsoluteRowSums()); }
+  // Eq. (32) with (M + dt/2 C)^-1 per row type. Throws InputError("prescribed_displacement") for
+  // prescribed dofs.
+  std::unique_ptr<CentredDampingSolve> centredDamping(Real dt, const std::vector<Index>& prescribedDofs) const override;
 
   const Box<D>& owned() const { return exchange_->plan().owned(); }
-  // The halo exchange of each acceleration (its plan, bytes and messages).
+  // The halo exchange of each stiffness product (its plan, bytes and messages).
   const HaloExchange<D>& exchange() const { return *exchange_; }
   // The owned part of a whole-lattice vector (D values per node).
   Vector restrict(const Vector& whole) const;
+  // B_type (f - K u - C v) for every owned node into a: the acceleration with B = M^-1, the dashpot
+  // solve of eq. (32) with B = (M + dt/2 C)^-1 (LatticeSecondOrderSystem::fusedSolve's rows).
+  void solve(const std::vector<Real>& inverseBlocks, Real t, const Real* u, const Real* v, Real* a) const;
 
  private:
-  // u into the local box, halo exchanged; then K u for the owned rows into ku_.
-  void applyStiffness(const Real* u);
+  // u into the local box, halo exchanged; then K u for the owned rows into ku_. `direct` as
+  // LocalStencils::multiply's (the serial fused solve's dashpot types when damped).
+  void multiplyStiffness(const Real* u, const std::vector<char>* direct = nullptr) const;
+  // Adds the sum over the ranks' owned line sums of g(k, type) (k the owned node, in its box's
+  // order), in the serial order.
+  template <class Function>
+  Real sumOverOwnedNodes(Function&& g) const;
 
   const LatticeSecondOrderSystem<D>& serial_;
   const BlockDecomposition<D>& decomposition_;
@@ -57,8 +84,10 @@ class DistributedLatticeSystem : public SecondOrderSystem {
   std::unique_ptr<HaloExchange<D>> exchange_;
   std::unique_ptr<LocalStencils<D>> stiffness_;
   std::vector<Real> inverseMass_;  // per type (LatticeSecondOrderSystem::inverseBlocks(0))
-  std::vector<Index> massFlat_;    // zeros: the mass is block-diagonal
-  std::vector<Real> local_, ku_;
+  std::vector<Index> nodeFlat_;    // zeros: the mass and dashpots act on a node's own dofs
+  std::vector<SparseLoad> loads_;  // the owned entries, dofs owned
+  std::vector<char> dashpotTypes_; // per row type: has dashpots
+  mutable std::vector<Real> local_, ku_;
 };
 
 extern template class DistributedLatticeSystem<1>;

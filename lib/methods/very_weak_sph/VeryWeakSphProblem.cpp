@@ -45,21 +45,8 @@ VeryWeakSph<D> assemblyFor(const ParticleSet<D>& particles, const NeighbourList&
   return assembleVeryWeakSph<D>(particles, neighbours, kernel, settings.options);
 }
 
-// Loads as their nonzero entries: what the lattice storage keeps of a nodal force.
-struct SparseLoad {
-  std::vector<Index> dofs;
-  std::vector<Real> values;
-  const TimeFunction* history;
-};
-
 void appendNonzeros(const Vector& force, const TimeFunction* history, std::vector<SparseLoad>& loads) {
-  SparseLoad load{{}, {}, history};
-  for (Index i = 0; i < force.size(); ++i)
-    if (force[i] != 0) {
-      load.dofs.push_back(i);
-      load.values.push_back(force[i]);
-    }
-  loads.push_back(std::move(load));
+  loads.push_back(nonzeroLoad(force, history));
 }
 
 }  // namespace
@@ -210,17 +197,8 @@ void VeryWeakSphProblem<D>::buildLattice(const ParticleSet<D>& particles,
   }
   for (const SparseLoad& load : loads)
     loadBytes_ += load.dofs.size() * (sizeof(Index) + sizeof(Real));
-  typename LatticeSecondOrderSystem<D>::ForceFunction force;
-  if (!loads.empty())
-    force = [loads = std::move(loads)](Real t, Eigen::Ref<Vector> f) {
-      for (const SparseLoad& load : loads) {
-        const Real scale = (*load.history)(t);
-        if (scale == 0) continue;
-        for (std::size_t k = 0; k < load.dofs.size(); ++k) f[load.dofs[k]] += scale * load.values[k];
-      }
-    };
   lattice_ = std::make_unique<LatticeSecondOrderSystem<D>>(std::move(stencils.mass), std::move(stencils.damping),
-                                                           std::move(stencils.stiffness), std::move(force));
+                                                           std::move(stencils.stiffness), std::move(loads));
   if (settings.deconvolution)
     deconvolutionStencils_ = std::make_unique<LatticeStencils<D>>(std::move(stencils.deconvolution));
   // the smoothing filter (eq. (33)) from its stencils
