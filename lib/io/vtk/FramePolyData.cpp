@@ -15,7 +15,7 @@ namespace {
 
 vtkSmartPointer<vtkDoubleArray> toArray(const ParticleField& field, Index count) {
   // Vectors get 3 components whatever the dimension; the missing ones stay zero.
-  const int written = field.kind == FieldKind::VectorField ? 3 : field.components;
+  const int written = writtenComponents(field);
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(field.name.c_str());
   array->SetNumberOfComponents(written);
@@ -43,7 +43,10 @@ vtkSmartPointer<vtkPolyData> makePolyData(const ParticleFrame<D>& frame) {
   std::fill(xyz, xyz + 3 * n, 0.0);  // the axes beyond D stay zero
   for (std::size_t a = 0; a < static_cast<std::size_t>(D); ++a) {
     const std::vector<Real>& axis = (*frame.positions)[a];
-    for (std::size_t p = 0; p < n; ++p) xyz[3 * p + a] = axis[p];
+    if (frame.indices != nullptr)
+      for (std::size_t p = 0; p < n; ++p) xyz[3 * p + a] = axis[static_cast<std::size_t>((*frame.indices)[p])];
+    else
+      for (std::size_t p = 0; p < n; ++p) xyz[3 * p + a] = axis[p];
   }
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetData(coordinates);

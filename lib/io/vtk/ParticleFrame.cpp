@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 
+#include <algorithm>
 #include <set>
 
 namespace mfwave {
@@ -29,11 +30,23 @@ template <int D>
 void checkFrame(const ParticleFrame<D>& frame) {
   if (frame.positions == nullptr) throw Error("particle frame: no positions");
   if (frame.count < 0) throw Error("particle frame: negative particle count " + std::to_string(frame.count));
+  if (frame.indices != nullptr && static_cast<Index>(frame.indices->size()) != frame.count)
+    throw Error("particle frame: " + std::to_string(frame.indices->size()) + " particle indices for count " +
+                std::to_string(frame.count));
+  // The largest coordinate index the frame reads: count - 1, or the largest of its indices.
+  Index last = frame.count - 1;
+  if (frame.indices != nullptr && !frame.indices->empty()) {
+    const auto [low, high] = std::minmax_element(frame.indices->begin(), frame.indices->end());
+    if (*low < 0) throw Error("particle frame: negative particle index " + std::to_string(*low));
+    last = *high;
+  }
   for (int a = 0; a < D; ++a) {
     const auto available = static_cast<Index>((*frame.positions)[static_cast<std::size_t>(a)].size());
-    if (frame.count > available)
-      throw Error("particle frame: count " + std::to_string(frame.count) + " exceeds the " +
-                  std::to_string(available) + " coordinates on axis " + std::to_string(a));
+    if (last >= available)
+      throw Error("particle frame: " +
+                  (frame.indices != nullptr ? "particle index " + std::to_string(last)
+                                            : "count " + std::to_string(frame.count)) +
+                  " exceeds the " + std::to_string(available) + " coordinates on axis " + std::to_string(a));
   }
   std::set<std::string> names;
   for (const auto& field : frame.fields) {
@@ -54,6 +67,10 @@ void checkFrame(const ParticleFrame<D>& frame) {
                   " values, expected " + std::to_string(expected) + " (" + std::to_string(frame.count) +
                   " particles x " + std::to_string(field.components) + " components)");
   }
+}
+
+int writtenComponents(const ParticleField& field) {
+  return field.kind == FieldKind::VectorField ? 3 : field.components;
 }
 
 ParticleField fieldFromState(std::string name, const Vector& state, int components, Index count, FieldKind kind) {

@@ -32,6 +32,9 @@ struct ParticleField {
 // One frame: the first `count` particles of `positions` (e.g. the physical ones only, leaving
 // out ghosts), their fields, and the time. Positions are pointed to, not copied, so a frame of a
 // large cloud costs nothing until it is written; the coordinates must outlive the frame.
+// With `indices` set, the frame's point p is instead particle (*indices)[p] of `positions`, and
+// count must equal indices->size(): the particles one rank owns in a distributed run, written
+// without copying their coordinates (the index list must outlive the frame too).
 // 1-D and 2-D positions are padded with zeros to 3-D points on output.
 template <int D>
 struct ParticleFrame {
@@ -39,16 +42,22 @@ struct ParticleFrame {
   Index count = 0;
   Real time = 0;
   std::vector<ParticleField> fields;
+  const std::vector<Index>* indices = nullptr;  // last: brace initialisers of the others stay valid
 
   // The field called `name`, or nullptr.
   const ParticleField* find(const std::string& name) const;
 };
 
 // Throws Error when the frame is inconsistent: no positions, count larger than a coordinate
-// array, a field whose values do not hold count * components numbers, a vector with more than
-// 3 components, an empty or repeated field name.
+// array, an index list of another length than count or with an index outside the coordinates,
+// a field whose values do not hold count * components numbers, a vector with more than 3
+// components, an empty or repeated field name.
 template <int D>
 void checkFrame(const ParticleFrame<D>& frame);
+
+// Components of `field` on output: 3 for a vector (padded), its own count otherwise. The .vtp
+// writer and the .pvtp master (which must declare the same arrays) both ask here.
+int writtenComponents(const ParticleField& field);
 
 // The field of the first `count` particles of a solver state laid out as
 // dof = particle * components + component. Throws Error if `state` is shorter than that.

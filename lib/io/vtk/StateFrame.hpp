@@ -24,6 +24,16 @@ template <int D>
 ParticleFrame<D> frameFromState(const ParticleSet<D>& particles, const StateView& state, int components,
                                 const ExtraFields& extra = {});
 
+// The frame of a state that holds only the particles `nodes` (in a distributed run, the
+// particles a rank owns): node k of the state is particle nodes[k], dof = k * components +
+// component. Same fields as above; `extra` is called with this state and nodes.size(), so it
+// appends the fields of these nodes only. A state of another size than nodes.size() * components
+// throws Error; indices outside the particles throw when the frame is written (checkFrame). The
+// frame points at `nodes` and at the particles' coordinates and must outlive neither.
+template <int D>
+ParticleFrame<D> frameFromState(const ParticleSet<D>& particles, const std::vector<Index>& nodes,
+                                const StateView& state, int components, const ExtraFields& extra = {});
+
 // "<folder>/<base>_<NNNNNN><extension>" with the frame number zero-padded to 6 digits, so the
 // files sort in time order.
 std::string frameFilePath(const std::string& folder, const std::string& base, long frame,
