@@ -20,6 +20,10 @@
 #include "observers/TimeLoop.hpp"
 #include "study/VeryWeakSphRun.hpp"
 #include "study/VeryWeakSphScene.hpp"
+#ifdef MFWAVE_WITH_MPI
+#include "decomposition/mpi/MpiSession.hpp"
+#include "studies/lamb3d/LambRankCase.hpp"
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -70,6 +74,17 @@ CaseResult runCaseIn(const StudySettings& study, const CaseSettings& settings, c
   const LinearEnergyLedgerOptions ledgerOptions =
       lambLedgerOptions(caseScene, settings.geometry, D, spec.options.material, movingFaces,
                         veryWeakSphGrowthCause(spec.options.variant));
+#ifdef MFWAVE_WITH_MPI
+  // Under mpirun the case steps on the ranks when it can; one that cannot runs on rank 0 alone.
+  if (MpiSession::size() > 1) {
+    const std::string why = whyNotOnRanks<D>(problem, scene);
+    if (why.empty())
+      return runOnRanks<D>(study, settings, folder, progress, particles, problem, dt, ledgerOptions, std::move(result),
+                           assemblyClock);
+    if (MpiSession::rank() != 0) return result;
+    result.notes.push_back(settings.name + ": ran on rank 0 alone: " + why);
+  }
+#endif
   LinearEnergyLedger ledger(system, ledgerOptions);
 
   // integrator: central differences with the smoothing (eq. 33) as its velocity filter and eq. (30)

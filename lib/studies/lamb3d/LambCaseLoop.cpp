@@ -48,7 +48,8 @@ LinearEnergyLedgerOptions lambLedgerOptions(const Scene& scene, const GeometrySp
 
 void runLambLoopWithLedger(TimeLoop& loop, SecondOrderIntegrator& integrator, const Scene& scene,
                            const ReportedProbes& recorder, const LinearEnergyLedger& ledger,
-                           const StabilityMonitor& monitor, const std::string& folder, CaseResult& result) {
+                           const StabilityMonitor& monitor, const std::string& folder, CaseResult& result,
+                           bool writeFiles) {
   const std::string& name = result.settings.name;
   const std::string energyFile = name + "-energy.csv";
   RunStatistics stats;
@@ -57,6 +58,7 @@ void runLambLoopWithLedger(TimeLoop& loop, SecondOrderIntegrator& integrator, co
   } catch (const InstabilityError&) {
     // What was recorded up to the stop stays readable: the probes (without the exact columns) and
     // the energy ledger.
+    if (!writeFiles) throw;
     recorder.writeCsv(folder + "/" + name + "-probes.csv", std::vector<std::vector<Real>>(recorder.probes().size()));
     if (scene.output.energy) ledger.series().writeCsv(folder + "/" + energyFile);
     throw;
@@ -66,7 +68,7 @@ void runLambLoopWithLedger(TimeLoop& loop, SecondOrderIntegrator& integrator, co
   result.energyBalanceDrift = ledger.largestBalanceDrift();
   result.energyGrowth = ledger.growthMessage();
   noteAllowedGrowth(result.notes, name, {result.energyGrowth, monitor.growthMessage()});
-  if (scene.output.energy) {
+  if (scene.output.energy && writeFiles) {
     ledger.series().writeCsv(folder + "/" + energyFile);
     result.files.push_back(energyFile);
   }

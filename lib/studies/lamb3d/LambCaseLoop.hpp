@@ -33,9 +33,11 @@ LinearEnergyLedgerOptions lambLedgerOptions(const Scene& scene, const GeometrySp
 // probes recorded so far (without exact columns) and the energy table are written, then it rethrows;
 // otherwise the loop's statistics, the ledger's final fraction, balance drift and growth message go
 // to `result` (with a note when growth was allowed) and the energy table to <case>-energy.csv when
-// the scene's output asks for it.
+// the scene's output asks for it. `writeFiles` false (every rank but the first of a run on ranks):
+// nothing is written.
 void runLambLoopWithLedger(TimeLoop& loop, SecondOrderIntegrator& integrator, const Scene& scene,
                            const ReportedProbes& recorder, const LinearEnergyLedger& ledger,
-                           const StabilityMonitor& monitor, const std::string& folder, CaseResult& result);
+                           const StabilityMonitor& monitor, const std::string& folder, CaseResult& result,
+                           bool writeFiles = true);
 
 }  // namespace mfwave::lamb3d

@@ -1,0 +1,42 @@
+#include "decomposition/mpi/LatticeShare.hpp"
+
+namespace mfwave {
+
+template <int D>
+LatticeShare<D>::LatticeShare(const LatticeSecondOrderSystem<D>& serial, MPI_Comm communicator) : serial_(serial) {
+  MPI_Comm_rank(communicator, &rank_);
+  MPI_Comm_size(communicator, &ranks_);
+  // A row costs about its stencil's entries, plus its dashpots'.
+  std::vector<Real> cost(static_cast<std::size_t>(serial.stiffness().typeCount()));
+  for (Index type = 0; type < serial.stiffness().typeCount(); ++type) {
+    cost[static_cast<std::size_t>(type)] = static_cast<Real>(serial.stiffness().end(type) - serial.stiffness().begin(type));
+    if (serial.hasDamping())
+      cost[static_cast<std::size_t>(type)] += static_cast<Real>(serial.damping().end(type) - serial.damping().begin(type));
+  }
+  std::array<bool, D> splittable = BlockDecomposition<D>::allAxes();
+  splittable[0] = false;  // whole lines along x: the sums keep the serial order (LineSums.hpp)
+  decomposition_ = std::make_unique<BlockDecomposition<D>>(serial.types(), ranks_, cost, splittable);
+  system_ = std::make_unique<DistributedLatticeSystem<D>>(serial, *decomposition_, rank_, communicator);
+}
+
+template <int D>
+std::vector<Index> LatticeShare<D>::ownedNodes() const {
+  Box<D> all;
+  all.hi = serial_.types().nodes();
+  std::vector<Index> nodes;
+  nodes.reserve(static_cast<std::size_t>(system_->owned().count()));
+  system_->owned().forEachNode([&](const std::array<Index, D>& node) { nodes.push_back(all.localIndex(node)); });
+  return nodes;
+}
+
+template <int D>
+Index LatticeShare<D>::localNode(Index latticeNode) const {
+  const std::array<Index, D> node = serial_.types().node(latticeNode);
+  return system_->owned().contains(node) ? system_->owned().localIndex(node) : -1;
+}
+
+template class LatticeShare<1>;
+template class LatticeShare<2>;
+template class LatticeShare<3>;
+
+}  // namespace mfwave
