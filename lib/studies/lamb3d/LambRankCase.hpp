@@ -21,7 +21,8 @@ namespace mfwave::lamb3d {
 
 // Why `problem` cannot be stepped on the ranks (a serial-only feature it uses), or empty when it
 // can: the lattice storage with dashpots on each particle's own dofs and loads as nonzero entries,
-// central differences, no smoothing filter, deconvolution, prescribed faces or checkpoints.
+// central differences, no smoothing filter, deconvolution or prescribed faces. Its checkpoints are
+// written per rank (decomposition/mpi/RankCheckpointStore, which the driver installs).
 template <int D>
 std::string whyNotOnRanks(VeryWeakSphProblem<D>& problem, const Scene& scene);
 
