@@ -17,7 +17,8 @@ export OMP_NUM_THREADS=1 CI=true OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT
 on_ranks() {
   local n=$1
   shift
-  "$mpiexec" -np "$n" --oversubscribe "$driver" --quiet "$@"
+  # Ranks that disagree on a checkpoint wait on one another for ever: fail instead (a run takes seconds).
+  timeout -k 10 180 "$mpiexec" -np "$n" --oversubscribe "$driver" --quiet "$@"
 }
 fail=0
 
@@ -25,6 +26,9 @@ fail=0
 on_ranks "$ranks" --out "$work/whole" --checkpoint-every 10 "$@" > "$work/whole.log" 2>&1
 manifest="$work/whole/checkpoint-manifest.txt"
 grep -q "^ranks $ranks\$" "$manifest" || { echo "FAIL: $manifest does not name $ranks ranks"; cat "$manifest"; exit 1; }
+while read -r key file; do  # every file the manifest names is there
+  [ "$key" != file ] || [ -f "$work/whole/$file" ] || { echo "FAIL: $manifest names $file, which is missing"; exit 1; }
+done < "$manifest"
 for ((r = 0; r < ranks; r++)); do
   ls "$work/whole/rank-$r-of-$ranks"/checkpoint-0000-*.mfwc > /dev/null ||
     { echo "FAIL: rank $r wrote no checkpoint of loop 0"; exit 1; }

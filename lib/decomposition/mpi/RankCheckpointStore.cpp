@@ -150,6 +150,14 @@ std::optional<CheckpointPoint> RankCheckpointStore::resumePoint(int loop) {
   const std::vector<WholeFile> whole = wholeFiles(loop);
   const long long step = alone_ ? (whole.empty() ? -1 : whole.front().step) : commonStep(whole);
   const std::string where = alone_ ? "rank 0" : "every one of the " + std::to_string(ranks_) + " ranks";
+  // Ranks that went on from different steps would wait on one another in the first halo exchange
+  // for ever: a clear error instead, should the agreement above ever fail.
+  if (!alone_) {
+    const long long low = reduce(step, MPI_MIN, comm_), high = reduce(step, MPI_MAX, comm_);
+    if (low != high)
+      throw Error("time loop " + std::to_string(loop) + ": the ranks would go on from steps " + std::to_string(low) +
+                  " to " + std::to_string(high) + ", not one step");
+  }
   if (step < 0) {
     note("time loop " + std::to_string(loop) + " starts again from its beginning: no checkpoint of it is whole on " +
              where,
