@@ -44,14 +44,11 @@ DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSy
   if (decomposition.grid()[0] != 1)
     throw InputError("ranks", "the decomposition splits x into " + std::to_string(decomposition.grid()[0]) +
                                   " blocks; the distributed system needs whole lattice lines per rank");
-  exchange_ = std::make_unique<HaloExchange<D>>(HaloPlan<D>(decomposition, rank, stencilReach(serial.stiffness())), D,
-                                                communicator);
-  stiffness_ = std::make_unique<LocalStencils<D>>(serial.stiffness(), exchange_->plan().owned(), exchange_->plan().local());
+  stiffness_ = std::make_unique<RankStencilProduct<D>>(serial.stiffness(), decomposition, rank, communicator);
   inverseMass_ = serial.inverseBlocks(0);
   nodeFlat_.assign(static_cast<std::size_t>(std::max(serial.mass().entryCount(), serial.damping().entryCount())), 0);
   for (Index type = 0; type < serial.stiffness().typeCount(); ++type)
     dashpotTypes_.push_back(serial.hasDamping() && serial.damping().begin(type) != serial.damping().end(type));
-  local_.resize(static_cast<std::size_t>(exchange_->localSize()));
   ku_.resize(static_cast<std::size_t>(size()));
   // The loads' owned entries, in their serial order: each owned dof receives the same additions.
   if (const std::vector<SparseLoad>* loads = serial.sparseLoads()) {
@@ -72,15 +69,7 @@ DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSy
 
 template <int D>
 void DistributedLatticeSystem<D>::multiplyStiffness(const Real* u, const std::vector<char>* direct) const {
-  const Box<D>& own = owned();
-  const Box<D>& local = exchange_->plan().local();
-  own.forEachNode([&](const std::array<Index, D>& node) {
-    const Real* from = u + D * own.localIndex(node);
-    Real* to = local_.data() + D * local.localIndex(node);
-    for (int c = 0; c < D; ++c) to[c] = from[c];
-  });
-  exchange_->exchange(local_.data());
-  stiffness_->multiply(local_.data(), ku_.data(), direct);
+  stiffness_->multiply(u, ku_.data(), direct);
 }
 
 template <int D>

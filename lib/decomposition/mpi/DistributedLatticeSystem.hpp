@@ -14,8 +14,7 @@
 // transmitting faces), loads given as nonzero entries (SparseLoads.hpp). Not yet: dashpots that
 // couple nodes (their factorised surface solve), prescribed displacements (docs/scaling.md).
 
-#include "decomposition/LocalStencils.hpp"
-#include "decomposition/mpi/HaloExchange.hpp"
+#include "decomposition/mpi/RankStencilProduct.hpp"
 #include "lattice/LatticeSecondOrderSystem.hpp"
 #include "systems/LinearOperatorSystem.hpp"
 
@@ -59,9 +58,9 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   // prescribed dofs.
   std::unique_ptr<CentredDampingSolve> centredDamping(Real dt, const std::vector<Index>& prescribedDofs) const override;
 
-  const Box<D>& owned() const { return exchange_->plan().owned(); }
+  const Box<D>& owned() const { return stiffness_->owned(); }
   // The halo exchange of each stiffness product (its plan, bytes and messages).
-  const HaloExchange<D>& exchange() const { return *exchange_; }
+  const HaloExchange<D>& exchange() const { return stiffness_->exchange(); }
   // The owned part of a whole-lattice vector (D values per node).
   Vector restrict(const Vector& whole) const;
   // B_type (f - K u - C v) for every owned node into a: the acceleration with B = M^-1, the dashpot
@@ -69,8 +68,8 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   void solve(const std::vector<Real>& inverseBlocks, Real t, const Real* u, const Real* v, Real* a) const;
 
  private:
-  // u into the local box, halo exchanged; then K u for the owned rows into ku_. `direct` as
-  // LocalStencils::multiply's (the serial fused solve's dashpot types when damped).
+  // K u for the owned rows into ku_ (RankStencilProduct). `direct` as LocalStencils::multiply's
+  // (the serial fused solve's dashpot types when damped).
   void multiplyStiffness(const Real* u, const std::vector<char>* direct = nullptr) const;
   // Adds the sum over the ranks' owned line sums of g(k, type) (k the owned node, in its box's
   // order), in the serial order.
@@ -81,13 +80,12 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   const BlockDecomposition<D>& decomposition_;
   int rank_;
   MPI_Comm communicator_;
-  std::unique_ptr<HaloExchange<D>> exchange_;
-  std::unique_ptr<LocalStencils<D>> stiffness_;
+  std::unique_ptr<RankStencilProduct<D>> stiffness_;
   std::vector<Real> inverseMass_;  // per type (LatticeSecondOrderSystem::inverseBlocks(0))
   std::vector<Index> nodeFlat_;    // zeros: the mass and dashpots act on a node's own dofs
   std::vector<SparseLoad> loads_;  // the owned entries, dofs owned
   std::vector<char> dashpotTypes_; // per row type: has dashpots
-  mutable std::vector<Real> local_, ku_;
+  mutable std::vector<Real> ku_;
 };
 
 extern template class DistributedLatticeSystem<1>;
