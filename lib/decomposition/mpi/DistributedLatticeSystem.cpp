@@ -79,12 +79,8 @@ void DistributedLatticeSystem<D>::solve(const std::vector<Real>& inverseBlocks, 
   addSparseLoads(loads_, t, a);
   const bool damped = serial_.hasDamping() && v != nullptr;
   multiplyStiffness(u, damped ? &dashpotTypes_ : nullptr);
-  const LatticeRowTypes<D>& types = serial_.types();
   const LatticeStencils<D>& damping = serial_.damping();
-  const Box<D>& own = owned();
-  own.forEachNode([&](const std::array<Index, D>& node) {
-    const Index k = own.localIndex(node);
-    const Index type = types.typeOf(node);
+  forEachOwnedNode([&](Index k, Index type) {
     // LatticeSecondOrderSystem::fusedSolve: r = f - K u - C v, a = B r.
     Real r[D];
     for (int c = 0; c < D; ++c) r[c] = a[D * k + c] - ku_[static_cast<std::size_t>(D * k + c)];
@@ -122,17 +118,30 @@ void DistributedLatticeSystem<D>::applyStiffness(const Vector& x, Vector& y) con
 
 template <int D>
 template <class Function>
-Real DistributedLatticeSystem<D>::sumOverOwnedNodes(Function&& g) const {
-  // Line by line along x in node order, as sumOverLatticeNodes adds them; the lines over the ranks
-  // in the lattice's order.
+void DistributedLatticeSystem<D>::forEachOwnedNode(Function&& f) const {
+  // Line by line (an owned line is a whole lattice line: x is not split), its row types from the
+  // line's base type as forEachLatticeLine gives them; threads share lines in a fixed partition.
   const Box<D>& own = owned();
   const LatticeRowTypes<D>& types = serial_.types();
   const Index nx = own.extent(0);
-  std::vector<Real> lineSums(static_cast<std::size_t>(own.count() / nx), 0.0);
-  own.forEachNode([&](const std::array<Index, D>& node) {
-    const Index k = own.localIndex(node);
-    lineSums[static_cast<std::size_t>(k / nx)] += g(k, types.typeOf(node));
-  });
+  const long lines = static_cast<long>(own.lineCount());
+#pragma omp parallel for schedule(static) if (lines > 16 && own.count() > 20000)
+  for (long line = 0; line < lines; ++line) {
+    const std::array<Index, D> start = own.lineStart(line);
+    const Index first = static_cast<Index>(line) * nx;
+    const Index base = types.typeOf(start) - types.compactIndex(0, start[0]);
+    for (Index i = 0; i < nx; ++i) f(first + i, base + types.compactIndex(0, start[0] + i));
+  }
+}
+
+template <int D>
+template <class Function>
+Real DistributedLatticeSystem<D>::sumOverOwnedNodes(Function&& g) const {
+  // Line by line along x in node order, as sumOverLatticeNodes adds them; the lines over the ranks
+  // in the lattice's order.
+  const Index nx = owned().extent(0);
+  std::vector<Real> lineSums(static_cast<std::size_t>(owned().lineCount()), 0.0);
+  forEachOwnedNode([&](Index k, Index type) { lineSums[static_cast<std::size_t>(k / nx)] += g(k, type); });
   return sumInLatticeOrder(decomposition_, rank_, lineSums, communicator_);
 }
 
@@ -163,14 +172,10 @@ Real DistributedLatticeSystem<D>::dampingPower(const Vector& v) const {
   // The serial sum adds only the nodes with dashpots; the others add nothing here either (a line
   // without dashpots sums to +0 in both).
   const LatticeStencils<D>& damping = serial_.damping();
-  const Box<D>& own = owned();
-  const LatticeRowTypes<D>& types = serial_.types();
-  const Index nx = own.extent(0);
-  std::vector<Real> lineSums(static_cast<std::size_t>(own.count() / nx), 0.0);
-  own.forEachNode([&](const std::array<Index, D>& node) {
-    const Index type = types.typeOf(node);
+  const Index nx = owned().extent(0);
+  std::vector<Real> lineSums(static_cast<std::size_t>(owned().lineCount()), 0.0);
+  forEachOwnedNode([&](Index k, Index type) {
     if (damping.begin(type) == damping.end(type)) return;
-    const Index k = own.localIndex(node);
     Real cv[D];
     damping.rowProductAt(type, v.data() + D * k, nodeFlat_.data(), cv);
     Real& sum = lineSums[static_cast<std::size_t>(k / nx)];
@@ -204,10 +209,8 @@ Vector DistributedLatticeSystem<D>::lumpedMass() const {
     return diagonal;
   }();
   Vector m(size());
-  const LatticeRowTypes<D>& types = serial_.types();
-  owned().forEachNode([&](const std::array<Index, D>& node) {
-    const Index k = owned().localIndex(node);
-    for (int c = 0; c < D; ++c) m[D * k + c] = perType[D * types.typeOf(node) + c];
+  forEachOwnedNode([&](Index k, Index type) {
+    for (int c = 0; c < D; ++c) m[D * k + c] = perType[D * type + c];
   });
   return m;
 }

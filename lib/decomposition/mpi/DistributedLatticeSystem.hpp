@@ -71,6 +71,10 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   // K u for the owned rows into ku_ (RankStencilProduct). `direct` as LocalStencils::multiply's
   // (the serial fused solve's dashpot types when damped).
   void multiplyStiffness(const Real* u, const std::vector<char>* direct = nullptr) const;
+  // f(k, type) for every owned node k (in the owned box's order) and its row type; f must only
+  // write what belongs to node k (lines run on threads).
+  template <class Function>
+  void forEachOwnedNode(Function&& f) const;
   // Adds the sum over the ranks' owned line sums of g(k, type) (k the owned node, in its box's
   // order), in the serial order.
   template <class Function>
