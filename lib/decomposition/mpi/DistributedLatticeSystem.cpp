@@ -49,7 +49,6 @@ DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSy
   nodeFlat_.assign(static_cast<std::size_t>(std::max(serial.mass().entryCount(), serial.damping().entryCount())), 0);
   for (Index type = 0; type < serial.stiffness().typeCount(); ++type)
     dashpotTypes_.push_back(serial.hasDamping() && serial.damping().begin(type) != serial.damping().end(type));
-  ku_.resize(static_cast<std::size_t>(size()));
   // The loads' owned entries, in their serial order: each owned dof receives the same additions.
   if (const std::vector<SparseLoad>* loads = serial.sparseLoads()) {
     const LatticeRowTypes<D>& types = serial.types();
@@ -68,22 +67,17 @@ DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSy
 }
 
 template <int D>
-void DistributedLatticeSystem<D>::multiplyStiffness(const Real* u, const std::vector<char>* direct) const {
-  stiffness_->multiply(u, ku_.data(), direct);
-}
-
-template <int D>
 void DistributedLatticeSystem<D>::solve(const std::vector<Real>& inverseBlocks, Real t, const Real* u, const Real* v,
                                         Real* a) const {
   std::fill(a, a + size(), 0.0);
   addSparseLoads(loads_, t, a);
   const bool damped = serial_.hasDamping() && v != nullptr;
-  multiplyStiffness(u, damped ? &dashpotTypes_ : nullptr);
   const LatticeStencils<D>& damping = serial_.damping();
-  forEachOwnedNode([&](Index k, Index type) {
-    // LatticeSecondOrderSystem::fusedSolve: r = f - K u - C v, a = B r.
+  // LatticeSecondOrderSystem::fusedSolve, fused with the product as it is: r = f - K u - C v,
+  // a = B r; the dashpot types row by row.
+  stiffness_->forEachProduct(u, [&](Index k, Index type, const Real* ku, Index stride) {
     Real r[D];
-    for (int c = 0; c < D; ++c) r[c] = a[D * k + c] - ku_[static_cast<std::size_t>(D * k + c)];
+    for (int c = 0; c < D; ++c) r[c] = a[D * k + c] - ku[c * stride];
     if (damped && damping.begin(type) != damping.end(type)) {
       Real cv[D];
       damping.rowProductAt(type, v + D * k, nodeFlat_.data(), cv);
@@ -95,7 +89,7 @@ void DistributedLatticeSystem<D>::solve(const std::vector<Real>& inverseBlocks, 
       for (int d = 0; d < D; ++d) s += b[D * c + d] * r[d];
       a[D * k + c] = s;
     }
-  });
+  }, [&](Index type) { return damped && dashpotTypes_[static_cast<std::size_t>(type)]; });
 }
 
 template <int D>
@@ -112,8 +106,8 @@ void DistributedLatticeSystem<D>::force(Real t, Vector& f) const {
 
 template <int D>
 void DistributedLatticeSystem<D>::applyStiffness(const Vector& x, Vector& y) const {
-  multiplyStiffness(x.data());
-  y = Eigen::Map<const Vector>(ku_.data(), size());
+  y.resize(size());
+  stiffness_->multiply(x.data(), y.data());
 }
 
 template <int D>
@@ -158,12 +152,15 @@ Real DistributedLatticeSystem<D>::kineticEnergy(const Vector& v) const {
 
 template <int D>
 Real DistributedLatticeSystem<D>::strainEnergy(const Vector& u) const {
-  multiplyStiffness(u.data());
-  return 0.5 * sumOverOwnedNodes([&](Index k, Index) {
-           Real s = 0;
-           for (int c = 0; c < D; ++c) s += u[D * k + c] * ku_[static_cast<std::size_t>(D * k + c)];
-           return s;
-         });
+  // As LatticeSecondOrderSystem::strainEnergy: u . K u per node from the products, per line.
+  const Index nx = owned().extent(0);
+  std::vector<Real> lineSums(static_cast<std::size_t>(owned().lineCount()), 0.0);
+  stiffness_->forEachProduct(u.data(), [&](Index k, Index, const Real* ku, Index stride) {
+    Real s = 0;
+    for (int c = 0; c < D; ++c) s += u[D * k + c] * ku[c * stride];
+    lineSums[static_cast<std::size_t>(k / nx)] += s;
+  }, [](Index) { return false; });
+  return 0.5 * sumInLatticeOrder(decomposition_, rank_, lineSums, communicator_);
 }
 
 template <int D>

@@ -68,9 +68,6 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   void solve(const std::vector<Real>& inverseBlocks, Real t, const Real* u, const Real* v, Real* a) const;
 
  private:
-  // K u for the owned rows into ku_ (RankStencilProduct). `direct` as LocalStencils::multiply's
-  // (the serial fused solve's dashpot types when damped).
-  void multiplyStiffness(const Real* u, const std::vector<char>* direct = nullptr) const;
   // f(k, type) for every owned node k (in the owned box's order) and its row type; f must only
   // write what belongs to node k (lines run on threads).
   template <class Function>
@@ -89,7 +86,6 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   std::vector<Index> nodeFlat_;    // zeros: the mass and dashpots act on a node's own dofs
   std::vector<SparseLoad> loads_;  // the owned entries, dofs owned
   std::vector<char> dashpotTypes_; // per row type: has dashpots
-  mutable std::vector<Real> ku_;
 };
 
 extern template class DistributedLatticeSystem<1>;

@@ -14,6 +14,12 @@ RankStencilProduct<D>::RankStencilProduct(const LatticeStencils<D>& stencils, co
 
 template <int D>
 void RankStencilProduct<D>::multiply(const Real* x, Real* y, const std::vector<char>* direct) {
+  exchange(x);
+  rows_->multiply(local_.data(), y, direct);
+}
+
+template <int D>
+void RankStencilProduct<D>::exchange(const Real* x) {
   const Box<D>& own = owned();
   const Box<D>& local = exchange_->plan().local();
   // Line by line: an owned line is contiguous in both boxes (x fastest).
@@ -25,7 +31,6 @@ void RankStencilProduct<D>::multiply(const Real* x, Real* y, const std::vector<c
     std::copy_n(x + D * own.localIndex(start), length, local_.data() + D * local.localIndex(start));
   }
   exchange_->exchange(local_.data());
-  rows_->multiply(local_.data(), y, direct);
 }
 
 template class RankStencilProduct<1>;

@@ -12,6 +12,7 @@
 #include <mpi.h>
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace mfwave {
@@ -26,11 +27,21 @@ class RankStencilProduct {
   // y = the owned rows applied to x, both D values per owned node in the owned box's order (y must
   // not alias x). Collective: every rank calls it. `direct` as LocalStencils::multiply's.
   void multiply(const Real* x, Real* y, const std::vector<char>* direct = nullptr);
+  // The products one by one (LocalStencils::forEachProduct) after the same exchange, so a caller
+  // fuses its use of each row with the product, as the serial fused solve does.
+  template <class Function, class Direct>
+  void forEachProduct(const Real* x, Function&& f, Direct&& direct) {
+    exchange(x);
+    rows_->forEachProduct(local_.data(), std::forward<Function>(f), std::forward<Direct>(direct));
+  }
 
   const Box<D>& owned() const { return exchange_->plan().owned(); }
   const HaloExchange<D>& exchange() const { return *exchange_; }
 
  private:
+  // x (owned) into the local box, its halo exchanged.
+  void exchange(const Real* x);
+
   std::unique_ptr<HaloExchange<D>> exchange_;
   std::unique_ptr<LocalStencils<D>> rows_;
   std::vector<Real> local_;  // the local box's values
