@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "decomposition/mpi/LineSums.hpp"
+#include "integrators/ArkodeMpiVectors.hpp"
 
 #include <algorithm>
 #include <string>
@@ -64,6 +65,13 @@ DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSy
       loads_.push_back(std::move(mine));
     }
   }
+  // Summed rather than taken from the serial system: the ranks' shares must cover it exactly,
+  // and N_VMake_Parallel checks the same sum again.
+  long long total = static_cast<long long>(size());
+  MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_LONG_LONG, MPI_SUM, communicator);
+  globalSize_ = static_cast<Index>(total);
+  // Any ARKODE integrator handed this system works on the MPI vectors (distribution()).
+  enableArkodeMpiVectors();
 }
 
 template <int D>

@@ -21,6 +21,7 @@
 #include <mpi.h>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace mfwave {
@@ -38,6 +39,10 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   // D values per owned node, in the owned box's order.
   Index size() const override { return D * owned().count(); }
   bool hasDamping() const override { return serial_.hasDamping(); }
+  // This rank's communicator and the sum of the ranks' sizes: the ARKODE integrators then run on
+  // SUNDIALS' MPI vectors (integrators/ArkodeMpiVectors.hpp, which the constructor enables), so
+  // their adaptive steps are chosen from norms over all the ranks.
+  std::optional<VectorDistribution> distribution() const override { return VectorDistribution{&communicator_, globalSize_}; }
   void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) override;
 
   // The owned part of f(t).
@@ -81,6 +86,7 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   const BlockDecomposition<D>& decomposition_;
   int rank_;
   MPI_Comm communicator_;
+  Index globalSize_ = 0;  // sum over the ranks of size()
   std::unique_ptr<RankStencilProduct<D>> stiffness_;
   std::vector<Real> inverseMass_;  // per type (LatticeSecondOrderSystem::inverseBlocks(0))
   std::vector<Index> nodeFlat_;    // zeros: the mass and dashpots act on a node's own dofs
