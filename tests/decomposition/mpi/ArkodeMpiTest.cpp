@@ -12,6 +12,8 @@
 
 #include "core/Error.hpp"
 
+#include "MpiTestSupport.hpp"
+
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -23,108 +25,14 @@
 #include <vector>
 
 using namespace mfwave;
+using test::LatticeCase;
+using test::differencesOverRanks;
+using test::relativeDifferenceOverRanks;
+using test::sumOverRanks;
+using test::worldRank;
+using test::worldSize;
 
 namespace {
-
-int worldRank() {
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  return rank;
-}
-
-int worldSize() {
-  int size = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  return size;
-}
-
-// The lattice of HaloExchangeMpiTest's runs: a lattice Laplacian over the nearest neighbours
-// (weights 1/r^2), M = 1.5 I, no dashpots, no loads; and a smooth bump as u0.
-template <int D>
-struct LatticeCase {
-  explicit LatticeCase(const std::array<Index, D>& nodes) : types(nodes, 1) {
-    Box<D> compact;
-    compact.hi = types.compactNodes();
-    std::vector<Triplet> k, m;
-    compact.forEachNode([&](const std::array<Index, D>& row) {
-      Box<D> around;
-      for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s) {
-        around.lo[s] = row[s] - 1;
-        around.hi[s] = row[s] + 2;
-      }
-      const Index i = compact.localIndex(row);
-      Real diagonal = 0;
-      intersection(around, compact).forEachNode([&](const std::array<Index, D>& column) {
-        const Index j = compact.localIndex(column);
-        if (j == i) return;
-        Real r2 = 0;
-        for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s)
-          r2 += static_cast<Real>((column[s] - row[s]) * (column[s] - row[s]));
-        for (int c = 0; c < D; ++c) k.emplace_back(static_cast<int>(D * i + c), static_cast<int>(D * j + c), -1.0 / r2);
-        diagonal += 1.0 / r2;
-      });
-      for (int c = 0; c < D; ++c) {
-        k.emplace_back(static_cast<int>(D * i + c), static_cast<int>(D * i + c), diagonal);
-        m.emplace_back(static_cast<int>(D * i + c), static_cast<int>(D * i + c), 1.5);
-      }
-    });
-    const int unknowns = static_cast<int>(D * compact.count());
-    SparseMatrix stiffness(unknowns, unknowns), mass(unknowns, unknowns);
-    stiffness.setFromTriplets(k.begin(), k.end());
-    mass.setFromTriplets(m.begin(), m.end());
-    serial.emplace(LatticeStencils<D>(types, mass), LatticeStencils<D>(), LatticeStencils<D>(types, stiffness));
-
-    Box<D> all;
-    all.hi = nodes;
-    u0 = Vector::Zero(D * types.nodeCount());
-    v0 = Vector::Zero(D * types.nodeCount());
-    all.forEachNode([&](const std::array<Index, D>& node) {
-      Real r2 = 0;
-      for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s) {
-        const Real x = (static_cast<Real>(node[s]) - 0.4 * static_cast<Real>(nodes[s])) / static_cast<Real>(nodes[s]);
-        r2 += x * x;
-      }
-      for (int c = 0; c < D; ++c) u0[D * all.localIndex(node) + c] = std::exp(-20 * r2) * (1.0 + 0.1 * c);
-    });
-    std::array<bool, D> splittable = BlockDecomposition<D>::allAxes();
-    splittable[0] = false;  // the distributed system keeps whole x lines per rank
-    decomposition.emplace(types, worldSize(), std::vector<Real>{}, splittable);
-    distributed.emplace(*serial, *decomposition, worldRank(), MPI_COMM_WORLD);
-  }
-
-  LatticeRowTypes<D> types;
-  std::optional<LatticeSecondOrderSystem<D>> serial;
-  std::optional<BlockDecomposition<D>> decomposition;
-  std::optional<DistributedLatticeSystem<D>> distributed;
-  Vector u0, v0;
-};
-
-long sumOverRanks(long value) {
-  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
-  return value;
-}
-
-Real maxOverRanks(Real value) {
-  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-  return value;
-}
-
-// Owned entries of `got` that differ from the owned part of the serial `expected`, over all ranks.
-template <int D>
-long differencesOverRanks(const DistributedLatticeSystem<D>& system, const Vector& got, const Vector& expected) {
-  const Vector mine = system.restrict(expected);
-  long different = 0;
-  for (Index i = 0; i < mine.size(); ++i)
-    if (got[i] != mine[i]) ++different;
-  return sumOverRanks(different);
-}
-
-// max |got - expected| over the owned entries of all ranks, relative to max |expected|.
-template <int D>
-Real relativeDifferenceOverRanks(const DistributedLatticeSystem<D>& system, const Vector& got, const Vector& expected) {
-  const Vector mine = system.restrict(expected);
-  return maxOverRanks((got - mine).cwiseAbs().maxCoeff()) / expected.cwiseAbs().maxCoeff();
-}
 
 template <int D>
 void expectAFixedStepRunKeepsTheSerialBits(const std::array<Index, D>& nodes) {
@@ -253,18 +161,3 @@ TEST(ArkodeMpiTest, AGlobalSizeTheRanksDoNotAddUpToIsRefused) {
 }
 
 }  // namespace
-
-// GoogleTest inside MPI: every rank runs the tests; rank 0 prints; the exit code is the worst rank's.
-int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  ::testing::InitGoogleTest(&argc, argv);
-  if (worldRank() != 0) {
-    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  int result = RUN_ALL_TESTS();
-  int worst = 0;
-  MPI_Allreduce(&result, &worst, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  MPI_Finalize();
-  return worst;
-}
