@@ -44,6 +44,20 @@ struct Box {
   bool operator==(const Box& other) const { return lo == other.lo && hi == other.hi; }
   bool operator!=(const Box& other) const { return !(*this == other); }
 
+  // The lines of the box along x (count() / extent(0) of them), numbered x-fastest over the other
+  // axes as their nodes are, and the first node of line l: a walk over lines touches each node's
+  // storage contiguously, and lines can be shared among threads by number.
+  Index lineCount() const { return empty() ? 0 : count() / extent(0); }
+  std::array<Index, D> lineStart(Index line) const {
+    std::array<Index, D> node = lo;
+    for (int a = 1; a < D; ++a) {
+      const auto s = static_cast<std::size_t>(a);
+      node[s] = lo[s] + line % extent(a);
+      line /= extent(a);
+    }
+    return node;
+  }
+
   // Calls visit(node) for every node of the box, x fastest.
   template <class Visit>
   void forEachNode(Visit&& visit) const {

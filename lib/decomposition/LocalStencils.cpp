@@ -58,54 +58,12 @@ LocalStencils<D>::LocalStencils(const LatticeStencils<D>& stencils, const Box<D>
 
 template <int D>
 void LocalStencils<D>::multiply(const Real* x, Real* y, const std::vector<char>* direct) const {
-  const LatticeStencils<D>& stencils = *stencils_;
-  const LatticeRowTypes<D>& types = stencils.types();
-  const Index nx = types.nodes()[0], depth = types.depth();
-  const bool runs = types.compactNodes()[0] < nx;  // else every x position is its own type
-  // The middle of the lattice's lines (one type) within the owned x range: the serial product's runs.
-  const Index middleFirst = runs ? std::max(owned_.lo[0], depth) : owned_.hi[0];
-  const Index middleLast = runs ? std::min(owned_.hi[0], nx - depth) : owned_.hi[0];
-  const Index length = owned_.extent(0);
-  Box<D> lineStarts = owned_;
-  lineStarts.hi[0] = owned_.lo[0] + 1;
-  const long lines = static_cast<long>(lineStarts.count());
-  const std::uint64_t pass = nextStencilProduct();
-#pragma omp parallel for schedule(static) if (lines > 16 && owned_.count() > 20000)
-  for (long line = 0; line < lines; ++line) {
-    // The line's first node, from its number in the owned box (x fastest, x fixed at lo).
-    std::array<Index, D> g = owned_.lo;
-    Index rest = line, base = 0, stride = types.compactNodes()[0];
-    for (int a = 1; a < D; ++a) {
-      const auto s = static_cast<std::size_t>(a);
-      g[s] = owned_.lo[s] + rest % owned_.extent(a);
-      rest /= owned_.extent(a);
-      base += stride * types.compactIndex(a, g[s]);
-      stride *= types.compactNodes()[s];
-    }
-    const Index in = local_.localIndex(g);   // the line's first node in x
-    const Index out = owned_.localIndex(g);  // and in y
-    auto single = [&](Index i) {
-      stencils.rowProductAt(base + types.compactIndex(0, i), x + D * (in + i - owned_.lo[0]), flat_.data(),
-                            y + D * (out + i - owned_.lo[0]));
-    };
-    for (Index i = owned_.lo[0]; i < std::min(middleFirst, owned_.hi[0]); ++i) single(i);
-    if (middleLast > middleFirst && direct && (*direct)[static_cast<std::size_t>(base + depth)]) {
-      for (Index i = middleFirst; i < middleLast; ++i) single(i);
-    } else if (middleLast > middleFirst) {
-      const Index type = base + depth, count = middleLast - middleFirst;
-      // The type's stencil with the local box's offsets, under this table's own numbers.
-      StencilView view = stencils.view(type);
-      view.flat = flat_.data() + stencils.begin(type);
-      view.table = table_ + static_cast<std::uint64_t>(type);
-      thread_local StencilRunCache cache;
-      thread_local std::vector<Real> run;
-      if (run.size() < static_cast<std::size_t>(D * count)) run.resize(static_cast<std::size_t>(D * count));
-      stencilRun<D>(view, x, in + middleFirst - owned_.lo[0], count, run.data(), cache, pass);
-      for (Index l = 0; l < count; ++l)
-        for (int c = 0; c < D; ++c) y[D * (out + middleFirst - owned_.lo[0] + l) + c] = run[static_cast<std::size_t>(c * count + l)];
-    }
-    for (Index i = std::max(middleLast, middleFirst); i < owned_.lo[0] + length; ++i) single(i);
-  }
+  forEachProduct(
+      x,
+      [y](Index k, Index, const Real* product, Index stride) {
+        for (int c = 0; c < D; ++c) y[D * k + c] = product[c * stride];
+      },
+      [direct](Index type) { return direct && (*direct)[static_cast<std::size_t>(type)]; });
 }
 
 template class LocalStencils<1>;

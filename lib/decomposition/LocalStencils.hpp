@@ -10,6 +10,7 @@
 #include "decomposition/Box.hpp"
 #include "lattice/LatticeStencils.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -35,6 +36,12 @@ class LocalStencils {
   // given, marks the row types whose middle of line is computed row by row, as the serial
   // LatticeStencils::forEachProduct does for its `direct` types (the dashpot rows of a fused solve).
   void multiply(const Real* x, Real* y, const std::vector<char>* direct = nullptr) const;
+  // The products one by one, as LatticeStencils::forEachProduct gives the serial ones: f(k, type,
+  // product, stride) for every owned node k (the owned box's order) with its row applied to x,
+  // component c at product[c * stride]; a line's middle goes row by row when direct(type) holds.
+  // f must only write what belongs to node k (lines run on threads).
+  template <class Function, class Direct>
+  void forEachProduct(const Real* x, Function&& f, Direct&& direct) const;
 
  private:
   const LatticeStencils<D>* stencils_;
@@ -42,6 +49,56 @@ class LocalStencils {
   std::vector<Index> flat_;  // per entry: the offset as a node-index difference in the local box
   std::uint64_t table_ = 0;  // stencil numbers of these offsets (freshStencilNumbers)
 };
+
+template <int D>
+template <class Function, class Direct>
+void LocalStencils<D>::forEachProduct(const Real* x, Function&& f, Direct&& direct) const {
+  const LatticeStencils<D>& stencils = *stencils_;
+  const LatticeRowTypes<D>& types = stencils.types();
+  const Index nx = types.nodes()[0], depth = types.depth();
+  const bool runs = types.compactNodes()[0] < nx;  // else every x position is its own type
+  // The middle of the lattice's lines (one type) within the owned x range: the serial product's runs.
+  const Index middleFirst = runs ? std::max(owned_.lo[0], depth) : owned_.hi[0];
+  const Index middleLast = runs ? std::min(owned_.hi[0], nx - depth) : owned_.hi[0];
+  const long lines = static_cast<long>(owned_.lineCount());
+  const std::uint64_t pass = nextStencilProduct();
+#pragma omp parallel for schedule(static) if (lines > 16 && owned_.count() > 20000)
+  for (long line = 0; line < lines; ++line) {
+    const std::array<Index, D> g = owned_.lineStart(line);
+    Index base = 0, stride = types.compactNodes()[0];
+    for (int a = 1; a < D; ++a) {
+      const auto s = static_cast<std::size_t>(a);
+      base += stride * types.compactIndex(a, g[s]);
+      stride *= types.compactNodes()[s];
+    }
+    const Index in = local_.localIndex(g) - owned_.lo[0];  // node i of the line in x, and in the owned box
+    const Index out = owned_.localIndex(g) - owned_.lo[0];
+    Real product[D];
+    auto single = [&](Index i) {
+      const Index type = base + types.compactIndex(0, i);
+      stencils.rowProductAt(type, x + D * (in + i), flat_.data(), product);
+      f(out + i, type, static_cast<const Real*>(product), Index{1});
+    };
+    for (Index i = owned_.lo[0]; i < std::min(middleFirst, owned_.hi[0]); ++i) single(i);
+    if (middleLast > middleFirst) {
+      const Index type = base + depth, count = middleLast - middleFirst;
+      if (direct(type)) {
+        for (Index i = middleFirst; i < middleLast; ++i) single(i);
+      } else {
+        // The type's stencil with the local box's offsets, under this table's own numbers.
+        StencilView view = stencils.view(type);
+        view.flat = flat_.data() + stencils.begin(type);
+        view.table = table_ + static_cast<std::uint64_t>(type);
+        thread_local StencilRunCache cache;
+        thread_local std::vector<Real> run;
+        if (run.size() < static_cast<std::size_t>(D * count)) run.resize(static_cast<std::size_t>(D * count));
+        stencilRun<D>(view, x, in + middleFirst, count, run.data(), cache, pass);
+        for (Index l = 0; l < count; ++l) f(out + middleFirst + l, type, static_cast<const Real*>(run.data() + l), count);
+      }
+    }
+    for (Index i = std::max(middleLast, middleFirst); i < owned_.hi[0]; ++i) single(i);
+  }
+}
 
 extern template class LocalStencils<1>;
 extern template class LocalStencils<2>;

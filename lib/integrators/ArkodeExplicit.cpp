@@ -1,8 +1,10 @@
-// All SUNDIALS calls of mfwave live in this file (see ArkodeExplicit.hpp).
+// All SUNDIALS calls of mfwave live in this file (see ArkodeExplicit.hpp), but for the making of
+// MPI vectors, which only MPI builds link (ArkodeMpiVectors.cpp, ArkodeVectorHook.hpp).
 
 #include "integrators/ArkodeExplicit.hpp"
 
 #include "core/Error.hpp"
+#include "integrators/ArkodeVectorHook.hpp"
 
 #include <arkode/arkode_butcher_erk.h>
 #include <arkode/arkode_erkstep.h>
@@ -10,9 +12,11 @@
 #include <sundials/sundials_context.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -84,13 +88,18 @@ int keepStep(sunrealtype, N_Vector, void*) { return 0; }
 // ERKStepClearStopTime, and a stop time once set persists).
 constexpr sunrealtype kNoStopTime = 1e300;
 
+// Installed by enableArkodeMpiVectors (MPI builds); null: distributed systems are refused.
+std::atomic<ArkodeParallelVectorMaker> parallelVectorMaker{nullptr};
+
 }  // namespace
+
+void setArkodeParallelVectorMaker(ArkodeParallelVectorMaker maker) { parallelVectorMaker.store(maker); }
 
 struct ArkodeExplicit::Impl {
   ArkodeOptions options;
   ARKodeButcherTable table = nullptr;  // our copy; ERKStepSetTable copies it again
   SUNContext context = nullptr;
-  N_Vector y = nullptr;                // wraps yData's storage (not owned by SUNDIALS)
+  N_Vector y = nullptr;                // wraps yData's storage (not owned by SUNDIALS); serial or MPI
   void* memory = nullptr;
   Vector yData;
   FirstOrderSystem* system = nullptr;
@@ -135,10 +144,11 @@ struct ArkodeExplicit::Impl {
   static int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* userData) {
     auto* self = static_cast<Impl*>(userData);
     try {
-      const Index n = N_VGetLength_Serial(y);
+      // This rank's length: the generic accessors serve serial and MPI vectors alike.
+      const Index n = self->yData.size();
       // Views of ARKODE's storage: stage vectors are ARKODE's, not ours, and need no copy.
-      Eigen::Map<const Vector> yView(N_VGetArrayPointer_Serial(y), n);
-      Eigen::Map<Vector> ydotView(N_VGetArrayPointer_Serial(ydot), n);
+      Eigen::Map<const Vector> yView(N_VGetArrayPointer(y), n);
+      Eigen::Map<Vector> ydotView(N_VGetArrayPointer(ydot), n);
       self->system->rhs(t, yView, ydotView);
       return 0;
     } catch (...) {
@@ -154,6 +164,34 @@ struct ArkodeExplicit::Impl {
     auto* self = static_cast<Impl*>(userData);
     self->lastMessage = std::string(module ? module : "") + "::" + (function ? function : "") + ": " +
                         (message ? message : "");
+  }
+
+  // The context and y over yData: serial vectors, or, for a system that holds one rank's share
+  // (FirstOrderSystem::distribution), the MPI vectors, whose dot products and norms are reduced
+  // over the ranks so that every rank's error test sees the same global norm and all take the same
+  // steps. Element-wise operations are the serial ones either way.
+  void makeVector(const std::optional<VectorDistribution>& distribution) {
+    const auto local = static_cast<sunindextype>(yData.size());
+    if (!distribution) {
+      check(SUNContext_Create(nullptr, &context), "SUNContext_Create");
+      y = N_VMake_Serial(local, yData.data(), context);
+      if (!y) throw Error("ARKODE N_VMake_Serial failed");
+      return;
+    }
+    const ArkodeParallelVectorMaker maker = parallelVectorMaker.load();
+    if (!maker)
+      throw Error("arkode: the system is distributed over MPI ranks, but this program has no MPI vectors for "
+                  "ARKODE (an MPI build's mfwave::integrators_mpi, enableArkodeMpiVectors())");
+    if (!distribution->communicator || distribution->globalSize < yData.size())
+      throw Error("arkode: a distributed system must give its communicator and a global size of at least its "
+                  "own (" + std::to_string(yData.size()) + "), got " + std::to_string(distribution->globalSize));
+    // 6.4.1 takes a pointer to the communicator (kept for SUNDIALS' profiler); it does not write it.
+    check(SUNContext_Create(const_cast<void*>(distribution->communicator), &context), "SUNContext_Create");
+    y = maker(distribution->communicator, local, static_cast<sunindextype>(distribution->globalSize), yData.data(),
+              context);
+    if (!y)
+      throw Error("ARKODE N_VMake_Parallel failed (do the ranks' sizes sum to the global size " +
+                  std::to_string(distribution->globalSize) + "?)");
   }
 
   sunrealtype evolve(sunrealtype tout, int task, const char* what) {
@@ -246,9 +284,7 @@ void ArkodeExplicit::initialise(FirstOrderSystem& system, Real t0, const Vector&
   m.time = t0;
   m.system = &system;
 
-  m.check(SUNContext_Create(nullptr, &m.context), "SUNContext_Create");
-  m.y = N_VMake_Serial(static_cast<sunindextype>(m.yData.size()), m.yData.data(), m.context);
-  if (!m.y) throw Error("ARKODE N_VMake_Serial failed");
+  m.makeVector(system.distribution());
   m.memory = ERKStepCreate(&Impl::rhs, t0, m.y, m.context);
   if (!m.memory) throw Error("ARKODE ERKStepCreate failed");
   m.check(ERKStepSetErrHandlerFn(m.memory, &Impl::errorHandler, &m), "ERKStepSetErrHandlerFn");

@@ -4,9 +4,11 @@
 // sees SUNDIALS: its header keeps SUNDIALS types out (pimpl), so a SUNDIALS upgrade (7.x moves
 // ERKStep* to ARKode*) touches ArkodeExplicit.cpp alone.
 //
-// ARKODE works directly on the adapter's Eigen vector (N_VMake_Serial over its storage), and the
-// right-hand side is evaluated on Eigen::Maps of ARKODE's vectors (FirstOrderSystem::rhs takes Eigen::Ref): no
-// copies between the two libraries.
+// ARKODE works directly on the adapter's Eigen vector (N_VMake_Serial over its storage; for a
+// system that reports a VectorDistribution, N_VMake_Parallel over the rank's share, made by the
+// MPI half of this adapter, ArkodeMpiVectors.cpp, in MPI builds only), and the right-hand side is
+// evaluated on Eigen::Maps of ARKODE's vectors (FirstOrderSystem::rhs takes Eigen::Ref): no copies
+// between the two libraries.
 
 #include "core/StateArchive.hpp"
 #include "core/Types.hpp"

@@ -17,11 +17,10 @@ std::string veryWeakSphGrowthCause(VeryWeakSphVariant variant) {
          "stability.allow_growth = true runs on to show it";
 }
 
-template <int D>
-std::unique_ptr<CentralDifference> veryWeakSphCentralDifference(VeryWeakSphProblem<D>& problem,
-                                                                LinearEnergyLedger* ledger) {
+std::unique_ptr<CentralDifference> smoothedCentralDifference(ConservativeSmoothing* smoothing,
+                                                             LinearEnergyLedger* ledger) {
   auto central = std::make_unique<CentralDifference>();
-  if (ConservativeSmoothing* smoothing = problem.smoothing()) {
+  if (smoothing) {
     if (ledger)
       central->setVelocityFilter([smoothing, ledger](Real step, Vector& v) {
         const Real before = ledger->kineticEnergy(v);
@@ -31,6 +30,13 @@ std::unique_ptr<CentralDifference> veryWeakSphCentralDifference(VeryWeakSphProbl
     else
       central->setVelocityFilter([smoothing](Real step, Vector& v) { smoothing->apply(step, v); });
   }
+  return central;
+}
+
+template <int D>
+std::unique_ptr<CentralDifference> veryWeakSphCentralDifference(VeryWeakSphProblem<D>& problem,
+                                                                LinearEnergyLedger* ledger) {
+  std::unique_ptr<CentralDifference> central = smoothedCentralDifference(problem.smoothing(), ledger);
   if (!problem.prescribedDofs().empty())
     central->setPrescribedDisplacement(problem.prescribedDofs(),
                                        [&problem](Real t, Vector& values) { problem.prescribedValues(t, values); });

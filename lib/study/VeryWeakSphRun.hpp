@@ -28,6 +28,11 @@ template <int D>
 std::unique_ptr<CentralDifference> veryWeakSphCentralDifference(VeryWeakSphProblem<D>& problem,
                                                                 LinearEnergyLedger* ledger = nullptr);
 
+// Central differences with `smoothing` (may be null) as the velocity filter, its loss booked in
+// `ledger` when given: the part of the above a run on ranks uses with its own share of the filter.
+std::unique_ptr<CentralDifference> smoothedCentralDifference(ConservativeSmoothing* smoothing,
+                                                             LinearEnergyLedger* ledger = nullptr);
+
 // Each probe's value in the state (raw) and the value the method reports: with a deconvolution
 // matrix (the published variant) the deconvolved value at the probe (eq. (35)), else the state
 // itself. Samples once per time (end() right after a sample of the same step adds nothing); the

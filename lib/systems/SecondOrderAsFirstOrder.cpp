@@ -13,6 +13,12 @@ void SecondOrderAsFirstOrder::rhs(Real t, Eigen::Ref<const Vector> y, Eigen::Ref
   ydot.head(n) = y.tail(n);
 }
 
+std::optional<VectorDistribution> SecondOrderAsFirstOrder::distribution() const {
+  std::optional<VectorDistribution> d = system_.distribution();
+  if (d) d->globalSize *= 2;
+  return d;
+}
+
 Vector SecondOrderAsFirstOrder::pack(const Vector& u, const Vector& v) const {
   const Index n = system_.size();
   if (u.size() != n || v.size() != n) throw InputError("state", "u and v must both have the system's size");

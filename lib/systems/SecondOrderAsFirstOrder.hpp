@@ -13,6 +13,10 @@ class SecondOrderAsFirstOrder : public FirstOrderSystem {
 
   Index size() const override { return 2 * system_.size(); }
   void rhs(Real t, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) override;
+  // The second-order system's distribution with twice its length: each rank holds [u; v] of its
+  // own dofs, so the global y is a permutation of the serial [u; v] (the same element-wise
+  // operations; norms summed in another order).
+  std::optional<VectorDistribution> distribution() const override;
 
   // Pack u and v into y = [u; v], and split y back.
   Vector pack(const Vector& u, const Vector& v) const;

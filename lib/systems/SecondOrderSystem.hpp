@@ -5,6 +5,9 @@
 
 #include "core/StateArchive.hpp"
 #include "core/Types.hpp"
+#include "systems/VectorDistribution.hpp"
+
+#include <optional>
 
 namespace mfwave {
 
@@ -24,6 +27,10 @@ class SecondOrderSystem {
   // True if the acceleration depends on v (damping, dashpots, viscosity). Explicit integrators
   // use it to skip the velocity predictor when it is not needed.
   virtual bool dependsOnVelocity() const { return true; }
+
+  // A system that holds one rank's share of the unknowns says so here (VectorDistribution.hpp), so
+  // that integrators with global vector operations reduce them over the ranks. Serial: none.
+  virtual std::optional<VectorDistribution> distribution() const { return std::nullopt; }
 
   // Checkpoints: a system whose evaluation depends on more than its arguments (a neighbour list
   // kept between rebuilds, a load history) saves and restores that here; the integrator calls

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 using namespace mfwave;
@@ -221,6 +222,28 @@ TEST(ArkodeExplicit, SundialsFailuresBecomeErrorsNamingTheFunction) {
     EXPECT_NE(what.find("ERKStepEvolve"), std::string::npos) << what;
     EXPECT_NE(what.find("ARK_TOO_MUCH_WORK"), std::string::npos) << what;
   }
+}
+
+// test_integrators links no MPI, so no MPI vectors are installed: a system that says it holds one
+// rank's share is refused by name rather than run on serial vectors, which would give each rank its
+// own norms and its own adaptive steps (the MPI side: tests/decomposition/mpi/ArkodeMpiTest.cpp).
+TEST(ArkodeExplicit, ADistributedSystemWithoutMpiVectorsIsRefused) {
+  struct Distributed : FirstOrderSystem {
+    Index size() const override { return 2; }
+    void rhs(Real, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) override { ydot = -y; }
+    std::optional<VectorDistribution> distribution() const override { return VectorDistribution{&handle, 4}; }
+    int handle = 0;  // stands for a communicator; never read without MPI vectors
+  } system;
+  ArkodeOptions options;
+  options.fixedStep = 0.1;
+  ArkodeExplicit integrator(options);
+  try {
+    integrator.initialise(system, 0, Vector::Ones(2));
+    FAIL() << "a distributed system ran on serial vectors";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("no MPI vectors"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(integrator.isInitialised());
 }
 
 }  // namespace

@@ -26,3 +26,24 @@ TEST(SecondOrderAsFirstOrder, StacksVelocityAndAcceleration) {
   EXPECT_EQ(u2, u);
   EXPECT_EQ(v2, v);
 }
+
+// The first-order view of a rank's share holds [u; v] of the rank's dofs: the same communicator,
+// twice the global length (what ARKODE's MPI vectors are made with). A serial system has none.
+TEST(SecondOrderAsFirstOrder, PassesOnTheDistributionWithTwiceTheLength) {
+  struct Share : SecondOrderSystem {
+    Index size() const override { return 3; }
+    void acceleration(Real, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector>, Eigen::Ref<Vector> a) override { a = -u; }
+    std::optional<VectorDistribution> distribution() const override { return VectorDistribution{&handle, 7}; }
+    int handle = 0;  // stands for a communicator
+  } share;
+  const std::optional<VectorDistribution> d = SecondOrderAsFirstOrder(share).distribution();
+  ASSERT_TRUE(d.has_value());
+  EXPECT_EQ(d->communicator, &share.handle);
+  EXPECT_EQ(d->globalSize, 14);
+
+  SparseMatrix m(1, 1), k(1, 1);
+  m.insert(0, 0) = 1;
+  k.insert(0, 0) = 1;
+  LinearSecondOrderSystem serial(m, SparseMatrix(1, 1), k);
+  EXPECT_FALSE(SecondOrderAsFirstOrder(serial).distribution().has_value());
+}

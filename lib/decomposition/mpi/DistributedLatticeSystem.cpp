@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "decomposition/mpi/LineSums.hpp"
+#include "integrators/ArkodeMpiVectors.hpp"
 
 #include <algorithm>
 #include <string>
@@ -44,15 +45,11 @@ DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSy
   if (decomposition.grid()[0] != 1)
     throw InputError("ranks", "the decomposition splits x into " + std::to_string(decomposition.grid()[0]) +
                                   " blocks; the distributed system needs whole lattice lines per rank");
-  exchange_ = std::make_unique<HaloExchange<D>>(HaloPlan<D>(decomposition, rank, stencilReach(serial.stiffness())), D,
-                                                communicator);
-  stiffness_ = std::make_unique<LocalStencils<D>>(serial.stiffness(), exchange_->plan().owned(), exchange_->plan().local());
+  stiffness_ = std::make_unique<RankStencilProduct<D>>(serial.stiffness(), decomposition, rank, communicator);
   inverseMass_ = serial.inverseBlocks(0);
   nodeFlat_.assign(static_cast<std::size_t>(std::max(serial.mass().entryCount(), serial.damping().entryCount())), 0);
   for (Index type = 0; type < serial.stiffness().typeCount(); ++type)
     dashpotTypes_.push_back(serial.hasDamping() && serial.damping().begin(type) != serial.damping().end(type));
-  local_.resize(static_cast<std::size_t>(exchange_->localSize()));
-  ku_.resize(static_cast<std::size_t>(size()));
   // The loads' owned entries, in their serial order: each owned dof receives the same additions.
   if (const std::vector<SparseLoad>* loads = serial.sparseLoads()) {
     const LatticeRowTypes<D>& types = serial.types();
@@ -68,19 +65,13 @@ DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSy
       loads_.push_back(std::move(mine));
     }
   }
-}
-
-template <int D>
-void DistributedLatticeSystem<D>::multiplyStiffness(const Real* u, const std::vector<char>* direct) const {
-  const Box<D>& own = owned();
-  const Box<D>& local = exchange_->plan().local();
-  own.forEachNode([&](const std::array<Index, D>& node) {
-    const Real* from = u + D * own.localIndex(node);
-    Real* to = local_.data() + D * local.localIndex(node);
-    for (int c = 0; c < D; ++c) to[c] = from[c];
-  });
-  exchange_->exchange(local_.data());
-  stiffness_->multiply(local_.data(), ku_.data(), direct);
+  // Summed rather than taken from the serial system: the ranks' shares must cover it exactly,
+  // and N_VMake_Parallel checks the same sum again.
+  long long total = static_cast<long long>(size());
+  MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_LONG_LONG, MPI_SUM, communicator);
+  globalSize_ = static_cast<Index>(total);
+  // Any ARKODE integrator handed this system works on the MPI vectors (distribution()).
+  enableArkodeMpiVectors();
 }
 
 template <int D>
@@ -89,16 +80,12 @@ void DistributedLatticeSystem<D>::solve(const std::vector<Real>& inverseBlocks, 
   std::fill(a, a + size(), 0.0);
   addSparseLoads(loads_, t, a);
   const bool damped = serial_.hasDamping() && v != nullptr;
-  multiplyStiffness(u, damped ? &dashpotTypes_ : nullptr);
-  const LatticeRowTypes<D>& types = serial_.types();
   const LatticeStencils<D>& damping = serial_.damping();
-  const Box<D>& own = owned();
-  own.forEachNode([&](const std::array<Index, D>& node) {
-    const Index k = own.localIndex(node);
-    const Index type = types.typeOf(node);
-    // LatticeSecondOrderSystem::fusedSolve: r = f - K u - C v, a = B r.
+  // LatticeSecondOrderSystem::fusedSolve, fused with the product as it is: r = f - K u - C v,
+  // a = B r; the dashpot types row by row.
+  stiffness_->forEachProduct(u, [&](Index k, Index type, const Real* ku, Index stride) {
     Real r[D];
-    for (int c = 0; c < D; ++c) r[c] = a[D * k + c] - ku_[static_cast<std::size_t>(D * k + c)];
+    for (int c = 0; c < D; ++c) r[c] = a[D * k + c] - ku[c * stride];
     if (damped && damping.begin(type) != damping.end(type)) {
       Real cv[D];
       damping.rowProductAt(type, v + D * k, nodeFlat_.data(), cv);
@@ -110,7 +97,7 @@ void DistributedLatticeSystem<D>::solve(const std::vector<Real>& inverseBlocks, 
       for (int d = 0; d < D; ++d) s += b[D * c + d] * r[d];
       a[D * k + c] = s;
     }
-  });
+  }, [&](Index type) { return damped && dashpotTypes_[static_cast<std::size_t>(type)]; });
 }
 
 template <int D>
@@ -127,8 +114,26 @@ void DistributedLatticeSystem<D>::force(Real t, Vector& f) const {
 
 template <int D>
 void DistributedLatticeSystem<D>::applyStiffness(const Vector& x, Vector& y) const {
-  multiplyStiffness(x.data());
-  y = Eigen::Map<const Vector>(ku_.data(), size());
+  y.resize(size());
+  stiffness_->multiply(x.data(), y.data());
+}
+
+template <int D>
+template <class Function>
+void DistributedLatticeSystem<D>::forEachOwnedNode(Function&& f) const {
+  // Line by line (an owned line is a whole lattice line: x is not split), its row types from the
+  // line's base type as forEachLatticeLine gives them; threads share lines in a fixed partition.
+  const Box<D>& own = owned();
+  const LatticeRowTypes<D>& types = serial_.types();
+  const Index nx = own.extent(0);
+  const long lines = static_cast<long>(own.lineCount());
+#pragma omp parallel for schedule(static) if (lines > 16 && own.count() > 20000)
+  for (long line = 0; line < lines; ++line) {
+    const std::array<Index, D> start = own.lineStart(line);
+    const Index first = static_cast<Index>(line) * nx;
+    const Index base = types.typeOf(start) - types.compactIndex(0, start[0]);
+    for (Index i = 0; i < nx; ++i) f(first + i, base + types.compactIndex(0, start[0] + i));
+  }
 }
 
 template <int D>
@@ -136,14 +141,9 @@ template <class Function>
 Real DistributedLatticeSystem<D>::sumOverOwnedNodes(Function&& g) const {
   // Line by line along x in node order, as sumOverLatticeNodes adds them; the lines over the ranks
   // in the lattice's order.
-  const Box<D>& own = owned();
-  const LatticeRowTypes<D>& types = serial_.types();
-  const Index nx = own.extent(0);
-  std::vector<Real> lineSums(static_cast<std::size_t>(own.count() / nx), 0.0);
-  own.forEachNode([&](const std::array<Index, D>& node) {
-    const Index k = own.localIndex(node);
-    lineSums[static_cast<std::size_t>(k / nx)] += g(k, types.typeOf(node));
-  });
+  const Index nx = owned().extent(0);
+  std::vector<Real> lineSums(static_cast<std::size_t>(owned().lineCount()), 0.0);
+  forEachOwnedNode([&](Index k, Index type) { lineSums[static_cast<std::size_t>(k / nx)] += g(k, type); });
   return sumInLatticeOrder(decomposition_, rank_, lineSums, communicator_);
 }
 
@@ -160,12 +160,15 @@ Real DistributedLatticeSystem<D>::kineticEnergy(const Vector& v) const {
 
 template <int D>
 Real DistributedLatticeSystem<D>::strainEnergy(const Vector& u) const {
-  multiplyStiffness(u.data());
-  return 0.5 * sumOverOwnedNodes([&](Index k, Index) {
-           Real s = 0;
-           for (int c = 0; c < D; ++c) s += u[D * k + c] * ku_[static_cast<std::size_t>(D * k + c)];
-           return s;
-         });
+  // As LatticeSecondOrderSystem::strainEnergy: u . K u per node from the products, per line.
+  const Index nx = owned().extent(0);
+  std::vector<Real> lineSums(static_cast<std::size_t>(owned().lineCount()), 0.0);
+  stiffness_->forEachProduct(u.data(), [&](Index k, Index, const Real* ku, Index stride) {
+    Real s = 0;
+    for (int c = 0; c < D; ++c) s += u[D * k + c] * ku[c * stride];
+    lineSums[static_cast<std::size_t>(k / nx)] += s;
+  }, [](Index) { return false; });
+  return 0.5 * sumInLatticeOrder(decomposition_, rank_, lineSums, communicator_);
 }
 
 template <int D>
@@ -174,14 +177,10 @@ Real DistributedLatticeSystem<D>::dampingPower(const Vector& v) const {
   // The serial sum adds only the nodes with dashpots; the others add nothing here either (a line
   // without dashpots sums to +0 in both).
   const LatticeStencils<D>& damping = serial_.damping();
-  const Box<D>& own = owned();
-  const LatticeRowTypes<D>& types = serial_.types();
-  const Index nx = own.extent(0);
-  std::vector<Real> lineSums(static_cast<std::size_t>(own.count() / nx), 0.0);
-  own.forEachNode([&](const std::array<Index, D>& node) {
-    const Index type = types.typeOf(node);
+  const Index nx = owned().extent(0);
+  std::vector<Real> lineSums(static_cast<std::size_t>(owned().lineCount()), 0.0);
+  forEachOwnedNode([&](Index k, Index type) {
     if (damping.begin(type) == damping.end(type)) return;
-    const Index k = own.localIndex(node);
     Real cv[D];
     damping.rowProductAt(type, v.data() + D * k, nodeFlat_.data(), cv);
     Real& sum = lineSums[static_cast<std::size_t>(k / nx)];
@@ -215,10 +214,8 @@ Vector DistributedLatticeSystem<D>::lumpedMass() const {
     return diagonal;
   }();
   Vector m(size());
-  const LatticeRowTypes<D>& types = serial_.types();
-  owned().forEachNode([&](const std::array<Index, D>& node) {
-    const Index k = owned().localIndex(node);
-    for (int c = 0; c < D; ++c) m[D * k + c] = perType[D * types.typeOf(node) + c];
+  forEachOwnedNode([&](Index k, Index type) {
+    for (int c = 0; c < D; ++c) m[D * k + c] = perType[D * type + c];
   });
   return m;
 }

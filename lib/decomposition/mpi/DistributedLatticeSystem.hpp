@@ -14,14 +14,14 @@
 // transmitting faces), loads given as nonzero entries (SparseLoads.hpp). Not yet: dashpots that
 // couple nodes (their factorised surface solve), prescribed displacements (docs/scaling.md).
 
-#include "decomposition/LocalStencils.hpp"
-#include "decomposition/mpi/HaloExchange.hpp"
+#include "decomposition/mpi/RankStencilProduct.hpp"
 #include "lattice/LatticeSecondOrderSystem.hpp"
 #include "systems/LinearOperatorSystem.hpp"
 
 #include <mpi.h>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace mfwave {
@@ -39,6 +39,10 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   // D values per owned node, in the owned box's order.
   Index size() const override { return D * owned().count(); }
   bool hasDamping() const override { return serial_.hasDamping(); }
+  // This rank's communicator and the sum of the ranks' sizes: the ARKODE integrators then run on
+  // SUNDIALS' MPI vectors (integrators/ArkodeMpiVectors.hpp, which the constructor enables), so
+  // their adaptive steps are chosen from norms over all the ranks.
+  std::optional<VectorDistribution> distribution() const override { return VectorDistribution{&communicator_, globalSize_}; }
   void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) override;
 
   // The owned part of f(t).
@@ -59,9 +63,9 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   // prescribed dofs.
   std::unique_ptr<CentredDampingSolve> centredDamping(Real dt, const std::vector<Index>& prescribedDofs) const override;
 
-  const Box<D>& owned() const { return exchange_->plan().owned(); }
+  const Box<D>& owned() const { return stiffness_->owned(); }
   // The halo exchange of each stiffness product (its plan, bytes and messages).
-  const HaloExchange<D>& exchange() const { return *exchange_; }
+  const HaloExchange<D>& exchange() const { return stiffness_->exchange(); }
   // The owned part of a whole-lattice vector (D values per node).
   Vector restrict(const Vector& whole) const;
   // B_type (f - K u - C v) for every owned node into a: the acceleration with B = M^-1, the dashpot
@@ -69,9 +73,10 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   void solve(const std::vector<Real>& inverseBlocks, Real t, const Real* u, const Real* v, Real* a) const;
 
  private:
-  // u into the local box, halo exchanged; then K u for the owned rows into ku_. `direct` as
-  // LocalStencils::multiply's (the serial fused solve's dashpot types when damped).
-  void multiplyStiffness(const Real* u, const std::vector<char>* direct = nullptr) const;
+  // f(k, type) for every owned node k (in the owned box's order) and its row type; f must only
+  // write what belongs to node k (lines run on threads).
+  template <class Function>
+  void forEachOwnedNode(Function&& f) const;
   // Adds the sum over the ranks' owned line sums of g(k, type) (k the owned node, in its box's
   // order), in the serial order.
   template <class Function>
@@ -81,13 +86,12 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   const BlockDecomposition<D>& decomposition_;
   int rank_;
   MPI_Comm communicator_;
-  std::unique_ptr<HaloExchange<D>> exchange_;
-  std::unique_ptr<LocalStencils<D>> stiffness_;
+  Index globalSize_ = 0;  // sum over the ranks of size()
+  std::unique_ptr<RankStencilProduct<D>> stiffness_;
   std::vector<Real> inverseMass_;  // per type (LatticeSecondOrderSystem::inverseBlocks(0))
   std::vector<Index> nodeFlat_;    // zeros: the mass and dashpots act on a node's own dofs
   std::vector<SparseLoad> loads_;  // the owned entries, dofs owned
   std::vector<char> dashpotTypes_; // per row type: has dashpots
-  mutable std::vector<Real> local_, ku_;
 };
 
 extern template class DistributedLatticeSystem<1>;

@@ -6,34 +6,55 @@
 
 namespace mfwave {
 
-RankProbes::RankProbes(std::vector<Probe> probes, std::vector<Index> localParticle, int components,
-                       MPI_Comm communicator)
-    : ReportedProbes(std::move(probes)),
-      local_(std::move(localParticle)),
-      components_(components),
-      communicator_(communicator) {
-  if (local_.size() != this->probes().size())
-    throw Error("RankProbes: " + std::to_string(local_.size()) + " local particles for " +
-                std::to_string(this->probes().size()) + " probes");
-  std::vector<int> owners(local_.size());
-  for (std::size_t i = 0; i < local_.size(); ++i) owners[i] = local_[i] >= 0 ? 1 : 0;
+RankProbes::RankProbes(std::vector<Probe> probes, const LocalParticle& localParticle, int components,
+                       MPI_Comm communicator, const Rows* rows)
+    : ReportedProbes(std::move(probes)), components_(components), communicator_(communicator) {
+  const std::vector<Probe>& all = this->probes();
+  std::vector<int> owners(all.size());
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const bool velocity = all[i].quantity == ProbeQuantity::Velocity;
+    reads_.push_back({localParticle(all[i].particle), all[i].component, velocity});
+    owners[i] = reads_.back().local >= 0 ? 1 : 0;
+  }
   MPI_Allreduce(MPI_IN_PLACE, owners.data(), static_cast<int>(owners.size()), MPI_INT, MPI_SUM, communicator_);
   for (std::size_t i = 0; i < owners.size(); ++i)
     if (owners[i] != 1)
-      throw Error("probe \"" + this->probes()[i].name + "\" is owned by " + std::to_string(owners[i]) +
+      throw Error("probe \"" + all[i].name + "\" is owned by " + std::to_string(owners[i]) +
                   " ranks; it must be owned by exactly one");
-  values_.resize(local_.size());
+  if (rows) {
+    for (const Probe& p : all) {
+      if (p.particle < 0 || p.particle >= rows->rows())
+        throw Error("probe \"" + p.name + "\": particle " + std::to_string(p.particle) + " has no deconvolution row");
+      rowStart_.push_back(reads_.size());
+      for (Rows::InnerIterator it(*rows, static_cast<int>(p.particle)); it; ++it) {
+        reads_.push_back({localParticle(it.col()), p.component, p.quantity == ProbeQuantity::Velocity});
+        weights_.push_back(it.value());
+      }
+    }
+    rowStart_.push_back(reads_.size());
+  }
+  values_.resize(reads_.size());
 }
 
 void RankProbes::observe(const StateView& s) {
   if (!beginSample(s.time)) return;
-  for (std::size_t i = 0; i < local_.size(); ++i) {
-    const Probe& p = probes()[i];
-    const Vector& field = p.quantity == ProbeQuantity::Velocity ? s.velocity : s.displacement;
-    values_[i] = local_[i] >= 0 ? field[components_ * local_[i] + p.component] : -0.0;
+  for (std::size_t k = 0; k < reads_.size(); ++k) {
+    const Read& r = reads_[k];
+    const Vector& field = r.velocity ? s.velocity : s.displacement;
+    values_[k] = r.local >= 0 ? field[components_ * r.local + r.component] : -0.0;
   }
   MPI_Allreduce(MPI_IN_PLACE, values_.data(), static_cast<int>(values_.size()), MPI_DOUBLE, MPI_SUM, communicator_);
-  for (std::size_t i = 0; i < values_.size(); ++i) add(i, values_[i], values_[i]);
+  const std::size_t count = probes().size();
+  for (std::size_t i = 0; i < count; ++i) {
+    if (rowStart_.empty()) {
+      add(i, values_[i], values_[i]);
+      continue;
+    }
+    // deconvolveAt's sum, in the row's order
+    Real sum = 0;
+    for (std::size_t k = rowStart_[i]; k < rowStart_[i + 1]; ++k) sum += weights_[k - count] * values_[k];
+    add(i, values_[i], sum);
+  }
 }
 
 }  // namespace mfwave

@@ -204,6 +204,7 @@ void VeryWeakSphProblem<D>::buildLattice(const ParticleSet<D>& particles,
   // the smoothing filter (eq. (33)) from its stencils
   if (settings.smoothingRate > 0) {
     auto s = std::make_shared<const LatticeStencils<D>>(std::move(stencils.smoothing));
+    smoothingStencils_ = s;
     smoothingBytes_ = s->bytes();
     smoothing_ = std::make_unique<ConservativeSmoothing>([s](const Vector& in, Vector& out) { s->multiply(in, out); },
                                                          particles.physicalCount(), D, settings.smoothingRate,

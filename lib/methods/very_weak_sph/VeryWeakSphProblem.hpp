@@ -135,6 +135,9 @@ class VeryWeakSphProblem {
   // Eq. (33) when settings.smoothingRate > 0, else null. The caller applies it as the
   // integrator's velocity filter.
   ConservativeSmoothing* smoothing() { return smoothing_.get(); }
+  // S of the smoothing as lattice stencils (the lattice storage with a filter), else null: what a
+  // run on ranks applies to its share (lib/decomposition).
+  const LatticeStencils<D>* smoothingStencils() const { return smoothingStencils_.get(); }
   // Eq. (35) when settings.deconvolution with the sparse storage, else null.
   const ParticleMatrix* deconvolution() const { return deconvolution_ ? &*deconvolution_ : nullptr; }
   // Whether eq. (35) is on (either storage), and its rows at `particles` (an N x N matrix with only
@@ -168,6 +171,7 @@ class VeryWeakSphProblem {
   std::vector<Real> prescribedValue_;
   std::vector<const TimeFunction*> prescribedHistory_;
   std::unique_ptr<ConservativeSmoothing> smoothing_;
+  std::shared_ptr<const LatticeStencils<D>> smoothingStencils_;  // shared with smoothing_'s product
   std::optional<ParticleMatrix> deconvolution_;
   std::unique_ptr<LatticeStencils<D>> deconvolutionStencils_;  // lattice storage with eq. (35)
 };

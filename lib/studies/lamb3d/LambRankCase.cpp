@@ -5,6 +5,7 @@
 
 #include "core/Error.hpp"
 #include "decomposition/mpi/LatticeShare.hpp"
+#include "decomposition/mpi/RankStencilProduct.hpp"
 #include "decomposition/mpi/RankProbes.hpp"
 #include "io/run/ProgressReporter.hpp"
 #include "io/vtk/ParallelVtkFrameWriter.hpp"
@@ -25,8 +26,7 @@ std::string whyNotOnRanks(VeryWeakSphProblem<D>& problem, const Scene& scene) {
   if (!lattice) return "its operator is an assembled matrix, not lattice stencils";
   if (lattice->hasDamping() && !lattice->damping().blockDiagonal()) return "its dashpots couple particles";
   if (lattice->hasForce() && !lattice->sparseLoads()) return "its loads are not nonzero entries";
-  if (problem.smoothing()) return "its smoothing filter (method.smoothing_rate) acts on the whole lattice";
-  if (problem.deconvolves()) return "its deconvolution (method.deconvolution) reads the whole lattice";
+  if (problem.smoothing() && !problem.smoothingStencils()) return "its smoothing filter is an assembled matrix";
   if (!problem.prescribedDofs().empty()) return "it prescribes displacements";
   if (scene.integrator.kind != IntegratorKind::CentralDifference) return "its integrator is not central_difference";
   return {};
@@ -42,16 +42,31 @@ CaseResult runOnRanks(const StudySettings& study, const CaseSettings& settings, 
   DistributedLatticeSystem<D>& system = share.system();
   const bool first = share.rank() == 0;
 
-  // The serial case's integrator and ledger, on this rank's share of the system.
+  // The serial case's integrator, ledger and filter (eq. (33), its product on this rank's share), on
+  // this rank's share of the system.
   LinearEnergyLedger ledger(system, ledgerOptions);
-  const std::unique_ptr<CentralDifference> integrator = veryWeakSphCentralDifference<D>(problem, &ledger);
+  std::optional<RankStencilProduct<D>> smoothingProduct;
+  std::unique_ptr<ConservativeSmoothing> smoothing;
+  if (const LatticeStencils<D>* stencils = problem.smoothingStencils()) {
+    smoothingProduct.emplace(*stencils, share.decomposition(), share.rank(), MPI_COMM_WORLD);
+    smoothing = std::make_unique<ConservativeSmoothing>(
+        [&smoothingProduct](const Vector& in, Vector& out) {
+          out.resize(in.size());
+          smoothingProduct->multiply(in.data(), out.data());
+        },
+        system.size() / D, D, problem.smoothing()->rate(), problem.smoothing()->order());
+  }
+  const std::unique_ptr<CentralDifference> integrator = smoothedCentralDifference(smoothing.get(), &ledger);
   integrator->initialise(system, 0, system.restrict(problem.initialDisplacement()), Vector::Zero(system.size()), dt);
 
-  // Probes: each read by the rank owning its particle (a particle's number is its lattice node's).
+  // Probes: each read by the rank owning its particle (a particle's number is its lattice node's),
+  // the deconvolved value (eq. (35)) from its row's neighbours wherever they live.
   const std::vector<Probe> probes = resolveProbes(scene.probes, particles);
-  std::vector<Index> local;
-  for (const Probe& p : probes) local.push_back(share.localNode(p.particle));
-  RankProbes recorder(probes, local, D, MPI_COMM_WORLD);
+  std::vector<Index> probeParticles;
+  for (const Probe& p : probes) probeParticles.push_back(p.particle);
+  const ParticleMatrix deconvolutionRows = problem.deconvolutionRows(probeParticles);
+  RankProbes recorder(probes, [&share](Index particle) { return share.localNode(particle); }, D, MPI_COMM_WORLD,
+                      problem.deconvolves() ? &deconvolutionRows : nullptr);
   result.record.setupSeconds = setupClock.seconds();
 
   StabilityMonitor monitor(scene.stability.options(D, ledgerOptions.quietAfter));

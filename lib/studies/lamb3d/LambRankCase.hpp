@@ -4,7 +4,9 @@
 // stencils, the stable step: a set-up of O(N) per rank, docs/scaling.md); then each steps its share
 // of the lattice system (LatticeShare), the probes travel to every rank (RankProbes), the energy
 // ledger sums over the ranks in the serial order, and VTK frames are written as one piece per rank
-// (ParallelVtkFrameWriter). The state, the probes and the ledger are the serial run's bit for bit,
+// (ParallelVtkFrameWriter), the smoothing filter applies its stencils to the rank's share
+// (RankStencilProduct) and deconvolved probes gather their rows' neighbours (RankProbes). The
+// state, the probes and the ledger are the serial run's bit for bit,
 // so the case's errors are too. Rank 0 scores the probes and writes the files; the others write
 // their frame pieces only.
 
@@ -20,9 +22,9 @@
 namespace mfwave::lamb3d {
 
 // Why `problem` cannot be stepped on the ranks (a serial-only feature it uses), or empty when it
-// can: the lattice storage with dashpots on each particle's own dofs and loads as nonzero entries,
-// central differences, no smoothing filter, deconvolution or prescribed faces. Its checkpoints are
-// written per rank (decomposition/mpi/RankCheckpointStore, which the driver installs).
+// can: the lattice storage (its smoothing filter too) with dashpots on each particle's own dofs and
+// loads as nonzero entries, central differences, no prescribed faces. Its checkpoints are written
+// per rank (decomposition/mpi/RankCheckpointStore, which the driver installs).
 template <int D>
 std::string whyNotOnRanks(VeryWeakSphProblem<D>& problem, const Scene& scene);
 

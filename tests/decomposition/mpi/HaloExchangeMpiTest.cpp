@@ -5,15 +5,12 @@
 // applied across the ranks gives the serial product's bits.
 #include "decomposition/LocalStencils.hpp"
 #include "decomposition/mpi/HaloExchange.hpp"
-#include "decomposition/mpi/DistributedLatticeSystem.hpp"
 #include "decomposition/mpi/LineSums.hpp"
-#include "integrators/CentralDifference.hpp"
 #include "lattice/LatticeSecondOrderSystem.hpp"
 
 #include "core/Error.hpp"
-#include "core/TimeFunction.hpp"
-#include "systems/SparseLoads.hpp"
 
+#include "MpiTestSupport.hpp"
 #include "support/RandomVector.hpp"
 
 #include <gtest/gtest.h>
@@ -25,20 +22,10 @@
 #include <vector>
 
 using namespace mfwave;
+using test::worldRank;
+using test::worldSize;
 
 namespace {
-
-int worldRank() {
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  return rank;
-}
-
-int worldSize() {
-  int size = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  return size;
-}
 
 // A value no two (node, component) pairs share.
 template <int D>
@@ -220,181 +207,3 @@ TEST(HaloExchangeMpiTest, AnEnergyOverTheRanksIsTheSerialEnergyBitForBit) {
   }
 }
 
-// A wave run on the ranks keeps the serial bits: central difference on M u'' + K u = 0, K the
-// lattice Laplacian of the 3^D - 1 neighbours (weight 1 / |offset|^2, fewer neighbours at the
-// faces), M = 1.5 I, 60 steps from a smooth bump; the integrator is the serial one, stepping the
-// owned vectors of DistributedLatticeSystem.
-//
-// With `loaded`, the faces of the lattice carry dashpots on their own dofs (C = 0.7 I there, the
-// Galerkin very weak SPH's kind, solved by eq. (32)) and two loads of their own histories push on
-// a few nodes (one near a corner, one in the middle): the dashpot solve, the loads and the ledger's
-// figures (dashpot power, load work's dot) keep the serial bits too.
-template <int D>
-void expectTheDistributedRunKeepsTheSerialBits(const std::array<Index, D>& nodes, bool loaded) {
-  const LatticeRowTypes<D> types(nodes, 1);
-  Box<D> compact;
-  compact.hi = types.compactNodes();
-  std::vector<Triplet> k, m, dashpots;
-  compact.forEachNode([&](const std::array<Index, D>& row) {
-    bool face = false;
-    for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s) face = face || row[s] == 0 || row[s] == compact.hi[s] - 1;
-    if (face && loaded)
-      for (int c = 0; c < D; ++c)
-        dashpots.emplace_back(static_cast<int>(D * compact.localIndex(row) + c), static_cast<int>(D * compact.localIndex(row) + c), 0.7);
-    Box<D> around;
-    for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s) {
-      around.lo[s] = row[s] - 1;
-      around.hi[s] = row[s] + 2;
-    }
-    const Index i = compact.localIndex(row);
-    Real diagonal = 0;
-    intersection(around, compact).forEachNode([&](const std::array<Index, D>& column) {
-      const Index j = compact.localIndex(column);
-      if (j == i) return;
-      Real r2 = 0;
-      for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s) r2 += static_cast<Real>((column[s] - row[s]) * (column[s] - row[s]));
-      for (int c = 0; c < D; ++c) k.emplace_back(static_cast<int>(D * i + c), static_cast<int>(D * j + c), -1.0 / r2);
-      diagonal += 1.0 / r2;
-    });
-    for (int c = 0; c < D; ++c) {
-      k.emplace_back(static_cast<int>(D * i + c), static_cast<int>(D * i + c), diagonal);
-      m.emplace_back(static_cast<int>(D * i + c), static_cast<int>(D * i + c), 1.5);
-    }
-  });
-  const int unknowns = static_cast<int>(D * compact.count());
-  SparseMatrix stiffness(unknowns, unknowns), mass(unknowns, unknowns), damping(unknowns, unknowns);
-  stiffness.setFromTriplets(k.begin(), k.end());
-  mass.setFromTriplets(m.begin(), m.end());
-  damping.setFromTriplets(dashpots.begin(), dashpots.end());
-  const TimeFunction ramp = TimeFunction::ramp(0.5, 2.0, 3.0), constant = TimeFunction::constant(-0.4);
-  std::vector<SparseLoad> loads;
-  if (loaded) {
-    std::array<Index, D> corner{}, middle{};
-    for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s) {
-      corner[s] = 1;
-      middle[s] = nodes[s] / 2;
-    }
-    Box<D> whole;
-    whole.hi = nodes;
-    loads.push_back({{D * whole.localIndex(corner), D * whole.localIndex(middle) + D - 1}, {1.25, -0.5}, &ramp});
-    loads.push_back({{D * whole.localIndex(middle)}, {0.75}, &constant});
-  }
-  LatticeSecondOrderSystem<D> serial(LatticeStencils<D>(types, mass),
-                                     loaded ? LatticeStencils<D>(types, damping) : LatticeStencils<D>(),
-                                     LatticeStencils<D>(types, stiffness), loads);
-  ASSERT_EQ(serial.hasDamping(), loaded);
-
-  Box<D> all;
-  all.hi = nodes;
-  Vector u0 = Vector::Zero(D * types.nodeCount()), v0 = Vector::Zero(D * types.nodeCount());
-  all.forEachNode([&](const std::array<Index, D>& node) {
-    Real r2 = 0;
-    for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s) {
-      const Real x = (static_cast<Real>(node[s]) - 0.4 * static_cast<Real>(nodes[s])) / static_cast<Real>(nodes[s]);
-      r2 += x * x;
-    }
-    for (int c = 0; c < D; ++c) u0[D * all.localIndex(node) + c] = std::exp(-20 * r2) * (1.0 + 0.1 * c);
-  });
-  const Real dt = 0.1;
-  const int steps = 60;
-  CentralDifference serialRun;
-  serialRun.initialise(serial, 0, u0, v0, dt);
-  for (int n = 0; n < steps; ++n) serialRun.step();
-  const Vector u = serialRun.state().displacement, v = serialRun.state().velocity;
-  const Real serialEnergy = serial.kineticEnergy(v) + serial.strainEnergy(u);
-  const Real serialPower = serial.dampingPower(v), serialDot = serial.dot(u, v);
-  Vector serialForce;
-  serial.force(1.5, serialForce);
-
-  std::array<bool, D> splittable = BlockDecomposition<D>::allAxes();
-  splittable[0] = false;
-  const BlockDecomposition<D> decomposition(types, worldSize(), {}, splittable);
-  DistributedLatticeSystem<D> distributed(serial, decomposition, worldRank(), MPI_COMM_WORLD);
-  CentralDifference run;
-  run.initialise(distributed, 0, distributed.restrict(u0), distributed.restrict(v0), dt);
-  EXPECT_EQ(run.implicitDamping(), loaded);
-  EXPECT_EQ(serialRun.implicitDamping(), loaded);
-  for (int n = 0; n < steps; ++n) run.step();
-  long different = 0;
-  const Vector expectedU = distributed.restrict(u), expectedV = distributed.restrict(v);
-  for (Index i = 0; i < expectedU.size(); ++i)
-    if (run.state().displacement[i] != expectedU[i] || run.state().velocity[i] != expectedV[i]) ++different;
-  Vector force;
-  distributed.force(1.5, force);
-  const Vector expectedForce = distributed.restrict(serialForce);
-  for (Index i = 0; i < force.size(); ++i)
-    if (force[i] != expectedForce[i]) ++different;
-  MPI_Allreduce(MPI_IN_PLACE, &different, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
-  EXPECT_EQ(different, 0) << D << "-D on " << worldSize() << " ranks";
-  const Vector& ur = run.state().displacement;
-  const Vector& vr = run.state().velocity;
-  const Real energy = distributed.kineticEnergy(vr) + distributed.strainEnergy(ur);
-  EXPECT_EQ(energy, serialEnergy) << "difference " << energy - serialEnergy;
-  EXPECT_EQ(distributed.dampingPower(vr), serialPower);
-  EXPECT_EQ(distributed.dot(ur, vr), serialDot);
-  if (loaded) {
-    EXPECT_GT(serialPower, 0.0);
-    EXPECT_NE(serialForce.squaredNorm(), 0.0);
-  }
-  // The run did something: the bump has spread and its energy is kept.
-  EXPECT_GT((u - u0).cwiseAbs().maxCoeff(), 0.1 * u0.cwiseAbs().maxCoeff());
-  if (!loaded) {
-    const Real initialEnergy = serial.strainEnergy(u0);
-    EXPECT_NEAR(serialEnergy, initialEnergy, 0.05 * initialEnergy);
-  }
-}
-
-TEST(HaloExchangeMpiTest, ACentralDifferenceRunOnTheRanksKeepsTheSerialBits) {
-  expectTheDistributedRunKeepsTheSerialBits<3>({26, 15, 12}, false);
-  expectTheDistributedRunKeepsTheSerialBits<2>({41, 23}, false);
-}
-
-TEST(HaloExchangeMpiTest, DashpotsAndLoadsOnTheRanksKeepTheSerialBits) {
-  expectTheDistributedRunKeepsTheSerialBits<3>({26, 15, 12}, true);
-  expectTheDistributedRunKeepsTheSerialBits<2>({41, 23}, true);
-}
-
-// What the distributed system does not take yet is refused by name.
-TEST(HaloExchangeMpiTest, CoupledDashpotsALoadFunctionAndPrescribedDofsAreRefusedByName) {
-  const LatticeRowTypes<2> types({12, 9}, 1);
-  const Index n = 2 * types.compactNodes()[0] * types.compactNodes()[1];
-  SparseMatrix identity(n, n), coupled(n, n);
-  identity.setIdentity();
-  coupled.insert(0, 2) = 0.5;  // node 0 pushed by node 1's velocity
-  coupled.insert(0, 0) = 1.0;
-  const BlockDecomposition<2> decomposition(types, worldSize(), {}, {false, true});
-  auto refusal = [&](const LatticeSecondOrderSystem<2>& serial) -> std::string {
-    try {
-      DistributedLatticeSystem<2> distributed(serial, decomposition, worldRank(), MPI_COMM_WORLD);
-      distributed.centredDamping(0.1, {0});
-    } catch (const InputError& e) {
-      return e.key();
-    }
-    return "";
-  };
-  EXPECT_EQ(refusal(LatticeSecondOrderSystem<2>(LatticeStencils<2>(types, identity), LatticeStencils<2>(types, coupled),
-                                                LatticeStencils<2>(types, identity))),
-            "damping");
-  EXPECT_EQ(refusal(LatticeSecondOrderSystem<2>(LatticeStencils<2>(types, identity), LatticeStencils<2>(),
-                                                LatticeStencils<2>(types, identity),
-                                                [](Real, Eigen::Ref<Vector> f) { f[0] += 1; })),
-            "loads");
-  EXPECT_EQ(refusal(LatticeSecondOrderSystem<2>(LatticeStencils<2>(types, identity), LatticeStencils<2>(),
-                                                LatticeStencils<2>(types, identity))),
-            "prescribed_displacement");
-}
-
-// GoogleTest inside MPI: every rank runs the tests; rank 0 prints; the exit code is the worst rank's.
-int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  ::testing::InitGoogleTest(&argc, argv);
-  if (worldRank() != 0) {
-    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  int result = RUN_ALL_TESTS();
-  int worst = 0;
-  MPI_Allreduce(&result, &worst, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  MPI_Finalize();
-  return worst;
-}

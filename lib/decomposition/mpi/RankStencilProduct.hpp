@@ -1,0 +1,54 @@
+#pragma once
+// A lattice operator applied on one rank (issue 22): the rank's owned values copied into its local
+// box, the halo exchanged (HaloExchange, reach of these stencils), the owned rows applied
+// (LocalStencils). Each owned row of the result is the serial product's row bit for bit. The
+// stiffness of DistributedLatticeSystem and the smoothing filter of a run on ranks are two.
+
+#include "decomposition/BlockDecomposition.hpp"
+#include "decomposition/LocalStencils.hpp"
+#include "decomposition/mpi/HaloExchange.hpp"
+#include "lattice/LatticeStencils.hpp"
+
+#include <mpi.h>
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace mfwave {
+
+template <int D>
+class RankStencilProduct {
+ public:
+  // `stencils` and `decomposition` must outlive this object.
+  RankStencilProduct(const LatticeStencils<D>& stencils, const BlockDecomposition<D>& decomposition, int rank,
+                     MPI_Comm communicator);
+
+  // y = the owned rows applied to x, both D values per owned node in the owned box's order (y must
+  // not alias x). Collective: every rank calls it. `direct` as LocalStencils::multiply's.
+  void multiply(const Real* x, Real* y, const std::vector<char>* direct = nullptr);
+  // The products one by one (LocalStencils::forEachProduct) after the same exchange, so a caller
+  // fuses its use of each row with the product, as the serial fused solve does.
+  template <class Function, class Direct>
+  void forEachProduct(const Real* x, Function&& f, Direct&& direct) {
+    exchange(x);
+    rows_->forEachProduct(local_.data(), std::forward<Function>(f), std::forward<Direct>(direct));
+  }
+
+  const Box<D>& owned() const { return exchange_->plan().owned(); }
+  const HaloExchange<D>& exchange() const { return *exchange_; }
+
+ private:
+  // x (owned) into the local box, its halo exchanged.
+  void exchange(const Real* x);
+
+  std::unique_ptr<HaloExchange<D>> exchange_;
+  std::unique_ptr<LocalStencils<D>> rows_;
+  std::vector<Real> local_;  // the local box's values
+};
+
+extern template class RankStencilProduct<1>;
+extern template class RankStencilProduct<2>;
+extern template class RankStencilProduct<3>;
+
+}  // namespace mfwave

@@ -1,0 +1,23 @@
+#pragma once
+// How a system's vectors are laid out over processes, told to integrators without MPI (issue 22).
+// A system that holds one rank's share of the unknowns (lib/decomposition/mpi) reports the
+// communicator and the global length; an integrator whose vectors take part in global operations
+// (ARKODE's WRMS norms, which choose adaptive steps) then builds distributed vectors, so every rank
+// sees the same norms and takes the same steps. Integrators never see ranks beyond this: they pass
+// the handle on to the one adapter that talks to SUNDIALS (integrators/ArkodeExplicit.cpp).
+//
+// The communicator is opaque (a pointer to the system's MPI_Comm) so that lib/systems and
+// lib/integrators build and link without MPI; only the code that makes MPI vectors casts it back.
+
+#include "core/Types.hpp"
+
+namespace mfwave {
+
+struct VectorDistribution {
+  // Points to an MPI_Comm owned by the system (it lives as long as the system).
+  const void* communicator = nullptr;
+  // The sum of every rank's size(): the length of the global vector.
+  Index globalSize = 0;
+};
+
+}  // namespace mfwave

@@ -1,0 +1,116 @@
+// One rank's share of a lattice system under mpirun (ctest runs this program on 1, 2, 3 and 4
+// ranks, with HaloExchangeMpiTest.cpp): the serial integrator stepping DistributedLatticeSystem
+// keeps the serial run's bits, with and without dashpots and loads, and what the system does not
+// take yet is refused by name.
+#include "decomposition/mpi/DistributedLatticeSystem.hpp"
+#include "integrators/CentralDifference.hpp"
+#include "lattice/LatticeSecondOrderSystem.hpp"
+
+#include "core/Error.hpp"
+
+#include "MpiTestSupport.hpp"
+
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <string>
+
+using namespace mfwave;
+using test::LatticeCase;
+using test::worldRank;
+using test::worldSize;
+
+namespace {
+
+// A wave run on the ranks keeps the serial bits: central difference, 60 steps of the lattice case
+// (MpiTestSupport.hpp); the integrator is the serial one, stepping the owned vectors of
+// DistributedLatticeSystem. With `loaded`, the dashpot solve (eq. (32)), the loads and the ledger's
+// figures (dashpot power, load work's dot) keep the serial bits too.
+template <int D>
+void expectTheDistributedRunKeepsTheSerialBits(const std::array<Index, D>& nodes, bool loaded) {
+  LatticeCase<D> lattice(nodes, loaded);
+  LatticeSecondOrderSystem<D>& serial = *lattice.serial;
+  ASSERT_EQ(serial.hasDamping(), loaded);
+  const Real dt = 0.1;
+  const int steps = 60;
+  CentralDifference serialRun;
+  serialRun.initialise(serial, 0, lattice.u0, lattice.v0, dt);
+  for (int n = 0; n < steps; ++n) serialRun.step();
+  const Vector u = serialRun.state().displacement, v = serialRun.state().velocity;
+  const Real serialEnergy = serial.kineticEnergy(v) + serial.strainEnergy(u);
+  const Real serialPower = serial.dampingPower(v), serialDot = serial.dot(u, v);
+  Vector serialForce;
+  serial.force(1.5, serialForce);
+
+  DistributedLatticeSystem<D>& distributed = *lattice.distributed;
+  CentralDifference run;
+  run.initialise(distributed, 0, distributed.restrict(lattice.u0), distributed.restrict(lattice.v0), dt);
+  EXPECT_EQ(run.implicitDamping(), loaded);
+  EXPECT_EQ(serialRun.implicitDamping(), loaded);
+  for (int n = 0; n < steps; ++n) run.step();
+  Vector force;
+  distributed.force(1.5, force);
+  const long different = test::differencesOverRanks(distributed, run.state().displacement, u) +
+                         test::differencesOverRanks(distributed, run.state().velocity, v) +
+                         test::differencesOverRanks(distributed, force, serialForce);
+  EXPECT_EQ(different, 0) << D << "-D on " << worldSize() << " ranks";
+  const Vector& ur = run.state().displacement;
+  const Vector& vr = run.state().velocity;
+  const Real energy = distributed.kineticEnergy(vr) + distributed.strainEnergy(ur);
+  EXPECT_EQ(energy, serialEnergy) << "difference " << energy - serialEnergy;
+  EXPECT_EQ(distributed.dampingPower(vr), serialPower);
+  EXPECT_EQ(distributed.dot(ur, vr), serialDot);
+  if (loaded) {
+    EXPECT_GT(serialPower, 0.0);
+    EXPECT_NE(serialForce.squaredNorm(), 0.0);
+  }
+  // The run did something: the bump has spread and its energy is kept.
+  EXPECT_GT((u - lattice.u0).cwiseAbs().maxCoeff(), 0.1 * lattice.u0.cwiseAbs().maxCoeff());
+  if (!loaded) {
+    const Real initialEnergy = serial.strainEnergy(lattice.u0);
+    EXPECT_NEAR(serialEnergy, initialEnergy, 0.05 * initialEnergy);
+  }
+}
+
+}  // namespace
+
+TEST(DistributedLatticeSystemMpiTest, ACentralDifferenceRunOnTheRanksKeepsTheSerialBits) {
+  expectTheDistributedRunKeepsTheSerialBits<3>({26, 15, 12}, false);
+  expectTheDistributedRunKeepsTheSerialBits<2>({41, 23}, false);
+}
+
+TEST(DistributedLatticeSystemMpiTest, DashpotsAndLoadsOnTheRanksKeepTheSerialBits) {
+  expectTheDistributedRunKeepsTheSerialBits<3>({26, 15, 12}, true);
+  expectTheDistributedRunKeepsTheSerialBits<2>({41, 23}, true);
+}
+
+// What the distributed system does not take yet is refused by name.
+TEST(DistributedLatticeSystemMpiTest, CoupledDashpotsALoadFunctionAndPrescribedDofsAreRefusedByName) {
+  const LatticeRowTypes<2> types({12, 9}, 1);
+  const Index n = 2 * types.compactNodes()[0] * types.compactNodes()[1];
+  SparseMatrix identity(n, n), coupled(n, n);
+  identity.setIdentity();
+  coupled.insert(0, 2) = 0.5;  // node 0 pushed by node 1's velocity
+  coupled.insert(0, 0) = 1.0;
+  const BlockDecomposition<2> decomposition(types, worldSize(), {}, {false, true});
+  auto refusal = [&](const LatticeSecondOrderSystem<2>& serial) -> std::string {
+    try {
+      DistributedLatticeSystem<2> distributed(serial, decomposition, worldRank(), MPI_COMM_WORLD);
+      distributed.centredDamping(0.1, {0});
+    } catch (const InputError& e) {
+      return e.key();
+    }
+    return "";
+  };
+  EXPECT_EQ(refusal(LatticeSecondOrderSystem<2>(LatticeStencils<2>(types, identity), LatticeStencils<2>(types, coupled),
+                                                LatticeStencils<2>(types, identity))),
+            "damping");
+  EXPECT_EQ(refusal(LatticeSecondOrderSystem<2>(LatticeStencils<2>(types, identity), LatticeStencils<2>(),
+                                                LatticeStencils<2>(types, identity),
+                                                [](Real, Eigen::Ref<Vector> f) { f[0] += 1; })),
+            "loads");
+  EXPECT_EQ(refusal(LatticeSecondOrderSystem<2>(LatticeStencils<2>(types, identity), LatticeStencils<2>(),
+                                                LatticeStencils<2>(types, identity))),
+            "prescribed_displacement");
+}
+
