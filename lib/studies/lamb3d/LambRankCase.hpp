@@ -22,8 +22,8 @@
 namespace mfwave::lamb3d {
 
 // Why `problem` cannot be stepped on the ranks (a serial-only feature it uses), or empty when it
-// can: the lattice storage (its smoothing filter too) with dashpots on each particle's own dofs and
-// loads as nonzero entries, central differences, no prescribed faces or checkpoints.
+// can: the lattice storage (its smoothing filter too) with loads as nonzero entries, central
+// differences, no prescribed faces or checkpoints.
 template <int D>
 std::string whyNotOnRanks(VeryWeakSphProblem<D>& problem, const Scene& scene);
 
