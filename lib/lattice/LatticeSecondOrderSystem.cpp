@@ -1,5 +1,7 @@
 #include "lattice/LatticeSecondOrderSystem.hpp"
 
+#include "lattice/DashpotSurfaceSolve.hpp"
+
 #include "core/Error.hpp"
 #include "solvers/FactorisedMatrix.hpp"
 
@@ -81,83 +83,27 @@ class LatticeCentredDamping : public CentredDampingSolve {
   std::map<Index, Prescribed> particles_;
 };
 
-// Eq. (32) with dashpots that couple particles (the consistent variant's, through the corrected
-// traction rows): M + dt/2 C is assembled and factorised on the nodes the dashpots reach only (a
-// few layers under the transmitting faces); every other node divides by its mass block. Prescribed
-// dofs among them get identity rows, so the solve imposes their accelerations.
+// Eq. (32) with dashpots that couple particles (DashpotSurfaceSolve): M^-1 (f - K u - C v) at every
+// node, then on the nodes the dashpots reach M times that is the right-hand side of the block's
+// solve; prescribed dofs away from the dashpots take their accelerations (a lumped mass does not
+// couple them).
 template <int D>
 class LatticeCoupledCentredDamping : public CentredDampingSolve {
  public:
   LatticeCoupledCentredDamping(const LatticeSecondOrderSystem<D>& system, Real dt, const std::vector<Index>& prescribedDofs)
-      : system_(system), inverseMass_(system.inverseBlocks(0)) {
-    const LatticeRowTypes<D>& types = system.types();
-    const LatticeStencils<D>& c = system.damping();
-    const Index n = types.nodeCount();
-    // the nodes with dashpot rows, and the nodes their columns reach
-    for (Index p = 0; p < n; ++p) {
-      const Index type = types.typeOf(types.node(p));
-      if (c.begin(type) == c.end(type)) continue;
-      nodes_.push_back(p);
-      for (Index e = c.begin(type); e < c.end(type); ++e) nodes_.push_back(c.column(e, p));
-    }
-    std::sort(nodes_.begin(), nodes_.end());
-    nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
-    const auto local = [&](Index p) {
-      return static_cast<Index>(std::lower_bound(nodes_.begin(), nodes_.end(), p) - nodes_.begin());
-    };
-    std::vector<char> prescribed(static_cast<std::size_t>(D) * nodes_.size(), 0);
-    for (std::size_t i = 0; i < prescribedDofs.size(); ++i) {
-      const Index dof = prescribedDofs[i];
-      if (dof < 0 || dof >= system.size())
-        throw InputError("prescribed_displacement", "dof " + std::to_string(dof) + " is outside the system's " +
-                                                        std::to_string(system.size()) + " unknowns");
-      const Index node = dof / D;
-      const Index at = local(node);
-      if (at < static_cast<Index>(nodes_.size()) && nodes_[static_cast<std::size_t>(at)] == node) {
-        prescribed[static_cast<std::size_t>(D * at + dof % D)] = 1;
-        inside_.emplace_back(D * at + dof % D, static_cast<Index>(i));
-      } else {
-        outside_.emplace_back(dof, static_cast<Index>(i));
-      }
-    }
-    std::vector<Triplet> entries;
-    const LatticeStencils<D>& m = system.mass();
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {
-      const Index p = nodes_[k];
-      const Index type = types.typeOf(types.node(p));
-      auto add = [&](const LatticeStencils<D>& table, Index e, Real scale) {
-        const Index q = local(table.column(e, p));
-        for (int a = 0; a < D; ++a) {
-          const std::size_t row = static_cast<std::size_t>(D) * k + static_cast<std::size_t>(a);
-          if (prescribed[row]) continue;
-          for (int b = 0; b < D; ++b) {
-            const Real value = scale * table.block(e)[D * a + b];
-            if (value != 0) entries.emplace_back(static_cast<int>(row), static_cast<int>(D * q + b), value);
-          }
-        }
-      };
-      for (Index e = m.begin(type); e < m.end(type); ++e) add(m, e, 1.0);
-      for (Index e = c.begin(type); e < c.end(type); ++e) add(c, e, 0.5 * dt);
-      for (int a = 0; a < D; ++a)
-        if (prescribed[static_cast<std::size_t>(D) * k + static_cast<std::size_t>(a)])
-          entries.emplace_back(static_cast<int>(D * static_cast<Index>(k) + a), static_cast<int>(D * static_cast<Index>(k) + a), 1.0);
-    }
-    const Index size = D * static_cast<Index>(nodes_.size());
-    SparseMatrix matrix(size, size);
-    matrix.setFromTriplets(entries.begin(), entries.end());
-    solver_.factorise(matrix, "the dashpot rows of M + dt/2 C on the lattice");
-    rhs_.resize(size);
-    solution_.resize(size);
+      : system_(system), inverseMass_(system.inverseBlocks(0)), surface_(system, dt, prescribedDofs) {
+    rhs_.resize(D * static_cast<Index>(surface_.nodes().size()));
+    solution_.resize(rhs_.size());
   }
 
   void acceleration(Real t, const Vector& u, const Vector& vHalf, const Vector& prescribedAcceleration,
                     Vector& a) override {
     system_.force(t, a);
-    // M^-1 (f - K u - C vHalf) everywhere; on the dashpot nodes M times it is the right-hand side
     system_.fusedSolve(inverseMass_, u.data(), vHalf.data(), a.data());
+    const std::vector<Index>& nodes = surface_.nodes();
     const LatticeRowTypes<D>& types = system_.types();
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {
-      const Index p = nodes_[k];
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      const Index p = nodes[k];
       Real block[D * D];
       system_.mass().typeSum(types.typeOf(types.node(p)), block);
       for (int c = 0; c < D; ++c) {
@@ -166,21 +112,17 @@ class LatticeCoupledCentredDamping : public CentredDampingSolve {
         rhs_[D * static_cast<Index>(k) + c] = s;
       }
     }
-    for (const auto& [row, i] : inside_) rhs_[row] = prescribedAcceleration[i];
-    solver_.solve(rhs_, solution_);
-    for (std::size_t k = 0; k < nodes_.size(); ++k)
-      for (int c = 0; c < D; ++c) a[D * nodes_[k] + c] = solution_[D * static_cast<Index>(k) + c];
-    // prescribed dofs away from the dashpots: a lumped mass does not couple them
-    for (const auto& [dof, i] : outside_) a[dof] = prescribedAcceleration[i];
+    for (const auto& [row, i] : surface_.inside()) rhs_[row] = prescribedAcceleration[i];
+    surface_.solve(rhs_, solution_);
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+      for (int c = 0; c < D; ++c) a[D * nodes[k] + c] = solution_[D * static_cast<Index>(k) + c];
+    for (const auto& [dof, i] : surface_.outside()) a[dof] = prescribedAcceleration[i];
   }
 
  private:
   const LatticeSecondOrderSystem<D>& system_;
   std::vector<Real> inverseMass_;
-  std::vector<Index> nodes_;                     // sorted: the nodes of the factorised block
-  std::vector<std::pair<Index, Index>> inside_;  // (row of the block, position in the prescribed list)
-  std::vector<std::pair<Index, Index>> outside_; // (dof, position in the prescribed list)
-  FactorisedMatrix solver_;
+  DashpotSurfaceSolve<D> surface_;
   Vector rhs_, solution_;
 };
 

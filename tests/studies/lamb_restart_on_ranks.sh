@@ -7,7 +7,7 @@
 # older one. Every later loop keeps its older checkpoint only on every rank. Cases that run on rank 0
 # alone (the published ones, when the scene compares them) checkpoint in rank 0's folder alone.
 # A restart on N + 1 ranks and a serial restart are refused with exit 2, naming both rank counts.
-# Usage: [EXPECT_ALONE=1] lamb_restart_on_ranks.sh <driver> <mpiexec> <ranks> <work folder> [--set ...]
+# Usage: [EXPECT=alone] lamb_restart_on_ranks.sh <driver> <mpiexec> <ranks> <work folder> [--set ...]
 set -euo pipefail
 driver=$1 mpiexec=$2 ranks=$3 work=$4
 shift 4
@@ -83,7 +83,7 @@ if not ok:
 for case in summary["cases"][1:]:  # every later case had its newest checkpoint removed on every rank
     if case.get("resumed_from_step") != expect:
         print(f"FAIL: case {case['case']} resumed from step {case.get('resumed_from_step')}, not {expect}"); ok = False
-if os.environ.get("EXPECT_ALONE") == "1" and "ran on rank 0 alone" not in notes:
+if os.environ.get("EXPECT") == "alone" and "ran on rank 0 alone" not in notes:
     print("FAIL: no case ran on rank 0 alone:", notes[:400]); ok = False
 if "ran on rank 0 alone" in notes and "on rank 0 (" not in notes:
     print("FAIL: no loop that ran on rank 0 alone resumed from rank 0's checkpoint:", notes[:400]); ok = False

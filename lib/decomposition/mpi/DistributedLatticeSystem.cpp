@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "decomposition/mpi/LineSums.hpp"
+#include "lattice/DashpotSurfaceSolve.hpp"
 #include "integrators/ArkodeMpiVectors.hpp"
 
 #include <algorithm>
@@ -29,6 +30,60 @@ class DistributedCentredDamping : public CentredDampingSolve {
   std::vector<Real> inverse_;
 };
 
+// Eq. (32) with dashpots that couple nodes: every rank holds the same factorisation of the dashpot
+// block (DashpotSurfaceSolve, the surface's size), gathers the block's right-hand side from the
+// owners (the -0.0 of the others adds nothing, as in RankProbes) and solves it whole, so each
+// rank's share of the solution is the serial one bit for bit. The block is replicated: a surface of
+// s^2 nodes costs every rank its factorisation and an all-reduce of 3 s^2 values per step, fine to
+// about 10^7 particles (docs/scaling.md).
+template <int D>
+class DistributedCoupledCentredDamping : public CentredDampingSolve {
+ public:
+  DistributedCoupledCentredDamping(const DistributedLatticeSystem<D>& system, const LatticeSecondOrderSystem<D>& serial,
+                                   Real dt, MPI_Comm communicator)
+      : system_(system), serial_(serial), inverseMass_(serial.inverseBlocks(0)), surface_(serial, dt, {}),
+        communicator_(communicator) {
+    for (Index node : surface_.nodes()) local_.push_back(system.localNode(node));
+    rhs_.resize(D * static_cast<Index>(local_.size()));
+    solution_.resize(rhs_.size());
+  }
+
+  void acceleration(Real t, const Vector& u, const Vector& vHalf, const Vector&, Vector& a) override {
+    a.resize(system_.size());
+    system_.solve(inverseMass_, t, u.data(), vHalf.data(), a.data());
+    const LatticeRowTypes<D>& types = serial_.types();
+    for (std::size_t k = 0; k < local_.size(); ++k) {
+      const Index p = local_[k];
+      if (p < 0) {
+        for (int c = 0; c < D; ++c) rhs_[D * static_cast<Index>(k) + c] = -0.0;
+        continue;
+      }
+      // LatticeCoupledCentredDamping's right-hand side: M times the acceleration
+      Real block[D * D];
+      serial_.mass().typeSum(types.typeOf(types.node(surface_.nodes()[k])), block);
+      for (int c = 0; c < D; ++c) {
+        Real s = 0;
+        for (int d = 0; d < D; ++d) s += block[D * c + d] * a[D * p + d];
+        rhs_[D * static_cast<Index>(k) + c] = s;
+      }
+    }
+    MPI_Allreduce(MPI_IN_PLACE, rhs_.data(), static_cast<int>(rhs_.size()), MPI_DOUBLE, MPI_SUM, communicator_);
+    surface_.solve(rhs_, solution_);
+    for (std::size_t k = 0; k < local_.size(); ++k)
+      if (local_[k] >= 0)
+        for (int c = 0; c < D; ++c) a[D * local_[k] + c] = solution_[D * static_cast<Index>(k) + c];
+  }
+
+ private:
+  const DistributedLatticeSystem<D>& system_;
+  const LatticeSecondOrderSystem<D>& serial_;
+  std::vector<Real> inverseMass_;
+  DashpotSurfaceSolve<D> surface_;
+  MPI_Comm communicator_;
+  std::vector<Index> local_;  // per block node: its place in this rank's state, or -1
+  Vector rhs_, solution_;
+};
+
 }  // namespace
 
 template <int D>
@@ -36,9 +91,6 @@ DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSy
                                                       const BlockDecomposition<D>& decomposition, int rank,
                                                       MPI_Comm communicator)
     : serial_(serial), decomposition_(decomposition), rank_(rank), communicator_(communicator) {
-  if (serial.hasDamping() && !serial.damping().blockDiagonal())
-    throw InputError("damping", "the distributed lattice system takes dashpots on each node's own dofs only; these "
-                                "couple nodes (docs/scaling.md)");
   if (serial.hasForce() && !serial.sparseLoads())
     throw InputError("loads", "the distributed lattice system needs its loads as nonzero entries (SparseLoads), not "
                               "as a function of the whole lattice's vector");
@@ -46,6 +98,13 @@ DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSy
     throw InputError("ranks", "the decomposition splits x into " + std::to_string(decomposition.grid()[0]) +
                                   " blocks; the distributed system needs whole lattice lines per rank");
   stiffness_ = std::make_unique<RankStencilProduct<D>>(serial.stiffness(), decomposition, rank, communicator);
+  if (serial.hasDamping() && !serial.damping().blockDiagonal()) {
+    // C v reads the neighbours' velocities: its own halo, every row by itself as the serial
+    // rowProduct computes it.
+    damping_ = std::make_unique<RankStencilProduct<D>>(serial.damping(), decomposition, rank, communicator);
+    allRowByRow_.assign(static_cast<std::size_t>(serial.damping().typeCount()), 1);
+    cv_.resize(static_cast<std::size_t>(size()));
+  }
   inverseMass_ = serial.inverseBlocks(0);
   nodeFlat_.assign(static_cast<std::size_t>(std::max(serial.mass().entryCount(), serial.damping().entryCount())), 0);
   for (Index type = 0; type < serial.stiffness().typeCount(); ++type)
@@ -81,14 +140,17 @@ void DistributedLatticeSystem<D>::solve(const std::vector<Real>& inverseBlocks, 
   addSparseLoads(loads_, t, a);
   const bool damped = serial_.hasDamping() && v != nullptr;
   const LatticeStencils<D>& damping = serial_.damping();
+  if (damped && damping_) damping_->multiply(v, cv_.data(), &allRowByRow_);
   // LatticeSecondOrderSystem::fusedSolve, fused with the product as it is: r = f - K u - C v,
   // a = B r; the dashpot types row by row.
   stiffness_->forEachProduct(u, [&](Index k, Index type, const Real* ku, Index stride) {
     Real r[D];
     for (int c = 0; c < D; ++c) r[c] = a[D * k + c] - ku[c * stride];
     if (damped && damping.begin(type) != damping.end(type)) {
-      Real cv[D];
-      damping.rowProductAt(type, v + D * k, nodeFlat_.data(), cv);
+      Real own[D];
+      const Real* cv = own;
+      if (damping_) cv = cv_.data() + D * k;
+      else damping.rowProductAt(type, v + D * k, nodeFlat_.data(), own);
       for (int c = 0; c < D; ++c) r[c] -= cv[c];
     }
     const Real* b = &inverseBlocks[static_cast<std::size_t>(D * D * type)];
@@ -177,12 +239,15 @@ Real DistributedLatticeSystem<D>::dampingPower(const Vector& v) const {
   // The serial sum adds only the nodes with dashpots; the others add nothing here either (a line
   // without dashpots sums to +0 in both).
   const LatticeStencils<D>& damping = serial_.damping();
+  if (damping_) damping_->multiply(v.data(), cv_.data(), &allRowByRow_);
   const Index nx = owned().extent(0);
   std::vector<Real> lineSums(static_cast<std::size_t>(owned().lineCount()), 0.0);
   forEachOwnedNode([&](Index k, Index type) {
     if (damping.begin(type) == damping.end(type)) return;
-    Real cv[D];
-    damping.rowProductAt(type, v.data() + D * k, nodeFlat_.data(), cv);
+    Real own[D];
+    const Real* cv = own;
+    if (damping_) cv = cv_.data() + D * k;
+    else damping.rowProductAt(type, v.data() + D * k, nodeFlat_.data(), own);
     Real& sum = lineSums[static_cast<std::size_t>(k / nx)];
     for (int c = 0; c < D; ++c) sum += v[D * k + c] * cv[c];
   });
@@ -226,7 +291,14 @@ std::unique_ptr<CentredDampingSolve> DistributedLatticeSystem<D>::centredDamping
   if (!prescribedDofs.empty())
     throw InputError("prescribed_displacement",
                      "the distributed lattice system does not take prescribed displacements yet (docs/scaling.md)");
+  if (damping_) return std::make_unique<DistributedCoupledCentredDamping<D>>(*this, serial_, dt, communicator_);
   return std::make_unique<DistributedCentredDamping<D>>(*this, serial_.inverseBlocks(0.5 * dt));
+}
+
+template <int D>
+Index DistributedLatticeSystem<D>::localNode(Index latticeNode) const {
+  const std::array<Index, D> node = serial_.types().node(latticeNode);
+  return owned().contains(node) ? owned().localIndex(node) : -1;
 }
 
 template <int D>

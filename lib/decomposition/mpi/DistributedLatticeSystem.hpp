@@ -11,8 +11,9 @@
 // serial order over the ranks (LineSums.hpp), so every rank's figures are the serial ones too.
 //
 // Covered: dashpots on each node's own dofs (block-diagonal C, the Galerkin very weak SPH's
-// transmitting faces), loads given as nonzero entries (SparseLoads.hpp). Not yet: dashpots that
-// couple nodes (their factorised surface solve), prescribed displacements (docs/scaling.md).
+// transmitting faces) and dashpots that couple nodes (the consistent variant's: C v through its own
+// halo, the surface block of eq. (32) solved whole on every rank), loads given as nonzero entries
+// (SparseLoads.hpp). Not yet: prescribed displacements (docs/scaling.md).
 
 #include "decomposition/mpi/RankStencilProduct.hpp"
 #include "lattice/LatticeSecondOrderSystem.hpp"
@@ -30,7 +31,7 @@ template <int D>
 class DistributedLatticeSystem : public LinearOperatorSystem {
  public:
   // `serial` and `decomposition` must outlive this object; `decomposition` must keep x whole (the
-  // sums' order). Throws InputError("damping") for dashpots that couple nodes, InputError("loads")
+  // sums' order). Throws InputError("loads")
   // for a force given as a function rather than as sparse loads, InputError("ranks") for a
   // decomposition that splits x.
   DistributedLatticeSystem(const LatticeSecondOrderSystem<D>& serial, const BlockDecomposition<D>& decomposition,
@@ -68,6 +69,8 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   const HaloExchange<D>& exchange() const { return stiffness_->exchange(); }
   // The owned part of a whole-lattice vector (D values per node).
   Vector restrict(const Vector& whole) const;
+  // A lattice node's place in this rank's state, or -1 when another rank owns it.
+  Index localNode(Index latticeNode) const;
   // B_type (f - K u - C v) for every owned node into a: the acceleration with B = M^-1, the dashpot
   // solve of eq. (32) with B = (M + dt/2 C)^-1 (LatticeSecondOrderSystem::fusedSolve's rows).
   void solve(const std::vector<Real>& inverseBlocks, Real t, const Real* u, const Real* v, Real* a) const;
@@ -88,6 +91,9 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   MPI_Comm communicator_;
   Index globalSize_ = 0;  // sum over the ranks of size()
   std::unique_ptr<RankStencilProduct<D>> stiffness_;
+  std::unique_ptr<RankStencilProduct<D>> damping_;  // dashpots that couple nodes only
+  std::vector<char> allRowByRow_;                   // damping_'s rows, all row by row
+  mutable std::vector<Real> cv_;                    // C v of the owned rows (damping_)
   std::vector<Real> inverseMass_;  // per type (LatticeSecondOrderSystem::inverseBlocks(0))
   std::vector<Index> nodeFlat_;    // zeros: the mass and dashpots act on a node's own dofs
   std::vector<SparseLoad> loads_;  // the owned entries, dofs owned

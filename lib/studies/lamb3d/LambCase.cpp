@@ -143,14 +143,41 @@ std::string CaseSettings::methodLabel() const {
   return label.str();
 }
 
-CaseResult runCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
-                   bool progress) {
+namespace {
+
+CaseResult runMethod(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
+                     bool progress) {
   if (settings.isCollocation()) return runCollocationCase(study, settings, folder, progress);
   if (settings.isSolid()) return runSolidCase(study, settings, folder, progress);
   if (settings.isSpectralElement()) return runSpectralElementCase(study, settings, folder, progress);
   if (study.scene.info.dimension == 2) return runCaseIn<2>(study, settings, folder, progress);
   if (study.scene.info.dimension == 3) return runCaseIn<3>(study, settings, folder, progress);
   throw InputError("scene.dimension", "the Lamb study runs 2-D and 3-D scenes");
+}
+
+}  // namespace
+
+CaseResult runCase(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
+                   bool progress) {
+#ifdef MFWAVE_WITH_MPI
+  // Under mpirun only the very weak SPH steps on the ranks (LambRankCase.hpp); another method's case
+  // runs on rank 0 alone, and the other ranks go on to the next case.
+  if (MpiSession::size() > 1 && !settings.isVeryWeakSph()) {
+    // Its one time loop is numbered on every rank and checkpointed by rank 0 without the others.
+    const RankZeroAloneLoop aloneOnRankZero;
+    if (MpiSession::rank() != 0) {
+      CaseResult skipped;
+      skipped.settings = settings;
+      skipped.record.name = settings.name;
+      return skipped;
+    }
+    CaseResult result = runMethod(study, settings, folder, progress);
+    result.notes.push_back(settings.name + ": ran on rank 0 alone: " + settings.methodLabel() +
+                           " is not distributed");
+    return result;
+  }
+#endif
+  return runMethod(study, settings, folder, progress);
 }
 
 }  // namespace mfwave::lamb3d

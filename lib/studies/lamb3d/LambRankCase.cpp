@@ -24,7 +24,6 @@ template <int D>
 std::string whyNotOnRanks(VeryWeakSphProblem<D>& problem, const Scene& scene) {
   const LatticeSecondOrderSystem<D>* lattice = problem.latticeSystem();
   if (!lattice) return "its operator is an assembled matrix, not lattice stencils";
-  if (lattice->hasDamping() && !lattice->damping().blockDiagonal()) return "its dashpots couple particles";
   if (lattice->hasForce() && !lattice->sparseLoads()) return "its loads are not nonzero entries";
   if (problem.smoothing() && !problem.smoothingStencils()) return "its smoothing filter is an assembled matrix";
   if (!problem.prescribedDofs().empty()) return "it prescribes displacements";

@@ -60,10 +60,12 @@ Real relativeDifferenceOverRanks(const DistributedLatticeSystem<D>& system, cons
 // M = 1.5 I, a smooth bump as u0, at rest; the serial system and this rank's share of it (x kept
 // whole). With `loaded`, the faces carry dashpots on their own dofs (C = 0.7 I there, the Galerkin
 // very weak SPH's kind) and two loads of their own histories push on a few nodes (one near a
-// corner, one in the middle).
+// corner, one in the middle). With `coupled` too, each face node's dashpot also pulls on its face
+// neighbours along every axis (-0.1 I each): dashpots that couple nodes, as the consistent very
+// weak SPH's do, solved through the surface block of eq. (32).
 template <int D>
 struct LatticeCase {
-  LatticeCase(const std::array<Index, D>& nodes, bool loaded = false)
+  LatticeCase(const std::array<Index, D>& nodes, bool loaded = false, bool coupled = false)
       : types(nodes, 1), ramp(TimeFunction::ramp(0.5, 2.0, 3.0)), constant(TimeFunction::constant(-0.4)) {
     Box<D> compact;
     compact.hi = types.compactNodes();
@@ -74,6 +76,19 @@ struct LatticeCase {
       for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s) face = face || row[s] == 0 || row[s] == compact.hi[s] - 1;
       if (face && loaded)
         for (int c = 0; c < D; ++c) dashpots.emplace_back(static_cast<int>(D * i + c), static_cast<int>(D * i + c), 0.7);
+      if (face && loaded && coupled)
+        for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s)
+          for (Index step : {Index{-1}, Index{1}}) {
+            std::array<Index, D> next = row;
+            next[s] += step;
+            if (!compact.contains(next)) continue;
+            bool nextOnFace = false;
+            for (std::size_t r = 0; r < static_cast<std::size_t>(D); ++r)
+              nextOnFace = nextOnFace || next[r] == 0 || next[r] == compact.hi[r] - 1;
+            if (!nextOnFace) continue;
+            const Index j = compact.localIndex(next);
+            for (int c = 0; c < D; ++c) dashpots.emplace_back(static_cast<int>(D * i + c), static_cast<int>(D * j + c), -0.1);
+          }
       Box<D> around;
       for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s) {
         around.lo[s] = row[s] - 1;
