@@ -5,7 +5,8 @@
 # of a case. The copy keeps, for the first time loop, rank 0's older checkpoint only and the other
 # ranks' newest two (a run killed while they were a checkpoint ahead): the ranks must agree on the
 # older one. Every later loop keeps its older checkpoint only on every rank. Cases that run on rank 0
-# alone (the published ones, when the scene compares them) checkpoint in rank 0's folder alone.
+# alone checkpoint in rank 0's folder alone (with EXPECT=alone every case must; the other ranks
+# then write no checkpoint at all).
 # A restart on N + 1 ranks and a serial restart are refused with exit 2, naming both rank counts.
 # Usage: [EXPECT=alone] lamb_restart_on_ranks.sh <driver> <mpiexec> <ranks> <work folder> [--set ...]
 set -euo pipefail
@@ -31,8 +32,14 @@ while read -r key file; do  # every file the manifest names is there
 done < "$manifest"
 # Rank 0 steps every loop; the others those on the ranks (a case on rank 0 alone leaves them none).
 ls "$work/whole/rank-0-of-$ranks"/checkpoint-0000-*.mfwc > /dev/null || { echo "FAIL: rank 0 wrote no checkpoint of loop 0"; exit 1; }
+# With EXPECT=alone every case runs on rank 0 alone: the other ranks must write nothing.
 for ((r = 1; r < ranks; r++)); do
-  ls "$work/whole/rank-$r-of-$ranks"/checkpoint-*.mfwc > /dev/null || { echo "FAIL: rank $r wrote no checkpoint"; exit 1; }
+  count=$(find "$work/whole/rank-$r-of-$ranks" -name "checkpoint-*.mfwc" | wc -l)
+  if [ "${EXPECT:-}" = alone ]; then
+    [ "$count" = 0 ] || { echo "FAIL: rank $r wrote $count checkpoints of cases that ran on rank 0 alone"; exit 1; }
+  else
+    [ "$count" -gt 0 ] || { echo "FAIL: rank $r wrote no checkpoint"; exit 1; }
+  fi
 done
 
 # An "interrupted" copy of run $1 in $2: the scene and the checkpoints, minus the newest of each
