@@ -76,6 +76,7 @@
 #include "io/run/RunSummary.hpp"
 #ifdef MFWAVE_WITH_MPI
 #include "decomposition/mpi/MpiSession.hpp"
+#include "decomposition/mpi/RankCheckpointStore.hpp"
 #endif
 #include "io/run/StudyCases.hpp"
 #include "io/run/SceneDriver.hpp"
@@ -641,7 +642,14 @@ int main(int argc, char** argv) {
     SceneReader reader = loadDriverScene(cli.options(), schema);
     const Plan plan = readPlan(reader);
     reader.checkAllKeysRead();
-    const std::string folder = prepareOutputFolder(cli.options(), plan.study.scene.output.folder, reader);
+#ifdef MFWAVE_WITH_MPI
+    // On several ranks each writes its own share of every checkpoint and rank 0 one manifest.
+    const CheckpointStoreMaker storeMaker =
+        MpiSession::size() > 1 ? CheckpointStoreMaker(makeRankCheckpointStore) : CheckpointStoreMaker();
+#else
+    const CheckpointStoreMaker storeMaker;
+#endif
+    const std::string folder = prepareOutputFolder(cli.options(), plan.study.scene.output.folder, reader, storeMaker);
 
     const bool progress = !cli.options().quiet && rank == 0;
     const std::vector<CaseResult> results = runCases(

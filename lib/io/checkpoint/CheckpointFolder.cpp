@@ -56,14 +56,21 @@ std::vector<std::string> checkpointFiles(const std::string& folder, int loop) {
   return paths;
 }
 
+std::string checkpointFileName(int loop, long long step) {
+  std::ostringstream name;
+  name << kPrefix << std::setw(4) << std::setfill('0') << loop << '-' << std::setw(12) << step << kExtension;
+  return name.str();
+}
+
+Checkpoint readCheckpointFile(const std::string& path) {
+  return decodeCheckpoint(readBoundedFile(path, kMaxCheckpointBytes, "--restart", "the checkpoint"), path);
+}
+
 std::string writeCheckpoint(const std::string& folder, const Checkpoint& checkpoint, int loop, int keep) {
   if (checkpoint.step < 0 || checkpoint.step > 999999999999LL)
     throw InputError("checkpoint", "step " + std::to_string(checkpoint.step) + " is outside 0 .. 999999999999");
   if (loop < 0 || loop > 9999) throw InputError("checkpoint", "time loop " + std::to_string(loop) + " is outside 0 .. 9999");
-  std::ostringstream name;
-  name << kPrefix << std::setw(4) << std::setfill('0') << loop << '-' << std::setw(12) << checkpoint.step
-       << kExtension;
-  const std::string path = (fs::path(folder) / name.str()).string();
+  const std::string path = (fs::path(folder) / checkpointFileName(loop, checkpoint.step)).string();
   {
     AtomicFile file(path);
     const std::string bytes = encodeCheckpoint(checkpoint);
@@ -84,8 +91,7 @@ RestartPoint readNewestCheckpoint(const std::string& folder, const std::string& 
   RestartPoint point;
   for (const std::string& path : checkpointFiles(folder, loop)) {
     try {
-      point.checkpoint = decodeCheckpoint(readBoundedFile(path, kMaxCheckpointBytes, "--restart", "the checkpoint"),
-                                          path);
+      point.checkpoint = readCheckpointFile(path);
     } catch (const CorruptCheckpoint& e) {
       point.skipped.push_back(e.what());
       continue;

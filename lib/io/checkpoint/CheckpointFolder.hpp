@@ -21,6 +21,13 @@ namespace mfwave {
 // cannot be written whole.
 std::string writeCheckpoint(const std::string& folder, const Checkpoint& checkpoint, int loop = 0, int keep = 2);
 
+// The name (not the path) of time loop `loop`'s checkpoint at `step`: checkpoint-LLLL-SSSSSSSSSSSS.mfwc.
+std::string checkpointFileName(int loop, long long step);
+
+// The checkpoint in the file at `path`. Throws CorruptCheckpoint when it is not whole, InputError
+// ("--restart") when it is of another format version or cannot be read.
+Checkpoint readCheckpointFile(const std::string& path);
+
 // The checkpoint files of `folder` for time loop `loop` (all loops when negative), newest (highest
 // loop, then highest step) first.
 std::vector<std::string> checkpointFiles(const std::string& folder, int loop = -1);

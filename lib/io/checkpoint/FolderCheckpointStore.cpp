@@ -1,6 +1,7 @@
 #include "io/checkpoint/FolderCheckpointStore.hpp"
 
 #include "io/checkpoint/CheckpointFolder.hpp"
+#include "io/checkpoint/CheckpointManifest.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -32,13 +33,23 @@ FolderCheckpointStore::FolderCheckpointStore(std::string outputFolder, std::stri
       settings_(std::move(settings)),
       sceneText_(std::move(sceneText)) {
   if (!settings_.restartFolder.empty()) {
+    // Checkpoints written per rank (decomposition/mpi/RankCheckpointStore) hold each rank's share of
+    // the state: a serial run cannot go on from them.
+    if (const auto manifest = readCheckpointManifest(settings_.restartFolder))
+      throw InputError("--restart", "'" + settings_.restartFolder + "' holds the checkpoints of a run on " +
+                                        std::to_string(manifest->ranks) +
+                                        " MPI ranks; this run is serial (1 rank): each rank's checkpoint holds its "
+                                        "share of the state, and restarting on another rank count would need a "
+                                        "redistribution, which is not done: restart under mpirun -np " +
+                                        std::to_string(manifest->ranks));
     noteSkipped(readNewestCheckpoint(settings_.restartFolder, digest_, -1).skipped);
   }
-  if (settings_.restartFolder.empty() || !sameFolder(settings_.restartFolder, folder_))
-    for (const std::string& stale : checkpointFiles(folder_)) {
-      std::error_code ec;
-      fs::remove(stale, ec);
-    }
+  if (settings_.restartFolder.empty() || !sameFolder(settings_.restartFolder, folder_)) {
+    std::error_code ec;
+    for (const std::string& stale : checkpointFiles(folder_)) fs::remove(stale, ec);
+    // A manifest a run on ranks left would make a later restart look for their checkpoints.
+    fs::remove(fs::path(folder_) / kCheckpointManifestName, ec);
+  }
 }
 
 std::optional<CheckpointPoint> FolderCheckpointStore::resumePoint(int loop) {

@@ -18,7 +18,8 @@ namespace {
 const std::vector<std::string> kNotPartOfTheComputation = {"output.folder", "output.checkpoint_every",
                                                            "output.checkpoint_seconds"};
 
-void installCheckpoints(const DriverOptions& options, const std::string& folder, const SceneReader& reader) {
+void installCheckpoints(const DriverOptions& options, const std::string& folder, const SceneReader& reader,
+                        const CheckpointStoreMaker& makeStore) {
   CheckpointSettings settings;
   const auto sceneValue = [&](const char* path) { return reader.root().at_path(path).value_or(0.0); };
   settings.everySteps = static_cast<long>(reader.root().at_path("output.checkpoint_every").value_or(std::int64_t{0}));
@@ -36,8 +37,10 @@ void installCheckpoints(const DriverOptions& options, const std::string& folder,
   }
   if (!settings.restartFolder.empty() && settings.everySteps <= 0 && settings.everySeconds <= 0)
     settings.setting = "--restart";
-  installCheckpointStore(std::make_shared<FolderCheckpointStore>(
-      folder, reader.digest(kNotPartOfTheComputation), settings, reader.canonicalToml(kNotPartOfTheComputation)));
+  const std::string digest = reader.digest(kNotPartOfTheComputation);
+  const std::string sceneText = reader.canonicalToml(kNotPartOfTheComputation);
+  installCheckpointStore(makeStore ? makeStore(folder, digest, settings, sceneText)
+                                   : std::make_shared<FolderCheckpointStore>(folder, digest, settings, sceneText));
 }
 
 }  // namespace
@@ -56,7 +59,7 @@ SceneReader loadDriverScene(const DriverOptions& options, const SceneSchema& sch
 }
 
 std::string prepareOutputFolder(const DriverOptions& options, const std::string& sceneFolder,
-                                const SceneReader& reader) {
+                                const SceneReader& reader, const CheckpointStoreMaker& makeStore) {
   // A restart writes into the folder it goes on from, unless told otherwise.
   const std::string folder = !options.outputFolder.empty()  ? options.outputFolder
                              : !options.restartFolder.empty() ? options.restartFolder
@@ -73,7 +76,7 @@ std::string prepareOutputFolder(const DriverOptions& options, const std::string&
                 (error ? error.message() : std::string("it exists and is not a folder")));
   // Before the resolved scene is written: a restart refused (another scene's checkpoints) leaves the
   // folder as it was.
-  installCheckpoints(options, folder, reader);
+  installCheckpoints(options, folder, reader, makeStore);
   // A restart that read its scene from this folder's scene.resolved.toml leaves it as it is (the
   // same scene; only its header, the source's name, would change).
   std::error_code same;

@@ -5,9 +5,12 @@
 //   const std::string folder = prepareOutputFolder(cli.options(), sceneFolder, reader);
 // so every driver and tool resolves its scene and output folder alike.
 
+#include "io/checkpoint/FolderCheckpointStore.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/scene/SceneReader.hpp"
 
+#include <functional>
+#include <memory>
 #include <string>
 
 namespace mfwave {
@@ -24,7 +27,12 @@ SceneReader loadDriverScene(const DriverOptions& options, const SceneSchema& sch
 // It also installs the process's checkpoint store (core/CheckpointStore) when the run writes
 // checkpoints (--checkpoint-every, output.checkpoint_every, output.checkpoint_seconds) or goes on
 // from one (--restart: refused with exit 2 when the folder holds no whole checkpoint of this scene).
+// The store is a FolderCheckpointStore unless `makeStore` is given: a driver under mpirun passes
+// one that writes per rank (decomposition/mpi/RankCheckpointStore), so that io links no MPI.
+using CheckpointStoreMaker = std::function<std::shared_ptr<CheckpointStore>(
+    const std::string& folder, const std::string& sceneDigest, const CheckpointSettings& settings,
+    const std::string& sceneText)>;
 std::string prepareOutputFolder(const DriverOptions& options, const std::string& sceneFolder,
-                                const SceneReader& reader);
+                                const SceneReader& reader, const CheckpointStoreMaker& makeStore = {});
 
 }  // namespace mfwave

@@ -22,12 +22,14 @@
 #include "study/VeryWeakSphScene.hpp"
 #ifdef MFWAVE_WITH_MPI
 #include "decomposition/mpi/MpiSession.hpp"
+#include "decomposition/mpi/RankCheckpointStore.hpp"
 #include "studies/lamb3d/LambRankCase.hpp"
 #endif
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -76,11 +78,14 @@ CaseResult runCaseIn(const StudySettings& study, const CaseSettings& settings, c
                         veryWeakSphGrowthCause(spec.options.variant));
 #ifdef MFWAVE_WITH_MPI
   // Under mpirun the case steps on the ranks when it can; one that cannot runs on rank 0 alone.
+  std::optional<RankZeroAloneLoop> aloneOnRankZero;
   if (MpiSession::size() > 1) {
     const std::string why = whyNotOnRanks<D>(problem, scene);
     if (why.empty())
       return runOnRanks<D>(study, settings, folder, progress, particles, problem, dt, ledgerOptions, std::move(result),
                            assemblyClock);
+    // Its time loop is numbered on every rank and checkpointed by rank 0 without the others.
+    aloneOnRankZero.emplace();
     if (MpiSession::rank() != 0) return result;
     result.notes.push_back(settings.name + ": ran on rank 0 alone: " + why);
   }
@@ -158,6 +163,8 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   // Under mpirun only the very weak SPH steps on the ranks (LambRankCase.hpp); another method's case
   // runs on rank 0 alone, and the other ranks go on to the next case.
   if (MpiSession::size() > 1 && !settings.isVeryWeakSph()) {
+    // Its one time loop is numbered on every rank and checkpointed by rank 0 without the others.
+    const RankZeroAloneLoop aloneOnRankZero;
     if (MpiSession::rank() != 0) {
       CaseResult skipped;
       skipped.settings = settings;

@@ -3,7 +3,6 @@
 #include "studies/lamb3d/LambCaseLoop.hpp"
 #include "studies/lamb3d/LambProbeScores.hpp"
 
-#include "core/CheckpointStore.hpp"
 #include "core/Error.hpp"
 #include "decomposition/mpi/LatticeShare.hpp"
 #include "decomposition/mpi/RankStencilProduct.hpp"
@@ -29,7 +28,6 @@ std::string whyNotOnRanks(VeryWeakSphProblem<D>& problem, const Scene& scene) {
   if (problem.smoothing() && !problem.smoothingStencils()) return "its smoothing filter is an assembled matrix";
   if (!problem.prescribedDofs().empty()) return "it prescribes displacements";
   if (scene.integrator.kind != IntegratorKind::CentralDifference) return "its integrator is not central_difference";
-  if (checkpointStore()) return "checkpoints are not written per rank yet";
   return {};
 }
 

@@ -23,7 +23,8 @@ namespace mfwave::lamb3d {
 
 // Why `problem` cannot be stepped on the ranks (a serial-only feature it uses), or empty when it
 // can: the lattice storage (its smoothing filter too) with loads as nonzero entries, central
-// differences, no prescribed faces or checkpoints.
+// differences, no prescribed faces. Its checkpoints are written per rank
+// (decomposition/mpi/RankCheckpointStore, which the driver installs).
 template <int D>
 std::string whyNotOnRanks(VeryWeakSphProblem<D>& problem, const Scene& scene);
 
