@@ -7,6 +7,7 @@
 # rank run's frames must be one .pvtp per frame over N pieces.
 # Usage: [EXPECT=ranks|alone] lamb_on_ranks.sh <driver> <mpiexec> <ranks> <work folder> [--set ...]
 set -euo pipefail
+. "$(dirname "$0")/compare_tables.sh"
 driver=$1 mpiexec=$2 ranks=$3 work=$4
 shift 4
 rm -rf "$work"
@@ -17,20 +18,7 @@ OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
   "$mpiexec" -np "$ranks" --oversubscribe "$driver" --quiet --out "$work/ranks" "$@" > "$work/ranks.log"
 
 fail=0
-compared=0
-for file in "$work"/serial/*-probes.csv "$work"/serial/*-energy.csv; do
-  [ -e "$file" ] || continue
-  name=$(basename "$file")
-  compared=$((compared + 1))
-  if ! cmp -s "$file" "$work/ranks/$name"; then
-    echo "FAIL: $name differs between the serial run and the run on $ranks ranks"
-    fail=1
-  fi
-done
-if [ "$compared" -lt 2 ]; then
-  echo "FAIL: only $compared probe or energy tables to compare"
-  fail=1
-fi
+compare_tables "$work/serial" "$work/ranks" "the run on $ranks ranks" || fail=1
 /usr/bin/python3 - "$work" "$ranks" <<'PY' || fail=1
 import json, sys, glob, os
 work, ranks = sys.argv[1], int(sys.argv[2])
@@ -63,5 +51,4 @@ if masters:
 print(f"compared {len(a)} errors, {len(fa)} figures; {len(masters)} .pvtp frames")
 sys.exit(0 if ok else 1)
 PY
-echo "compared $compared tables"
 exit $fail

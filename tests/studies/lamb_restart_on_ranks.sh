@@ -10,6 +10,7 @@
 # A restart on N + 1 ranks and a serial restart are refused with exit 2, naming both rank counts.
 # Usage: [EXPECT=alone] lamb_restart_on_ranks.sh <driver> <mpiexec> <ranks> <work folder> [--set ...]
 set -euo pipefail
+. "$(dirname "$0")/compare_tables.sh"
 driver=$1 mpiexec=$2 ranks=$3 work=$4
 shift 4
 rm -rf "$work"
@@ -46,7 +47,7 @@ done
 # loop as said above, no outputs; then the restart on the same rank count from it, which must end
 # with the uninterrupted run's tables and have gone on from step $3 of the first case.
 cut_and_restart() {
-  local from=$1 cut=$2 expect=$3 removed=0 compared=0
+  local from=$1 cut=$2 expect=$3 removed=0
   mkdir -p "$cut"
   cp "$from/scene.resolved.toml" "$from/checkpoint-manifest.txt" "$cut/"
   cp -r "$from"/rank-*-of-"$ranks" "$cut/"
@@ -65,16 +66,7 @@ cut_and_restart() {
   on_ranks "$ranks" --restart "$cut" > "$cut.log" 2>&1 ||
     { echo "FAIL: the restart on $ranks ranks from $cut exited $?"; cat "$cut.log"; exit 1; }
 
-  for file in "$work"/whole/*-probes.csv "$work"/whole/*-energy.csv; do
-    [ -e "$file" ] || continue
-    name=$(basename "$file")
-    compared=$((compared + 1))
-    if ! cmp -s "$file" "$cut/$name"; then
-      echo "FAIL: $name of the run restarted in $cut differs from the uninterrupted run's"
-      fail=1
-    fi
-  done
-  [ "$compared" -ge 2 ] || { echo "FAIL: only $compared probe or energy tables to compare"; fail=1; }
+  compare_tables "$work/whole" "$cut" "the run restarted in $cut" || fail=1
 
   # The restart really went on from inside the first case, and says so.
   /usr/bin/python3 - "$cut/summary.json" "$expect" <<'PY' || fail=1
@@ -99,7 +91,7 @@ if "time loop 0 resumed from step" not in notes:
 print(f"{sys.argv[1]}: the first case resumed from step {resumed} of {steps}")
 sys.exit(0 if ok else 1)
 PY
-  echo "$cut: compared $compared tables; removed $removed checkpoints"
+  echo "$cut: removed $removed checkpoints"
 }
 
 # From the run checkpointed every 10 steps: the first case goes on from step 40. From one

@@ -180,14 +180,7 @@ std::optional<CheckpointPoint> RankCheckpointStore::resumePoint(int loop) {
 }
 
 void RankCheckpointStore::write(int loop, long step, Real time, const StateArchive& archive) {
-  Checkpoint checkpoint;
-  checkpoint.sceneDigest = digest_;
-  checkpoint.step = step;
-  checkpoint.time = time;
-  StateArchive withScene(archive.arrays());
-  if (!sceneText_.empty()) withScene.putText("scene", sceneText_);
-  checkpoint.arrays = withScene.arrays();
-  writeCheckpoint(rankFolder_, checkpoint, loop);
+  writeCheckpoint(rankFolder_, stateCheckpoint(digest_, step, time, archive, sceneText_), loop);
   if (!alone_) {
     // Every rank has renamed its file into place before the manifest names the step; the ranks step
     // in lockstep, so they all write the same step.

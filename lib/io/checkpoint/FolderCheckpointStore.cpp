@@ -83,15 +83,20 @@ void FolderCheckpointStore::noteSkipped(const std::vector<std::string>& skipped)
   }
 }
 
-void FolderCheckpointStore::write(int loop, long step, Real time, const StateArchive& archive) {
+Checkpoint stateCheckpoint(const std::string& sceneDigest, long step, Real time, const StateArchive& archive,
+                           const std::string& sceneText) {
   Checkpoint checkpoint;
-  checkpoint.sceneDigest = digest_;
+  checkpoint.sceneDigest = sceneDigest;
   checkpoint.step = step;
   checkpoint.time = time;
   StateArchive withScene(archive.arrays());
-  if (!sceneText_.empty()) withScene.putText("scene", sceneText_);
+  if (!sceneText.empty()) withScene.putText("scene", sceneText);
   checkpoint.arrays = withScene.arrays();
-  writeCheckpoint(folder_, checkpoint, loop);
+  return checkpoint;
+}
+
+void FolderCheckpointStore::write(int loop, long step, Real time, const StateArchive& archive) {
+  writeCheckpoint(folder_, stateCheckpoint(digest_, step, time, archive, sceneText_), loop);
 }
 
 }  // namespace mfwave

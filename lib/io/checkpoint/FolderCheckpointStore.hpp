@@ -4,6 +4,7 @@
 // read back from the folder given to --restart.
 
 #include "core/CheckpointStore.hpp"
+#include "io/checkpoint/Checkpoint.hpp"
 
 #include <string>
 #include <vector>
@@ -16,6 +17,12 @@ struct CheckpointSettings {
   std::string setting = "--checkpoint-every";  // what to name when the run cannot be checkpointed
   std::string restartFolder;  // --restart: where to resume from (empty: a fresh run)
 };
+
+// The checkpoint of a run's state: `archive` at (step, time) of the scene with `sceneDigest`, the
+// resolved scene beside it as the text array "scene" when given, so that a checkpoint says by itself
+// what it is a state of. What every store writes (this one, and each rank's of a run on ranks).
+Checkpoint stateCheckpoint(const std::string& sceneDigest, long step, Real time, const StateArchive& archive,
+                           const std::string& sceneText);
 
 class FolderCheckpointStore : public CheckpointStore {
  public:
