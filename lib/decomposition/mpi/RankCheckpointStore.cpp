@@ -15,11 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool sameFolder(const std::string& a, const std::string& b) {
-  std::error_code ec;
-  return fs::equivalent(a, b, ec);
-}
-
 void removeCheckpointFiles(const std::string& folder) {
   std::error_code ec;
   for (const std::string& stale : checkpointFiles(folder)) fs::remove(stale, ec);

@@ -56,6 +56,11 @@ std::vector<std::string> checkpointFiles(const std::string& folder, int loop) {
   return paths;
 }
 
+bool sameFolder(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return std::filesystem::equivalent(a, b, ec);
+}
+
 std::string checkpointFileName(int loop, long long step) {
   std::ostringstream name;
   name << kPrefix << std::setw(4) << std::setfill('0') << loop << '-' << std::setw(12) << step << kExtension;

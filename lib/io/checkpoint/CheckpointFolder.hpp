@@ -24,6 +24,9 @@ std::string writeCheckpoint(const std::string& folder, const Checkpoint& checkpo
 // The name (not the path) of time loop `loop`'s checkpoint at `step`: checkpoint-LLLL-SSSSSSSSSSSS.mfwc.
 std::string checkpointFileName(int loop, long long step);
 
+// Whether two paths name the same existing folder (false when either does not exist).
+bool sameFolder(const std::string& a, const std::string& b);
+
 // The checkpoint in the file at `path`. Throws CorruptCheckpoint when it is not whole, InputError
 // ("--restart") when it is of another format version or cannot be read.
 Checkpoint readCheckpointFile(const std::string& path);

@@ -13,11 +13,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool sameFolder(const std::string& a, const std::string& b) {
-  std::error_code ec;
-  return fs::equivalent(a, b, ec);
-}
-
 std::string describe(const CheckpointPoint& point) {
   std::ostringstream text;
   text << point.source << " (step " << point.step << ", t = " << point.time << ")";
