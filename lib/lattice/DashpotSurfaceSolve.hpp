@@ -26,6 +26,18 @@ class DashpotSurfaceSolve {
   const std::vector<std::pair<Index, Index>>& inside() const { return inside_; }
   // The prescribed dofs elsewhere: (the dof, its position in the prescribed list).
   const std::vector<std::pair<Index, Index>>& outside() const { return outside_; }
+  // The block's right-hand side at its node k: M times the acceleration `a` of that node (its D
+  // values), the node's mass block summed per type as the lattice system keeps it.
+  void massTimes(const LatticeSecondOrderSystem<D>& system, std::size_t k, const Real* a, Real* out) const {
+    Real block[D * D];
+    const LatticeRowTypes<D>& types = system.types();
+    system.mass().typeSum(types.typeOf(types.node(nodes_[k])), block);
+    for (int c = 0; c < D; ++c) {
+      Real s = 0;
+      for (int d = 0; d < D; ++d) s += block[D * c + d] * a[d];
+      out[c] = s;
+    }
+  }
   // solution = (M + dt/2 C)^-1 rhs on the block.
   void solve(const Vector& rhs, Vector& solution) const { solver_.solve(rhs, solution); }
 

@@ -101,17 +101,8 @@ class LatticeCoupledCentredDamping : public CentredDampingSolve {
     system_.force(t, a);
     system_.fusedSolve(inverseMass_, u.data(), vHalf.data(), a.data());
     const std::vector<Index>& nodes = surface_.nodes();
-    const LatticeRowTypes<D>& types = system_.types();
-    for (std::size_t k = 0; k < nodes.size(); ++k) {
-      const Index p = nodes[k];
-      Real block[D * D];
-      system_.mass().typeSum(types.typeOf(types.node(p)), block);
-      for (int c = 0; c < D; ++c) {
-        Real s = 0;
-        for (int d = 0; d < D; ++d) s += block[D * c + d] * a[D * p + d];
-        rhs_[D * static_cast<Index>(k) + c] = s;
-      }
-    }
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+      surface_.massTimes(system_, k, a.data() + D * nodes[k], rhs_.data() + D * static_cast<Index>(k));
     for (const auto& [row, i] : surface_.inside()) rhs_[row] = prescribedAcceleration[i];
     surface_.solve(rhs_, solution_);
     for (std::size_t k = 0; k < nodes.size(); ++k)

@@ -51,21 +51,10 @@ class DistributedCoupledCentredDamping : public CentredDampingSolve {
   void acceleration(Real t, const Vector& u, const Vector& vHalf, const Vector&, Vector& a) override {
     a.resize(system_.size());
     system_.solve(inverseMass_, t, u.data(), vHalf.data(), a.data());
-    const LatticeRowTypes<D>& types = serial_.types();
     for (std::size_t k = 0; k < local_.size(); ++k) {
-      const Index p = local_[k];
-      if (p < 0) {
-        for (int c = 0; c < D; ++c) rhs_[D * static_cast<Index>(k) + c] = -0.0;
-        continue;
-      }
-      // LatticeCoupledCentredDamping's right-hand side: M times the acceleration
-      Real block[D * D];
-      serial_.mass().typeSum(types.typeOf(types.node(surface_.nodes()[k])), block);
-      for (int c = 0; c < D; ++c) {
-        Real s = 0;
-        for (int d = 0; d < D; ++d) s += block[D * c + d] * a[D * p + d];
-        rhs_[D * static_cast<Index>(k) + c] = s;
-      }
+      Real* rhs = rhs_.data() + D * static_cast<Index>(k);
+      if (local_[k] >= 0) surface_.massTimes(serial_, k, a.data() + D * local_[k], rhs);
+      else std::fill(rhs, rhs + D, -0.0);
     }
     MPI_Allreduce(MPI_IN_PLACE, rhs_.data(), static_cast<int>(rhs_.size()), MPI_DOUBLE, MPI_SUM, communicator_);
     surface_.solve(rhs_, solution_);

@@ -29,12 +29,6 @@ std::vector<Index> LatticeShare<D>::ownedNodes() const {
   return nodes;
 }
 
-template <int D>
-Index LatticeShare<D>::localNode(Index latticeNode) const {
-  const std::array<Index, D> node = serial_.types().node(latticeNode);
-  return system_->owned().contains(node) ? system_->owned().localIndex(node) : -1;
-}
-
 template class LatticeShare<1>;
 template class LatticeShare<2>;
 template class LatticeShare<3>;

@@ -30,7 +30,7 @@ class LatticeShare {
   // The lattice number of each node of this rank's state, in its order.
   std::vector<Index> ownedNodes() const;
   // A lattice node's place in this rank's state, or -1 when another rank owns it.
-  Index localNode(Index latticeNode) const;
+  Index localNode(Index latticeNode) const { return system_->localNode(latticeNode); }
 
  private:
   const LatticeSecondOrderSystem<D>& serial_;
