@@ -4,6 +4,7 @@
 // wired: scene -> particles + neighbours -> method -> integrator -> observers -> summary.
 //
 //   wavefield --scene data/scenes/block-ricker.toml [--set key=value ...] [--out DIR]
+//   mpirun -np 2 wavefield ...   (each rank steps a block of the lattice; the same numbers)
 
 #include "analysis/StableTimeStep.hpp"
 #include "core/Stopwatch.hpp"
@@ -23,12 +24,19 @@
 #include "io/vtk/FrameOutputs.hpp"
 #include "io/vtk/PngFrameRenderer.hpp"
 #include "io/vtk/VtkFrameWriter.hpp"
-#include "methods/finite_difference/FiniteDifferenceWaveOperator.hpp"
-#include "neighbours/NeighbourList.hpp"
+#include "methods/finite_difference/FiniteDifferenceLattice.hpp"
+#include "particles/Lattice.hpp"
 #include "observers/EnergyObserver.hpp"
 #include "observers/ProbeRecorder.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
+
+#ifdef MFWAVE_WITH_MPI
+#include "decomposition/mpi/LatticeShare.hpp"
+#include "decomposition/mpi/MpiSession.hpp"
+#include "decomposition/mpi/RankProbes.hpp"
+#include "io/vtk/ParallelVtkFrameWriter.hpp"
+#endif
 
 #include <filesystem>
 #include <iostream>
@@ -71,84 +79,154 @@ Index nearestParticle(const ParticleSet<D>& particles, const std::vector<Real>& 
   return best;
 }
 
+// The geometry's lattice: buildParticles numbers its nodes x fastest, as the lattice stencils do.
+template <int D>
+std::array<Index, D> latticeNodes(const GeometrySpec& geometry) {
+  const std::array<Index, D> intervals = latticeIntervals<D>(Eigen::Map<const Vec<D>>(geometry.lower.data()),
+                                                             Eigen::Map<const Vec<D>>(geometry.upper.data()),
+                                                             geometry.spacing);
+  std::array<Index, D> nodes{};
+  for (int a = 0; a < D; ++a) nodes[static_cast<std::size_t>(a)] = intervals[static_cast<std::size_t>(a)] + 1;
+  return nodes;
+}
+
 template <int D>
 int run(const Scene& scene, const std::string& folder, const DriverOptions& cli) {
   const Stopwatch setup;
   RunSummary summary(kProgram, scene.info.name, scene.method.name, scene.integrator.name);
 
-  // particles + neighbours
+  // particles: the box lattice
   const ParticleSet<D> particles = buildParticles<D>(scene.geometry);
+  if (particles.ghostCount() != 0)
+    throw InputError("geometry.ghost_layers", "the finite_difference method takes no ghost particles");
   const Real dx = scene.geometry.spacing;
-  const NeighbourList neighbours = buildNeighbourList(CellList<D>(particles, 1.5 * dx));
 
-  // discretisation: the scalar reference with c^2 = (lambda + 2 mu) / rho
+  // discretisation: the scalar reference with c^2 = (lambda + 2 mu) / rho, as lattice stencils
+  // (nothing stored per particle). Each point force acts on the particle nearest its position (the
+  // direction is not used by a scalar method).
   FiniteDifferenceWaveOptions fd;
   fd.spacing = dx;
   fd.density = scene.material.material().density();
   fd.modulus = scene.material.material().pWaveModulus();
   fd.fixedFaces = fixedFaces(scene);
-  LinearSecondOrderSystem system = assembleFiniteDifferenceWave(particles, neighbours, fd);
-
-  // loads: each point force acts on the particle nearest its position (the direction is not used
-  // by a scalar method)
-  std::vector<std::pair<Index, LoadSpec>> pointLoads;
-  for (const LoadSpec& load : scene.loads) pointLoads.emplace_back(nearestParticle(particles, load.position), load);
-  if (!pointLoads.empty())
-    system.setForce([pointLoads](Real t, Vector& f) {
-      for (const auto& [particle, load] : pointLoads) f[particle] += load.amplitude * load.timeFunction(t);
-    });
+  std::vector<SparseLoad> loads;
+  for (const LoadSpec& load : scene.loads)
+    loads.push_back({{nearestParticle(particles, load.position)}, {load.amplitude}, &load.timeFunction});
+  LatticeSecondOrderSystem<D, 1> serial = finiteDifferenceLatticeSystem<D>(latticeNodes<D>(scene.geometry), fd, loads);
 
   // integrator, with the step a fraction of the operator's stable central-difference step (the
   // Gershgorin bound, exact for this operator; the power-iteration estimate is reported beside it)
   // Every integrator's step is checked against its own limit before any work (exit 2 above it).
-  const StableTimeStep stable = centralDifferenceStableStep(system, 1e-6, 2000);
+  const StableTimeStep stable = centralDifferenceStableStep(serial, 1e-6, 2000);
   const Real dt = scene.integrator.timeStepFor(stable.safe());
   const StepLimitCheck check = checkStepLimit(scene.integrator, scene.stability, 2 / stable.safe(), dt, stable.safe(),
                                               "the Gershgorin bound of the operator (exact for this stencil)",
                                               "at dx = " + std::to_string(dx));
   if (!check.note.empty()) summary.notes.add(check.note);
+
+  // Under mpirun each rank steps its block of the lattice (LatticeShare): every row, probe and
+  // energy is the serial run's bit for bit; rank 0 writes the tables and the summary.
+  LinearOperatorSystem* system = &serial;
+  int rank = 0, ranks = 1;
+#ifdef MFWAVE_WITH_MPI
+  std::optional<LatticeShare<D, 1>> share;
+  if (MpiSession::size() > 1) {
+    share.emplace(serial, MPI_COMM_WORLD);
+    system = &share->system();
+    rank = share->rank();
+    ranks = share->ranks();
+  }
+#endif
+  const bool writer = rank == 0;
   auto integrator = makeSecondOrderIntegrator(scene.integrator.name, scene.integrator.options);
-  const Vector zero = Vector::Zero(system.size());
-  integrator->initialise(system, 0, zero, zero, dt);
+  const Vector zero = Vector::Zero(system->size());
+  integrator->initialise(*system, 0, zero, zero, dt);
 
   // observers
   StabilityMonitor monitor(scene.stability.options(1, loadsQuietAfter(scene)));
   std::vector<Probe> probeList = resolveProbes(scene.probes, particles);
   for (Probe& probe : probeList) probe.component = 0;  // a scalar state has one component
-  ProbeRecorder probes(probeList, 1);
-  EnergyObserver energy(EnergyObserver::ofLinearSystem(system));
-  ProgressReporter progress(scene.integrator.endTime, particles.size(), !cli.quiet);
-  typename ParticleFrames<D>::Settings frameOptions = frameSettings<D>(scene.output);
-  frameOptions.components = 1;  // a scalar state
-  if (frameOptions.pngOptions.component != PngOptions::magnitude) frameOptions.pngOptions.component = 0;
-  ParticleFrames<D> frames(particles, folder, "frame", frameOptions);
+  EnergyObserver energy(EnergyObserver::ofLinearSystem(*system));
+  ProgressReporter progress(scene.integrator.endTime, particles.size(), !cli.quiet && writer);
   TimeLoop loop;
   loop.add(monitor);
   loop.add(progress);
-  if (!scene.probes.empty()) loop.add(probes, scene.output.probeEvery);
   if (scene.output.energy) loop.add(energy, scene.output.probeEvery);
-  frames.attachTo(loop, scene.output.every);
+  std::optional<ProbeRecorder> probes;
+  std::optional<ParticleFrames<D>> frames;
+#ifdef MFWAVE_WITH_MPI
+  std::optional<RankProbes> rankProbes;
+  std::optional<ParallelVtkFrameWriter<D>> pieces;
+  if (share) {
+    rankProbes.emplace(probeList, [&share](Index particle) { return share->localNode(particle); }, 1, MPI_COMM_WORLD);
+    rankProbes->sampleAtEnd(false);  // the serial recorder's rows
+    if (!scene.probes.empty()) loop.add(*rankProbes, scene.output.probeEvery);
+    if (scene.output.vtk) {
+      pieces.emplace(particles, share->ownedNodes(), folder, "frame", 1, rank, ranks);
+      loop.add(*pieces, scene.output.every);
+    }
+  }
+#endif
+  if (ranks == 1) {
+    probes.emplace(probeList, 1);
+    if (!scene.probes.empty()) loop.add(*probes, scene.output.probeEvery);
+    typename ParticleFrames<D>::Settings frameOptions = frameSettings<D>(scene.output);
+    frameOptions.components = 1;  // a scalar state
+    if (frameOptions.pngOptions.component != PngOptions::magnitude) frameOptions.pngOptions.component = 0;
+    frames.emplace(particles, folder, "frame", frameOptions);
+    frames->attachTo(loop, scene.output.every);
+  }
 
   const double setupSeconds = setup.seconds();
   const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
+#ifdef MFWAVE_WITH_MPI
+  if (share) MPI_Barrier(MPI_COMM_WORLD);  // every piece of the last frame is written
+#endif
+  if (!writer) return 0;
 
   // outputs and summary
   if (!scene.probes.empty()) {
-    probes.series().writeCsv(folder + "/probes.csv");
+    if (probes) {
+      probes->series().writeCsv(folder + "/probes.csv");
+    } else {
+#ifdef MFWAVE_WITH_MPI
+      TimeSeries table("time [s]", probeColumnNames(probeList, 1, "s", "m"));
+      for (std::size_t k = 0; k < rankProbes->times().size(); ++k) {
+        std::vector<Real> row;
+        for (std::size_t i = 0; i < probeList.size(); ++i) row.push_back(rankProbes->raw(i)[k]);
+        table.append(rankProbes->times()[k], row);
+      }
+      table.writeCsv(folder + "/probes.csv");
+#endif
+    }
     summary.files.add("probes.csv");
   }
   if (scene.output.energy) {
     energy.series().writeCsv(folder + "/energy.csv");
     summary.files.add("energy.csv");
   }
-  const FrameOutputReport frameReport = frames.report();
-  summary.files.addAll(frameReport.files);
-  summary.notes.addAll(frameReport.notes);
+  if (frames) {
+    const FrameOutputReport frameReport = frames->report();
+    summary.files.addAll(frameReport.files);
+    summary.notes.addAll(frameReport.notes);
+  }
+#ifdef MFWAVE_WITH_MPI
+  if (share) {
+    const std::array<int, D>& grid = share->decomposition().grid();
+    std::string blocks;
+    for (int a = 0; a < D; ++a) blocks += (a ? " x " : "") + std::to_string(grid[static_cast<std::size_t>(a)]);
+    summary.notes.add("stepped on " + std::to_string(ranks) + " ranks (MPI), blocks " + blocks + ", halo " +
+                      std::to_string(share->system().exchange().bytesSent()) + " bytes in " +
+                      std::to_string(share->system().exchange().messagesSent()) + " messages per step on rank 0");
+    if (pieces) summary.files.add("frame.pvd (" + std::to_string(pieces->framesWritten()) + " frames of " +
+                                  std::to_string(ranks) + " pieces)");
+    if (scene.output.png) summary.notes.add("no PNG frames on ranks (VTK pieces only)");
+  }
+#endif
   std::vector<std::string> growth;
   noteAllowedGrowth(growth, "", {monitor.growthMessage()});
   summary.notes.addAll(growth);
   summary.particles = particles.size();
-  summary.meanNeighbours = neighbours.meanCount();
   summary.steps = stats.steps;
   summary.timeStep = dt;
   summary.simulatedTime = stats.endTime;
@@ -165,7 +243,10 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
   summary.addCase(record);
   summary.figures.push_back({"stable_step_estimate", stable.estimate()});
   summary.figures.push_back({"stable_step_gershgorin", stable.safe()});
+  summary.figures.push_back({"operator_bytes", static_cast<Real>(serial.bytes())});
   if (scene.output.energy) summary.figures.push_back({"final_total_energy", energy.series().column(2).back()});
+  summary.notes.add("operator: finite-difference lattice stencils, " + std::to_string(serial.stiffness().typeCount()) +
+                    " row types, " + std::to_string(serial.bytes()) + " bytes in all");
   summary.notes.add("no reference solution for this scene: no error reported");
   summary.conclude(folder, &std::cout);
   return 0;
@@ -178,9 +259,12 @@ int main(int argc, char** argv) {
   DriverCommandLine cli(kProgram, "wavefield: run a scene with the reference finite-difference scalar wave",
                         schema.describe());
   cli.setDefaultScene("block-ricker.toml");
+#ifdef MFWAVE_WITH_MPI
+  const MpiSession mpi(argc, argv);  // only under a launcher: a plain run starts no MPI
+#endif
   if (const auto exit = cli.parse(argc, argv)) return *exit;
 
-  return runDriver(kProgram, [&]() -> int {
+  const int code = runDriver(kProgram, [&]() -> int {
     SceneReader reader = loadDriverScene(cli.options(), schema);
     const Scene scene = readScene(reader);
     reader.checkAllKeysRead();  // unknown keys: before any work
@@ -202,4 +286,9 @@ int main(int argc, char** argv) {
         return run<3>(scene, folder, cli.options());
     }
   });
+#ifdef MFWAVE_WITH_MPI
+  // A rank that failed must not leave the others waiting in a halo exchange.
+  if (code != 0) MpiSession::abortOthers(code);
+#endif
+  return code;
 }

@@ -8,8 +8,8 @@
 
 namespace mfwave {
 
-template <int D>
-std::array<Index, D> stencilReach(const LatticeStencils<D>& stencils) {
+template <int D, int C>
+std::array<Index, D> stencilReach(const LatticeStencils<D, C>& stencils) {
   std::array<Index, D> reach{};
   for (Index e = 0; e < stencils.entryCount(); ++e)
     for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s)
@@ -17,8 +17,8 @@ std::array<Index, D> stencilReach(const LatticeStencils<D>& stencils) {
   return reach;
 }
 
-template <int D>
-LocalStencils<D>::LocalStencils(const LatticeStencils<D>& stencils, const Box<D>& owned, const Box<D>& local)
+template <int D, int C>
+LocalStencils<D, C>::LocalStencils(const LatticeStencils<D, C>& stencils, const Box<D>& owned, const Box<D>& local)
     : stencils_(&stencils), owned_(owned), local_(local) {
   const LatticeRowTypes<D>& types = stencils.types();
   Box<D> lattice;
@@ -56,12 +56,12 @@ LocalStencils<D>::LocalStencils(const LatticeStencils<D>& stencils, const Box<D>
   table_ = freshStencilNumbers(static_cast<std::uint64_t>(std::max<Index>(stencils.typeCount(), 1)));
 }
 
-template <int D>
-void LocalStencils<D>::multiply(const Real* x, Real* y, const std::vector<char>* direct) const {
+template <int D, int C>
+void LocalStencils<D, C>::multiply(const Real* x, Real* y, const std::vector<char>* direct) const {
   forEachProduct(
       x,
       [y](Index k, Index, const Real* product, Index stride) {
-        for (int c = 0; c < D; ++c) y[D * k + c] = product[c * stride];
+        for (int c = 0; c < C; ++c) y[C * k + c] = product[c * stride];
       },
       [direct](Index type) { return direct && (*direct)[static_cast<std::size_t>(type)]; });
 }
@@ -69,8 +69,12 @@ void LocalStencils<D>::multiply(const Real* x, Real* y, const std::vector<char>*
 template class LocalStencils<1>;
 template class LocalStencils<2>;
 template class LocalStencils<3>;
+template class LocalStencils<2, 1>;
+template class LocalStencils<3, 1>;
 template std::array<Index, 1> stencilReach<1>(const LatticeStencils<1>&);
 template std::array<Index, 2> stencilReach<2>(const LatticeStencils<2>&);
 template std::array<Index, 3> stencilReach<3>(const LatticeStencils<3>&);
+template std::array<Index, 2> stencilReach<2>(const LatticeStencils<2, 1>&);
+template std::array<Index, 3> stencilReach<3>(const LatticeStencils<3, 1>&);
 
 }  // namespace mfwave

@@ -18,20 +18,21 @@
 namespace mfwave {
 
 // The largest |offset| along each axis over the stencils' entries: the halo depth their rows read.
-template <int D>
-std::array<Index, D> stencilReach(const LatticeStencils<D>& stencils);
+template <int D, int C>
+std::array<Index, D> stencilReach(const LatticeStencils<D, C>& stencils);
 
-template <int D>
+// C components per node, as the stencils' (LatticeStencils<D, C>).
+template <int D, int C = D>
 class LocalStencils {
  public:
   // `stencils` must outlive this object. Throws InputError("halo") when a row of `owned` reads a
   // node outside `local`, InputError("lattice") when `owned` is not inside the lattice.
-  LocalStencils(const LatticeStencils<D>& stencils, const Box<D>& owned, const Box<D>& local);
+  LocalStencils(const LatticeStencils<D, C>& stencils, const Box<D>& owned, const Box<D>& local);
 
   const Box<D>& owned() const { return owned_; }
   const Box<D>& local() const { return local_; }
 
-  // y (D values per owned node, in the owned box's order) = the owned rows applied to x (D values
+  // y (C values per owned node, in the owned box's order) = the owned rows applied to x (C values
   // per node of the local box, in its order). OpenMP-parallel over lines along x. `direct`, when
   // given, marks the row types whose middle of line is computed row by row, as the serial
   // LatticeStencils::forEachProduct does for its `direct` types (the dashpot rows of a fused solve).
@@ -44,16 +45,16 @@ class LocalStencils {
   void forEachProduct(const Real* x, Function&& f, Direct&& direct) const;
 
  private:
-  const LatticeStencils<D>* stencils_;
+  const LatticeStencils<D, C>* stencils_;
   Box<D> owned_, local_;
   std::vector<Index> flat_;  // per entry: the offset as a node-index difference in the local box
   std::uint64_t table_ = 0;  // stencil numbers of these offsets (freshStencilNumbers)
 };
 
-template <int D>
+template <int D, int C>
 template <class Function, class Direct>
-void LocalStencils<D>::forEachProduct(const Real* x, Function&& f, Direct&& direct) const {
-  const LatticeStencils<D>& stencils = *stencils_;
+void LocalStencils<D, C>::forEachProduct(const Real* x, Function&& f, Direct&& direct) const {
+  const LatticeStencils<D, C>& stencils = *stencils_;
   const LatticeRowTypes<D>& types = stencils.types();
   const Index nx = types.nodes()[0], depth = types.depth();
   const bool runs = types.compactNodes()[0] < nx;  // else every x position is its own type
@@ -73,10 +74,10 @@ void LocalStencils<D>::forEachProduct(const Real* x, Function&& f, Direct&& dire
     }
     const Index in = local_.localIndex(g) - owned_.lo[0];  // node i of the line in x, and in the owned box
     const Index out = owned_.localIndex(g) - owned_.lo[0];
-    Real product[D];
+    Real product[C];
     auto single = [&](Index i) {
       const Index type = base + types.compactIndex(0, i);
-      stencils.rowProductAt(type, x + D * (in + i), flat_.data(), product);
+      stencils.rowProductAt(type, x + C * (in + i), flat_.data(), product);
       f(out + i, type, static_cast<const Real*>(product), Index{1});
     };
     for (Index i = owned_.lo[0]; i < std::min(middleFirst, owned_.hi[0]); ++i) single(i);
@@ -91,8 +92,8 @@ void LocalStencils<D>::forEachProduct(const Real* x, Function&& f, Direct&& dire
         view.table = table_ + static_cast<std::uint64_t>(type);
         thread_local StencilRunCache cache;
         thread_local std::vector<Real> run;
-        if (run.size() < static_cast<std::size_t>(D * count)) run.resize(static_cast<std::size_t>(D * count));
-        stencilRun<D>(view, x, in + middleFirst, count, run.data(), cache, pass);
+        if (run.size() < static_cast<std::size_t>(C * count)) run.resize(static_cast<std::size_t>(C * count));
+        stencilRun<C>(view, x, in + middleFirst, count, run.data(), cache, pass);
         for (Index l = 0; l < count; ++l) f(out + middleFirst + l, type, static_cast<const Real*>(run.data() + l), count);
       }
     }
@@ -103,8 +104,12 @@ void LocalStencils<D>::forEachProduct(const Real* x, Function&& f, Direct&& dire
 extern template class LocalStencils<1>;
 extern template class LocalStencils<2>;
 extern template class LocalStencils<3>;
+extern template class LocalStencils<2, 1>;
+extern template class LocalStencils<3, 1>;
 extern template std::array<Index, 1> stencilReach<1>(const LatticeStencils<1>&);
 extern template std::array<Index, 2> stencilReach<2>(const LatticeStencils<2>&);
 extern template std::array<Index, 3> stencilReach<3>(const LatticeStencils<3>&);
+extern template std::array<Index, 2> stencilReach<2>(const LatticeStencils<2, 1>&);
+extern template std::array<Index, 3> stencilReach<3>(const LatticeStencils<3, 1>&);
 
 }  // namespace mfwave

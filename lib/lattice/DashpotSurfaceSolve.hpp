@@ -14,27 +14,27 @@
 
 namespace mfwave {
 
-template <int D>
+template <int D, int C = D>
 class DashpotSurfaceSolve {
  public:
   // Throws InputError("prescribed_displacement") for a dof outside the system.
-  DashpotSurfaceSolve(const LatticeSecondOrderSystem<D>& system, Real dt, const std::vector<Index>& prescribedDofs);
+  DashpotSurfaceSolve(const LatticeSecondOrderSystem<D, C>& system, Real dt, const std::vector<Index>& prescribedDofs);
 
-  // The lattice nodes of the block, sorted: its unknowns are D per node in this order.
+  // The lattice nodes of the block, sorted: its unknowns are C per node in this order.
   const std::vector<Index>& nodes() const { return nodes_; }
   // The prescribed dofs inside the block: (its row, the dof's position in the prescribed list).
   const std::vector<std::pair<Index, Index>>& inside() const { return inside_; }
   // The prescribed dofs elsewhere: (the dof, its position in the prescribed list).
   const std::vector<std::pair<Index, Index>>& outside() const { return outside_; }
-  // The block's right-hand side at its node k: M times the acceleration `a` of that node (its D
+  // The block's right-hand side at its node k: M times the acceleration `a` of that node (its C
   // values), the node's mass block summed per type as the lattice system keeps it.
-  void massTimes(const LatticeSecondOrderSystem<D>& system, std::size_t k, const Real* a, Real* out) const {
-    Real block[D * D];
+  void massTimes(const LatticeSecondOrderSystem<D, C>& system, std::size_t k, const Real* a, Real* out) const {
+    Real block[C * C];
     const LatticeRowTypes<D>& types = system.types();
     system.mass().typeSum(types.typeOf(types.node(nodes_[k])), block);
-    for (int c = 0; c < D; ++c) {
+    for (int c = 0; c < C; ++c) {
       Real s = 0;
-      for (int d = 0; d < D; ++d) s += block[D * c + d] * a[d];
+      for (int d = 0; d < C; ++d) s += block[C * c + d] * a[d];
       out[c] = s;
     }
   }
@@ -50,5 +50,7 @@ class DashpotSurfaceSolve {
 extern template class DashpotSurfaceSolve<1>;
 extern template class DashpotSurfaceSolve<2>;
 extern template class DashpotSurfaceSolve<3>;
+extern template class DashpotSurfaceSolve<2, 1>;
+extern template class DashpotSurfaceSolve<3, 1>;
 
 }  // namespace mfwave

@@ -15,15 +15,15 @@
 namespace mfwave {
 namespace {
 
-template <int D>
-using Block = Eigen::Matrix<Real, D, D, Eigen::RowMajor>;
+template <int C>
+using Block = Eigen::Matrix<Real, C, C, Eigen::RowMajor>;
 
 // Ding-Long-Wu eq. (32) on the lattice: (M + dt/2 C)^-1 per type, fused with the products; the
 // particles with prescribed dofs re-solved on their free dofs afterwards.
-template <int D>
+template <int D, int C>
 class LatticeCentredDamping : public CentredDampingSolve {
  public:
-  LatticeCentredDamping(const LatticeSecondOrderSystem<D>& system, Real dt, const std::vector<Index>& prescribedDofs)
+  LatticeCentredDamping(const LatticeSecondOrderSystem<D, C>& system, Real dt, const std::vector<Index>& prescribedDofs)
       : system_(system), halfStep_(0.5 * dt), inverse_(system.inverseBlocks(0.5 * dt)) {
     const Index n = system.size();
     for (std::size_t i = 0; i < prescribedDofs.size(); ++i) {
@@ -31,8 +31,8 @@ class LatticeCentredDamping : public CentredDampingSolve {
       if (dof < 0 || dof >= n)
         throw InputError("prescribed_displacement", "dof " + std::to_string(dof) + " is outside the system's " +
                                                         std::to_string(n) + " unknowns");
-      Prescribed& p = particles_[dof / D];
-      p.index[dof % D] = static_cast<Index>(i);
+      Prescribed& p = particles_[dof / C];
+      p.index[dof % C] = static_cast<Index>(i);
     }
   }
 
@@ -42,14 +42,14 @@ class LatticeCentredDamping : public CentredDampingSolve {
     system_.fusedSolve(inverse_, u.data(), vHalf.data(), a.data());
     for (const auto& [particle, prescribed] : particles_) {
       const Index type = system_.types().typeOf(system_.types().node(particle));
-      Block<D> mass, damping;
+      Block<C> mass, damping;
       system_.mass().typeSum(type, mass.data());
       system_.damping().typeSum(type, damping.data());
-      const Block<D> matrix = mass + halfStep_ * damping;
-      Eigen::Matrix<Real, D, 1> solution = Eigen::Map<const Eigen::Matrix<Real, D, 1>>(a.data() + D * particle);
-      const Eigen::Matrix<Real, D, 1> rhs = matrix * solution;  // the row's right-hand side, recovered
+      const Block<C> matrix = mass + halfStep_ * damping;
+      Eigen::Matrix<Real, C, 1> solution = Eigen::Map<const Eigen::Matrix<Real, C, 1>>(a.data() + C * particle);
+      const Eigen::Matrix<Real, C, 1> rhs = matrix * solution;  // the row's right-hand side, recovered
       std::vector<int> free;
-      for (int c = 0; c < D; ++c) {
+      for (int c = 0; c < C; ++c) {
         if (prescribed.index[c] >= 0) solution[c] = prescribedAcceleration[prescribed.index[c]];
         else free.push_back(c);
       }
@@ -59,7 +59,7 @@ class LatticeCentredDamping : public CentredDampingSolve {
         Eigen::VectorXd right(m);
         for (Index i = 0; i < m; ++i) {
           right[i] = rhs[free[static_cast<std::size_t>(i)]];
-          for (int c = 0; c < D; ++c)
+          for (int c = 0; c < C; ++c)
             if (prescribed.index[c] >= 0) right[i] -= matrix(free[static_cast<std::size_t>(i)], c) * solution[c];
           for (Index j = 0; j < m; ++j)
             reduced(i, j) = matrix(free[static_cast<std::size_t>(i)], free[static_cast<std::size_t>(j)]);
@@ -67,17 +67,17 @@ class LatticeCentredDamping : public CentredDampingSolve {
         const Eigen::VectorXd x = reduced.partialPivLu().solve(right);
         for (Index i = 0; i < m; ++i) solution[free[static_cast<std::size_t>(i)]] = x[i];
       }
-      Eigen::Map<Eigen::Matrix<Real, D, 1>>(a.data() + D * particle) = solution;
+      Eigen::Map<Eigen::Matrix<Real, C, 1>>(a.data() + C * particle) = solution;
     }
   }
 
  private:
   struct Prescribed {
     Prescribed() { index.fill(-1); }
-    std::array<Index, D> index;  // position in the prescribed list, -1 for a free component
+    std::array<Index, C> index;  // position in the prescribed list, -1 for a free component
   };
 
-  const LatticeSecondOrderSystem<D>& system_;
+  const LatticeSecondOrderSystem<D, C>& system_;
   Real halfStep_;
   std::vector<Real> inverse_;
   std::map<Index, Prescribed> particles_;
@@ -87,12 +87,12 @@ class LatticeCentredDamping : public CentredDampingSolve {
 // node, then on the nodes the dashpots reach M times that is the right-hand side of the block's
 // solve; prescribed dofs away from the dashpots take their accelerations (a lumped mass does not
 // couple them).
-template <int D>
+template <int D, int C>
 class LatticeCoupledCentredDamping : public CentredDampingSolve {
  public:
-  LatticeCoupledCentredDamping(const LatticeSecondOrderSystem<D>& system, Real dt, const std::vector<Index>& prescribedDofs)
+  LatticeCoupledCentredDamping(const LatticeSecondOrderSystem<D, C>& system, Real dt, const std::vector<Index>& prescribedDofs)
       : system_(system), inverseMass_(system.inverseBlocks(0)), surface_(system, dt, prescribedDofs) {
-    rhs_.resize(D * static_cast<Index>(surface_.nodes().size()));
+    rhs_.resize(C * static_cast<Index>(surface_.nodes().size()));
     solution_.resize(rhs_.size());
   }
 
@@ -102,26 +102,26 @@ class LatticeCoupledCentredDamping : public CentredDampingSolve {
     system_.fusedSolve(inverseMass_, u.data(), vHalf.data(), a.data());
     const std::vector<Index>& nodes = surface_.nodes();
     for (std::size_t k = 0; k < nodes.size(); ++k)
-      surface_.massTimes(system_, k, a.data() + D * nodes[k], rhs_.data() + D * static_cast<Index>(k));
+      surface_.massTimes(system_, k, a.data() + C * nodes[k], rhs_.data() + C * static_cast<Index>(k));
     for (const auto& [row, i] : surface_.inside()) rhs_[row] = prescribedAcceleration[i];
     surface_.solve(rhs_, solution_);
     for (std::size_t k = 0; k < nodes.size(); ++k)
-      for (int c = 0; c < D; ++c) a[D * nodes[k] + c] = solution_[D * static_cast<Index>(k) + c];
+      for (int c = 0; c < C; ++c) a[C * nodes[k] + c] = solution_[C * static_cast<Index>(k) + c];
     for (const auto& [dof, i] : surface_.outside()) a[dof] = prescribedAcceleration[i];
   }
 
  private:
-  const LatticeSecondOrderSystem<D>& system_;
+  const LatticeSecondOrderSystem<D, C>& system_;
   std::vector<Real> inverseMass_;
-  DashpotSurfaceSolve<D> surface_;
+  DashpotSurfaceSolve<D, C> surface_;
   Vector rhs_, solution_;
 };
 
 }  // namespace
 
-template <int D>
-LatticeSecondOrderSystem<D>::LatticeSecondOrderSystem(LatticeStencils<D> mass, LatticeStencils<D> damping,
-                                                      LatticeStencils<D> stiffness, ForceFunction force)
+template <int D, int C>
+LatticeSecondOrderSystem<D, C>::LatticeSecondOrderSystem(LatticeStencils<D, C> mass, LatticeStencils<D, C> damping,
+                                                      LatticeStencils<D, C> stiffness, ForceFunction force)
     : mass_(std::move(mass)), damping_(std::move(damping)), stiffness_(std::move(stiffness)), force_(std::move(force)) {
   const Index typeCount = stiffness_.typeCount();
   if (mass_.typeCount() != typeCount || mass_.types().nodeCount() != stiffness_.types().nodeCount())
@@ -135,9 +135,9 @@ LatticeSecondOrderSystem<D>::LatticeSecondOrderSystem(LatticeStencils<D> mass, L
   inverseMass_ = inverseBlocks(0);
 }
 
-template <int D>
-LatticeSecondOrderSystem<D>::LatticeSecondOrderSystem(LatticeStencils<D> mass, LatticeStencils<D> damping,
-                                                      LatticeStencils<D> stiffness, std::vector<SparseLoad> loads)
+template <int D, int C>
+LatticeSecondOrderSystem<D, C>::LatticeSecondOrderSystem(LatticeStencils<D, C> mass, LatticeStencils<D, C> damping,
+                                                      LatticeStencils<D, C> stiffness, std::vector<SparseLoad> loads)
     : LatticeSecondOrderSystem(std::move(mass), std::move(damping), std::move(stiffness)) {
   if (loads.empty()) return;
   for (const SparseLoad& load : loads)
@@ -149,85 +149,85 @@ LatticeSecondOrderSystem<D>::LatticeSecondOrderSystem(LatticeStencils<D> mass, L
   force_ = [loads = loads_](Real t, Eigen::Ref<Vector> f) { addSparseLoads(*loads, t, f.data()); };
 }
 
-template <int D>
-std::vector<Real> LatticeSecondOrderSystem<D>::inverseBlocks(Real s) const {
+template <int D, int C>
+std::vector<Real> LatticeSecondOrderSystem<D, C>::inverseBlocks(Real s) const {
   const Index typeCount = stiffness_.typeCount();
-  std::vector<Real> inverse(static_cast<std::size_t>(D * D * typeCount));
+  std::vector<Real> inverse(static_cast<std::size_t>(C * C * typeCount));
   for (Index type = 0; type < typeCount; ++type) {
-    Block<D> m, c;
+    Block<C> m, c;
     mass_.typeSum(type, m.data());
     damping_.typeSum(type, c.data());
-    const Block<D> matrix = m + s * c;
+    const Block<C> matrix = m + s * c;
     const Real determinant = matrix.determinant();
     if (!(std::abs(determinant) > 0) || !std::isfinite(determinant))
       throw InputError("mass", "the mass" + std::string(s > 0 ? " plus dt/2 times the dashpots" : "") +
                                    " of row type " + std::to_string(type) + " is singular");
-    Eigen::Map<Block<D>> target(&inverse[static_cast<std::size_t>(D * D * type)]);
+    Eigen::Map<Block<C>> target(&inverse[static_cast<std::size_t>(C * C * type)]);
     target = matrix.inverse();
   }
   return inverse;
 }
 
-template <int D>
-void LatticeSecondOrderSystem<D>::fusedSolve(const std::vector<Real>& inverseBlocks, const Real* u, const Real* v,
+template <int D, int C>
+void LatticeSecondOrderSystem<D, C>::fusedSolve(const std::vector<Real>& inverseBlocks, const Real* u, const Real* v,
                                              Real* a) const {
   const bool damped = hasDamping_ && v != nullptr;
   auto hasDashpot = [&](Index type) { return damped && damping_.begin(type) != damping_.end(type); };
   stiffness_.forEachProduct(
       u,
       [&](Index p, Index type, const Real* ku, Index stride) {
-        Real r[D];
-        for (int c = 0; c < D; ++c) r[c] = a[D * p + c] - ku[c * stride];
+        Real r[C];
+        for (int c = 0; c < C; ++c) r[c] = a[C * p + c] - ku[c * stride];
         if (hasDashpot(type)) {
-          Real cv[D];
+          Real cv[C];
           damping_.rowProduct(type, p, v, cv);
-          for (int c = 0; c < D; ++c) r[c] -= cv[c];
+          for (int c = 0; c < C; ++c) r[c] -= cv[c];
         }
-        const Real* b = &inverseBlocks[static_cast<std::size_t>(D * D * type)];
-        for (int c = 0; c < D; ++c) {
+        const Real* b = &inverseBlocks[static_cast<std::size_t>(C * C * type)];
+        for (int c = 0; c < C; ++c) {
           Real s = 0;
-          for (int d = 0; d < D; ++d) s += b[D * c + d] * r[d];
-          a[D * p + c] = s;
+          for (int d = 0; d < C; ++d) s += b[C * c + d] * r[d];
+          a[C * p + c] = s;
         }
       },
       hasDashpot);
 }
 
-template <int D>
-void LatticeSecondOrderSystem<D>::acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v,
+template <int D, int C>
+void LatticeSecondOrderSystem<D, C>::acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v,
                                                Eigen::Ref<Vector> a) {
   a.setZero();
   if (force_) force_(t, a);
   fusedSolve(inverseMass_, u.data(), v.data(), a.data());
 }
 
-template <int D>
-void LatticeSecondOrderSystem<D>::force(Real t, Vector& f) const {
+template <int D, int C>
+void LatticeSecondOrderSystem<D, C>::force(Real t, Vector& f) const {
   f.setZero(size());
   if (force_) force_(t, f);
 }
 
-template <int D>
-Real LatticeSecondOrderSystem<D>::kineticEnergy(const Vector& v) const {
+template <int D, int C>
+Real LatticeSecondOrderSystem<D, C>::kineticEnergy(const Vector& v) const {
   const Real* x = v.data();
   return 0.5 * sumOverLatticeNodes<D>(types(), [&](Index p, Index type) {
-    Real mv[D];
+    Real mv[C];
     mass_.rowProduct(type, p, x, mv);
     Real s = 0;
-    for (int c = 0; c < D; ++c) s += x[D * p + c] * mv[c];
+    for (int c = 0; c < C; ++c) s += x[C * p + c] * mv[c];
     return s;
   });
 }
 
-template <int D>
-Real LatticeSecondOrderSystem<D>::strainEnergy(const Vector& u) const {
+template <int D, int C>
+Real LatticeSecondOrderSystem<D, C>::strainEnergy(const Vector& u) const {
   // per-line sums, then over lines in order: the same on any thread count
   const Real* x = u.data();
   const Index nx = types().nodes()[0];
   std::vector<Real> lineSums(static_cast<std::size_t>(types().nodeCount() / nx), 0.0);
   stiffness_.forEachProduct(x, [&](Index p, Index, const Real* ku, Index stride) {
     Real s = 0;
-    for (int c = 0; c < D; ++c) s += x[D * p + c] * ku[c * stride];
+    for (int c = 0; c < C; ++c) s += x[C * p + c] * ku[c * stride];
     lineSums[static_cast<std::size_t>(p / nx)] += s;
   });
   Real sum = 0;
@@ -235,17 +235,17 @@ Real LatticeSecondOrderSystem<D>::strainEnergy(const Vector& u) const {
   return 0.5 * sum;
 }
 
-template <int D>
-Real LatticeSecondOrderSystem<D>::dot(const Vector& a, const Vector& b) const {
+template <int D, int C>
+Real LatticeSecondOrderSystem<D, C>::dot(const Vector& a, const Vector& b) const {
   return sumOverLatticeNodes<D>(types(), [&](Index p, Index) {
     Real s = 0;
-    for (int c = 0; c < D; ++c) s += a[D * p + c] * b[D * p + c];
+    for (int c = 0; c < C; ++c) s += a[C * p + c] * b[C * p + c];
     return s;
   });
 }
 
-template <int D>
-Real LatticeSecondOrderSystem<D>::dampingPower(const Vector& v) const {
+template <int D, int C>
+Real LatticeSecondOrderSystem<D, C>::dampingPower(const Vector& v) const {
   if (!hasDamping_) return 0;
   // Line by line, visiting only the nodes whose type has dashpots (the surface): per-line sums,
   // then over lines in order, the same on any thread count.
@@ -258,9 +258,9 @@ Real LatticeSecondOrderSystem<D>::dampingPower(const Vector& v) const {
     auto node = [&](Index i) {
       const Index type = base + t.compactIndex(0, i);
       if (damping_.begin(type) == damping_.end(type)) return;
-      Real cv[D];
+      Real cv[C];
       damping_.rowProduct(type, first + i, x, cv);
-      for (int c = 0; c < D; ++c) sum += x[D * (first + i) + c] * cv[c];
+      for (int c = 0; c < C; ++c) sum += x[C * (first + i) + c] * cv[c];
     };
     const Index depth = t.depth();
     const bool middle = t.compactNodes()[0] < nx;
@@ -280,40 +280,48 @@ Real LatticeSecondOrderSystem<D>::dampingPower(const Vector& v) const {
   return total;
 }
 
-template <int D>
-Vector LatticeSecondOrderSystem<D>::lumpedMass() const {
+template <int D, int C>
+std::vector<Real> LatticeSecondOrderSystem<D, C>::lumpedMassPerType() const {
   const Index typeCount = mass_.typeCount();
-  std::vector<Real> diagonal(static_cast<std::size_t>(D * typeCount));
+  std::vector<Real> diagonal(static_cast<std::size_t>(C * typeCount));
   for (Index type = 0; type < typeCount; ++type) {
-    Real b[D * D];
+    Real b[C * C];
     mass_.typeSum(type, b);
-    for (int c = 0; c < D; ++c)
-      for (int d = 0; d < D; ++d)
-        if (c != d && b[D * c + d] != 0) throw InputError("mass", "needs a diagonal (lumped) mass matrix");
-    for (int c = 0; c < D; ++c) diagonal[static_cast<std::size_t>(D * type + c)] = b[D * c + c];
+    for (int c = 0; c < C; ++c)
+      for (int d = 0; d < C; ++d)
+        if (c != d && b[C * c + d] != 0) throw InputError("mass", "needs a diagonal (lumped) mass matrix");
+    for (int c = 0; c < C; ++c) diagonal[static_cast<std::size_t>(C * type + c)] = b[C * c + c];
   }
+  return diagonal;
+}
+
+template <int D, int C>
+Vector LatticeSecondOrderSystem<D, C>::lumpedMass() const {
+  const std::vector<Real> diagonal = lumpedMassPerType();
   Vector m(size());
   forEachLatticeNode<D>(types(), [&](Index p, Index type) {
-    for (int c = 0; c < D; ++c) m[D * p + c] = diagonal[static_cast<std::size_t>(D * type + c)];
+    for (int c = 0; c < C; ++c) m[C * p + c] = diagonal[static_cast<std::size_t>(C * type + c)];
   });
   return m;
 }
 
-template <int D>
-std::unique_ptr<CentredDampingSolve> LatticeSecondOrderSystem<D>::centredDamping(
+template <int D, int C>
+std::unique_ptr<CentredDampingSolve> LatticeSecondOrderSystem<D, C>::centredDamping(
     Real dt, const std::vector<Index>& prescribedDofs) const {
   if (!damping_.empty() && !damping_.blockDiagonal())
-    return std::make_unique<LatticeCoupledCentredDamping<D>>(*this, dt, prescribedDofs);
-  return std::make_unique<LatticeCentredDamping<D>>(*this, dt, prescribedDofs);
+    return std::make_unique<LatticeCoupledCentredDamping<D, C>>(*this, dt, prescribedDofs);
+  return std::make_unique<LatticeCentredDamping<D, C>>(*this, dt, prescribedDofs);
 }
 
-template <int D>
-std::size_t LatticeSecondOrderSystem<D>::bytes() const {
+template <int D, int C>
+std::size_t LatticeSecondOrderSystem<D, C>::bytes() const {
   return mass_.bytes() + damping_.bytes() + stiffness_.bytes() + inverseMass_.size() * sizeof(Real);
 }
 
 template class LatticeSecondOrderSystem<1>;
 template class LatticeSecondOrderSystem<2>;
 template class LatticeSecondOrderSystem<3>;
+template class LatticeSecondOrderSystem<2, 1>;
+template class LatticeSecondOrderSystem<3, 1>;
 
 }  // namespace mfwave

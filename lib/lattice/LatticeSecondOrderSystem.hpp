@@ -19,7 +19,8 @@
 
 namespace mfwave {
 
-template <int D>
+// C unknowns per node: C = D for displacements, C = 1 for a scalar field (the finite-difference wave).
+template <int D, int C = D>
 class LatticeSecondOrderSystem : public LinearOperatorSystem {
  public:
   // Adds f(t) into f (which the system has zeroed).
@@ -28,14 +29,14 @@ class LatticeSecondOrderSystem : public LinearOperatorSystem {
   // All three on the same lattice; damping may be empty (no dashpots). Throws InputError("mass")
   // for a mass that is not block-diagonal or has a singular block, InputError("damping") for
   // dashpots on another lattice.
-  LatticeSecondOrderSystem(LatticeStencils<D> mass, LatticeStencils<D> damping, LatticeStencils<D> stiffness,
+  LatticeSecondOrderSystem(LatticeStencils<D, C> mass, LatticeStencils<D, C> damping, LatticeStencils<D, C> stiffness,
                            ForceFunction force = {});
   // The same with the loads as nonzero entries (SparseLoads.hpp), which a rank can restrict to the
   // nodes it owns (lib/decomposition); an empty list is no load.
-  LatticeSecondOrderSystem(LatticeStencils<D> mass, LatticeStencils<D> damping, LatticeStencils<D> stiffness,
+  LatticeSecondOrderSystem(LatticeStencils<D, C> mass, LatticeStencils<D, C> damping, LatticeStencils<D, C> stiffness,
                            std::vector<SparseLoad> loads);
 
-  Index size() const override { return D * stiffness_.types().nodeCount(); }
+  Index size() const override { return C * stiffness_.types().nodeCount(); }
   bool hasDamping() const override { return hasDamping_; }
   void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) override;
 
@@ -55,12 +56,14 @@ class LatticeSecondOrderSystem : public LinearOperatorSystem {
   // Per lattice line along x node by node, then the lines in order (as the energies).
   Real dot(const Vector& a, const Vector& b) const override;
   Vector lumpedMass() const override;
+  // The diagonal of M per row type, C values each. Throws InputError("mass") when M is not diagonal.
+  std::vector<Real> lumpedMassPerType() const;
   Vector stiffnessAbsoluteRowSums() const override { return stiffness_.absoluteRowSums(); }
   std::unique_ptr<CentredDampingSolve> centredDamping(Real dt, const std::vector<Index>& prescribedDofs) const override;
 
-  const LatticeStencils<D>& mass() const { return mass_; }
-  const LatticeStencils<D>& damping() const { return damping_; }
-  const LatticeStencils<D>& stiffness() const { return stiffness_; }
+  const LatticeStencils<D, C>& mass() const { return mass_; }
+  const LatticeStencils<D, C>& damping() const { return damping_; }
+  const LatticeStencils<D, C>& stiffness() const { return stiffness_; }
   const LatticeRowTypes<D>& types() const { return stiffness_.types(); }
   // Bytes of the stencil tables and per-type inverses (nothing per particle).
   std::size_t bytes() const;
@@ -68,11 +71,11 @@ class LatticeSecondOrderSystem : public LinearOperatorSystem {
   // a_p = B_type (a_p - (K u)_p - (C v)_p) for every node, in place over a (which holds f): the
   // acceleration with B = M^-1, and the dashpot solve of eq. (32) with B = (M + dt/2 C)^-1.
   void fusedSolve(const std::vector<Real>& inverseBlocks, const Real* u, const Real* v, Real* a) const;
-  // Per type, the inverse of M + s C (row-major D x D blocks).
+  // Per type, the inverse of M + s C (row-major C x C blocks).
   std::vector<Real> inverseBlocks(Real s) const;
 
  private:
-  LatticeStencils<D> mass_, damping_, stiffness_;
+  LatticeStencils<D, C> mass_, damping_, stiffness_;
   ForceFunction force_;
   std::shared_ptr<const std::vector<SparseLoad>> loads_;  // shared with force_
   bool hasDamping_ = false;
@@ -82,5 +85,7 @@ class LatticeSecondOrderSystem : public LinearOperatorSystem {
 extern template class LatticeSecondOrderSystem<1>;
 extern template class LatticeSecondOrderSystem<2>;
 extern template class LatticeSecondOrderSystem<3>;
+extern template class LatticeSecondOrderSystem<2, 1>;
+extern template class LatticeSecondOrderSystem<3, 1>;
 
 }  // namespace mfwave

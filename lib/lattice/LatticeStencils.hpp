@@ -1,7 +1,8 @@
 #pragma once
 // An operator on a box lattice stored as one stencil per row type (LatticeRowTypes) instead of one
-// row per node: each stencil is a list of (lattice offset, D x D block), the block coupling the
-// node's D components to those of the node at the offset. A node's row is its type's stencil,
+// row per node: each stencil is a list of (lattice offset, C x C block), the block coupling the
+// node's C components to those of the node at the offset (C = D for displacements, C = 1 for a
+// scalar field such as the finite-difference wave's). A node's row is its type's stencil,
 // addressed by lattice arithmetic: no neighbour list, no per-row storage. On a 3-D block the
 // whole table is a few hundred stencils whatever the lattice size.
 //
@@ -23,12 +24,12 @@
 
 namespace mfwave {
 
-template <int D>
+template <int D, int C = D>
 class LatticeStencils {
  public:
   LatticeStencils() = default;
   // The stencils of `compact`, assembled on the compact lattice of `types` (rows and columns
-  // node * D + component), addressed on the lattice of `types`. Throws InputError("lattice") when
+  // node * C + component), addressed on the lattice of `types`. Throws InputError("lattice") when
   // the matrix has the wrong size.
   LatticeStencils(const LatticeRowTypes<D>& types, const SparseMatrix& compact);
 
@@ -39,15 +40,15 @@ class LatticeStencils {
   Index begin(Index type) const { return start_[static_cast<std::size_t>(type)]; }
   Index end(Index type) const { return start_[static_cast<std::size_t>(type) + 1]; }
   const std::array<Index, D>& offset(Index entry) const { return offset_[static_cast<std::size_t>(entry)]; }
-  // The D x D block of an entry, row-major.
-  const Real* block(Index entry) const { return &block_[static_cast<std::size_t>(D * D * entry)]; }
-  // The sum of a type's blocks, row-major D x D (zero for an empty table): for a block-diagonal
+  // The C x C block of an entry, row-major.
+  const Real* block(Index entry) const { return &block_[static_cast<std::size_t>(C * C * entry)]; }
+  // The sum of a type's blocks, row-major C x C (zero for an empty table): for a block-diagonal
   // operator (mass, lumped dashpots), its block at that type.
   void typeSum(Index type, Real* out) const;
   // True when every entry sits at offset zero (a block-diagonal operator: mass, lumped dashpots).
   bool blockDiagonal() const;
   // The same stencils addressed on the lattice of `types` (same depth, any size).
-  LatticeStencils<D> on(const LatticeRowTypes<D>& types) const;
+  LatticeStencils on(const LatticeRowTypes<D>& types) const;
   // Bytes of the table.
   std::size_t bytes() const;
 
@@ -69,7 +70,7 @@ class LatticeStencils {
   // The stencil of a type, for stencilRun.
   StencilView view(Index type) const {
     const auto b = static_cast<std::size_t>(begin(type));
-    return {block_.data() + D * D * b, flat_.data() + b, dx_.data() + b, end(type) - begin(type),
+    return {block_.data() + C * C * b, flat_.data() + b, dx_.data() + b, end(type) - begin(type),
             table_ + static_cast<std::uint64_t>(type)};
   }
 
@@ -84,20 +85,20 @@ class LatticeStencils {
     forEachProduct(x, std::forward<Function>(f), [](Index) { return false; });
   }
 
-  // The row of node p (of type `type`) applied to x: out[c] = sum_e sum_d B_e[c][d] x[D (p + o_e) + d].
-  void rowProduct(Index type, Index p, const Real* x, Real* out) const { rowProductAt(type, x + D * p, flat_.data(), out); }
+  // The row of node p (of type `type`) applied to x: out[c] = sum_e sum_d B_e[c][d] x[C (p + o_e) + d].
+  void rowProduct(Index type, Index p, const Real* x, Real* out) const { rowProductAt(type, x + C * p, flat_.data(), out); }
   // The same sum with the node's values at xNode and the entries' node offsets `flat` (indexed by
   // entry): this table's, or those of another storage of the same lattice (a rank's local box,
   // lib/decomposition/LocalStencils), so that both sum every row in one order.
   void rowProductAt(Index type, const Real* xNode, const Index* flat, Real* out) const {
-    Real acc[D] = {};
+    Real acc[C] = {};
     for (Index e = start_[static_cast<std::size_t>(type)]; e < start_[static_cast<std::size_t>(type) + 1]; ++e) {
-      const Real* b = &block_[static_cast<std::size_t>(D * D * e)];
-      const Real* xe = xNode + D * flat[e];
-      for (int c = 0; c < D; ++c)
-        for (int d = 0; d < D; ++d) acc[c] += b[D * c + d] * xe[d];
+      const Real* b = &block_[static_cast<std::size_t>(C * C * e)];
+      const Real* xe = xNode + C * flat[e];
+      for (int c = 0; c < C; ++c)
+        for (int d = 0; d < C; ++d) acc[c] += b[C * c + d] * xe[d];
     }
-    for (int c = 0; c < D; ++c) out[c] = acc[c];
+    for (int c = 0; c < C; ++c) out[c] = acc[c];
   }
 
  private:
@@ -106,7 +107,7 @@ class LatticeStencils {
   LatticeRowTypes<D> types_;
   std::vector<Index> start_;                  // typeCount + 1
   std::vector<std::array<Index, D>> offset_;  // per entry
-  std::vector<Real> block_;                   // D * D per entry
+  std::vector<Real> block_;                   // C * C per entry
   std::vector<Index> flat_;                   // per entry: the offset as a node-index difference
   std::vector<Index> dx_;                     // per entry: the offset's x part
   std::uint64_t table_ = 0;                   // the first of its stencils' numbers (freshStencilNumbers)
@@ -143,14 +144,14 @@ void forEachLatticeNode(const LatticeRowTypes<D>& types, Function&& f) {
   });
 }
 
-template <int D>
+template <int D, int C>
 template <class Function, class Direct>
-void LatticeStencils<D>::forEachProduct(const Real* x, Function&& f, Direct&& direct) const {
+void LatticeStencils<D, C>::forEachProduct(const Real* x, Function&& f, Direct&& direct) const {
   const Index nx = types_.nodes()[0], depth = types_.depth();
   const bool runs = types_.compactNodes()[0] < nx;  // else every x position is its own type
   const std::uint64_t pass = nextStencilProduct();
   forEachLatticeLine<D>(types_, [&](Index first, Index base) {
-    Real product[D];
+    Real product[C];
     auto single = [&](Index i) {
       const Index type = base + types_.compactIndex(0, i);
       rowProduct(type, first + i, x, product);
@@ -167,8 +168,8 @@ void LatticeStencils<D>::forEachProduct(const Real* x, Function&& f, Direct&& di
     } else {
       thread_local StencilRunCache cache;
       thread_local std::vector<Real> run;
-      if (run.size() < static_cast<std::size_t>(D * length)) run.resize(static_cast<std::size_t>(D * length));
-      stencilRun<D>(view(type), x, first + depth, length, run.data(), cache, pass);
+      if (run.size() < static_cast<std::size_t>(C * length)) run.resize(static_cast<std::size_t>(C * length));
+      stencilRun<C>(view(type), x, first + depth, length, run.data(), cache, pass);
       for (Index l = 0; l < length; ++l) f(first + depth + l, type, run.data() + l, length);
     }
     for (Index i = nx - depth; i < nx; ++i) single(i);
@@ -190,5 +191,7 @@ Real sumOverLatticeNodes(const LatticeRowTypes<D>& types, Function&& g) {
 extern template class LatticeStencils<1>;
 extern template class LatticeStencils<2>;
 extern template class LatticeStencils<3>;
+extern template class LatticeStencils<2, 1>;  // scalar fields
+extern template class LatticeStencils<3, 1>;
 
 }  // namespace mfwave

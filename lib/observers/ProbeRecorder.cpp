@@ -3,9 +3,8 @@
 #include "core/Error.hpp"
 
 namespace mfwave {
-namespace {
 
-std::vector<std::string> columnNames(const std::vector<Probe>& probes, int components, const std::string& timeUnit,
+std::vector<std::string> probeColumnNames(const std::vector<Probe>& probes, int components, const std::string& timeUnit,
                                      const std::string& lengthUnit) {
   static const char* axis = "xyz";
   std::vector<std::string> names;
@@ -24,13 +23,11 @@ std::vector<std::string> columnNames(const std::vector<Probe>& probes, int compo
   return names;
 }
 
-}  // namespace
-
 ProbeRecorder::ProbeRecorder(std::vector<Probe> probes, int components, std::string timeUnit,
                              std::string lengthUnit)
     : probes_(std::move(probes)),
       components_(components),
-      series_("time [" + timeUnit + "]", columnNames(probes_, components, timeUnit, lengthUnit)),
+      series_("time [" + timeUnit + "]", probeColumnNames(probes_, components, timeUnit, lengthUnit)),
       row_(probes_.size()) {
   if (components < 1) throw InputError("components", "must be at least 1");
 }

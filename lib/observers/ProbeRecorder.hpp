@@ -18,6 +18,12 @@ struct Probe {
   ProbeQuantity quantity = ProbeQuantity::Velocity;
 };
 
+// The recorder's column names: "<name> v_z [m/s]", "<name> u [m]" for a scalar state. Throws
+// InputError("probe[i].component") for a component outside [0, components), ("probe[i].particle")
+// for a negative particle.
+std::vector<std::string> probeColumnNames(const std::vector<Probe>& probes, int components, const std::string& timeUnit,
+                                          const std::string& lengthUnit);
+
 class ProbeRecorder : public Observer {
  public:
   // `components`: unknowns per particle in the state (dof = particle * components + component).

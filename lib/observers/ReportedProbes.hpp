@@ -18,8 +18,13 @@ class ReportedProbes : public Observer {
  public:
   explicit ReportedProbes(std::vector<Probe> probes);
 
-  // The final state too (beginSample() skips it when the last observation was the same step).
-  void end(const StateView& s) override { observe(s); }
+  // The final state too (beginSample() skips it when the last observation was the same step),
+  // unless switched off: a recorder standing in for a ProbeRecorder, which samples only on its
+  // interval, keeps its rows.
+  void end(const StateView& s) override {
+    if (sampleAtEnd_) observe(s);
+  }
+  void sampleAtEnd(bool on) { sampleAtEnd_ = on; }
 
   const std::vector<Probe>& probes() const { return probes_; }
   const std::vector<Real>& times() const { return times_; }
@@ -44,6 +49,7 @@ class ReportedProbes : public Observer {
   std::vector<Probe> probes_;
   std::vector<Real> times_;
   std::vector<std::vector<Real>> raw_, reported_;
+  bool sampleAtEnd_ = true;
 };
 
 // The state's own value at each probe (component p.component of the probe's node or particle, D

@@ -14,10 +14,10 @@ namespace {
 
 // Ding-Long-Wu eq. (32) on one rank's nodes: the per-type inverse blocks of M + dt/2 C, applied by
 // DistributedLatticeSystem::solve (the serial LatticeCentredDamping without prescribed dofs).
-template <int D>
+template <int D, int C>
 class DistributedCentredDamping : public CentredDampingSolve {
  public:
-  DistributedCentredDamping(const DistributedLatticeSystem<D>& system, std::vector<Real> inverse)
+  DistributedCentredDamping(const DistributedLatticeSystem<D, C>& system, std::vector<Real> inverse)
       : system_(system), inverse_(std::move(inverse)) {}
 
   void acceleration(Real t, const Vector& u, const Vector& vHalf, const Vector&, Vector& a) override {
@@ -26,7 +26,7 @@ class DistributedCentredDamping : public CentredDampingSolve {
   }
 
  private:
-  const DistributedLatticeSystem<D>& system_;
+  const DistributedLatticeSystem<D, C>& system_;
   std::vector<Real> inverse_;
 };
 
@@ -36,15 +36,15 @@ class DistributedCentredDamping : public CentredDampingSolve {
 // rank's share of the solution is the serial one bit for bit. The block is replicated: a surface of
 // s^2 nodes costs every rank its factorisation and an all-reduce of 3 s^2 values per step, fine to
 // about 10^7 particles (docs/scaling.md).
-template <int D>
+template <int D, int C>
 class DistributedCoupledCentredDamping : public CentredDampingSolve {
  public:
-  DistributedCoupledCentredDamping(const DistributedLatticeSystem<D>& system, const LatticeSecondOrderSystem<D>& serial,
+  DistributedCoupledCentredDamping(const DistributedLatticeSystem<D, C>& system, const LatticeSecondOrderSystem<D, C>& serial,
                                    Real dt, MPI_Comm communicator)
       : system_(system), serial_(serial), inverseMass_(serial.inverseBlocks(0)), surface_(serial, dt, {}),
         communicator_(communicator) {
     for (Index node : surface_.nodes()) local_.push_back(system.localNode(node));
-    rhs_.resize(D * static_cast<Index>(local_.size()));
+    rhs_.resize(C * static_cast<Index>(local_.size()));
     solution_.resize(rhs_.size());
   }
 
@@ -52,22 +52,22 @@ class DistributedCoupledCentredDamping : public CentredDampingSolve {
     a.resize(system_.size());
     system_.solve(inverseMass_, t, u.data(), vHalf.data(), a.data());
     for (std::size_t k = 0; k < local_.size(); ++k) {
-      Real* rhs = rhs_.data() + D * static_cast<Index>(k);
-      if (local_[k] >= 0) surface_.massTimes(serial_, k, a.data() + D * local_[k], rhs);
-      else std::fill(rhs, rhs + D, -0.0);
+      Real* rhs = rhs_.data() + C * static_cast<Index>(k);
+      if (local_[k] >= 0) surface_.massTimes(serial_, k, a.data() + C * local_[k], rhs);
+      else std::fill(rhs, rhs + C, -0.0);
     }
     MPI_Allreduce(MPI_IN_PLACE, rhs_.data(), static_cast<int>(rhs_.size()), MPI_DOUBLE, MPI_SUM, communicator_);
     surface_.solve(rhs_, solution_);
     for (std::size_t k = 0; k < local_.size(); ++k)
       if (local_[k] >= 0)
-        for (int c = 0; c < D; ++c) a[D * local_[k] + c] = solution_[D * static_cast<Index>(k) + c];
+        for (int c = 0; c < C; ++c) a[C * local_[k] + c] = solution_[C * static_cast<Index>(k) + c];
   }
 
  private:
-  const DistributedLatticeSystem<D>& system_;
-  const LatticeSecondOrderSystem<D>& serial_;
+  const DistributedLatticeSystem<D, C>& system_;
+  const LatticeSecondOrderSystem<D, C>& serial_;
   std::vector<Real> inverseMass_;
-  DashpotSurfaceSolve<D> surface_;
+  DashpotSurfaceSolve<D, C> surface_;
   MPI_Comm communicator_;
   std::vector<Index> local_;  // per block node: its place in this rank's state, or -1
   Vector rhs_, solution_;
@@ -75,8 +75,8 @@ class DistributedCoupledCentredDamping : public CentredDampingSolve {
 
 }  // namespace
 
-template <int D>
-DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSystem<D>& serial,
+template <int D, int C>
+DistributedLatticeSystem<D, C>::DistributedLatticeSystem(const LatticeSecondOrderSystem<D, C>& serial,
                                                       const BlockDecomposition<D>& decomposition, int rank,
                                                       MPI_Comm communicator)
     : serial_(serial), decomposition_(decomposition), rank_(rank), communicator_(communicator) {
@@ -86,11 +86,11 @@ DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSy
   if (decomposition.grid()[0] != 1)
     throw InputError("ranks", "the decomposition splits x into " + std::to_string(decomposition.grid()[0]) +
                                   " blocks; the distributed system needs whole lattice lines per rank");
-  stiffness_ = std::make_unique<RankStencilProduct<D>>(serial.stiffness(), decomposition, rank, communicator);
+  stiffness_ = std::make_unique<RankStencilProduct<D, C>>(serial.stiffness(), decomposition, rank, communicator);
   if (serial.hasDamping() && !serial.damping().blockDiagonal()) {
     // C v reads the neighbours' velocities: its own halo, every row by itself as the serial
     // rowProduct computes it.
-    damping_ = std::make_unique<RankStencilProduct<D>>(serial.damping(), decomposition, rank, communicator);
+    damping_ = std::make_unique<RankStencilProduct<D, C>>(serial.damping(), decomposition, rank, communicator);
     allRowByRow_.assign(static_cast<std::size_t>(serial.damping().typeCount()), 1);
     cv_.resize(static_cast<std::size_t>(size()));
   }
@@ -105,9 +105,9 @@ DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSy
       SparseLoad mine;
       mine.history = load.history;
       for (std::size_t k = 0; k < load.dofs.size(); ++k) {
-        const std::array<Index, D> node = types.node(load.dofs[k] / D);
+        const std::array<Index, D> node = types.node(load.dofs[k] / C);
         if (!owned().contains(node)) continue;
-        mine.dofs.push_back(D * owned().localIndex(node) + load.dofs[k] % D);
+        mine.dofs.push_back(C * owned().localIndex(node) + load.dofs[k] % C);
         mine.values.push_back(load.values[k]);
       }
       loads_.push_back(std::move(mine));
@@ -122,56 +122,56 @@ DistributedLatticeSystem<D>::DistributedLatticeSystem(const LatticeSecondOrderSy
   enableArkodeMpiVectors();
 }
 
-template <int D>
-void DistributedLatticeSystem<D>::solve(const std::vector<Real>& inverseBlocks, Real t, const Real* u, const Real* v,
+template <int D, int C>
+void DistributedLatticeSystem<D, C>::solve(const std::vector<Real>& inverseBlocks, Real t, const Real* u, const Real* v,
                                         Real* a) const {
   std::fill(a, a + size(), 0.0);
   addSparseLoads(loads_, t, a);
   const bool damped = serial_.hasDamping() && v != nullptr;
-  const LatticeStencils<D>& damping = serial_.damping();
+  const LatticeStencils<D, C>& damping = serial_.damping();
   if (damped && damping_) damping_->multiply(v, cv_.data(), &allRowByRow_);
   // LatticeSecondOrderSystem::fusedSolve, fused with the product as it is: r = f - K u - C v,
   // a = B r; the dashpot types row by row.
   stiffness_->forEachProduct(u, [&](Index k, Index type, const Real* ku, Index stride) {
-    Real r[D];
-    for (int c = 0; c < D; ++c) r[c] = a[D * k + c] - ku[c * stride];
+    Real r[C];
+    for (int c = 0; c < C; ++c) r[c] = a[C * k + c] - ku[c * stride];
     if (damped && damping.begin(type) != damping.end(type)) {
-      Real own[D];
+      Real own[C];
       const Real* cv = own;
-      if (damping_) cv = cv_.data() + D * k;
-      else damping.rowProductAt(type, v + D * k, nodeFlat_.data(), own);
-      for (int c = 0; c < D; ++c) r[c] -= cv[c];
+      if (damping_) cv = cv_.data() + C * k;
+      else damping.rowProductAt(type, v + C * k, nodeFlat_.data(), own);
+      for (int c = 0; c < C; ++c) r[c] -= cv[c];
     }
-    const Real* b = &inverseBlocks[static_cast<std::size_t>(D * D * type)];
-    for (int c = 0; c < D; ++c) {
+    const Real* b = &inverseBlocks[static_cast<std::size_t>(C * C * type)];
+    for (int c = 0; c < C; ++c) {
       Real s = 0;
-      for (int d = 0; d < D; ++d) s += b[D * c + d] * r[d];
-      a[D * k + c] = s;
+      for (int d = 0; d < C; ++d) s += b[C * c + d] * r[d];
+      a[C * k + c] = s;
     }
   }, [&](Index type) { return damped && dashpotTypes_[static_cast<std::size_t>(type)]; });
 }
 
-template <int D>
-void DistributedLatticeSystem<D>::acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v,
+template <int D, int C>
+void DistributedLatticeSystem<D, C>::acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v,
                                                Eigen::Ref<Vector> a) {
   solve(inverseMass_, t, u.data(), v.size() == size() ? v.data() : nullptr, a.data());
 }
 
-template <int D>
-void DistributedLatticeSystem<D>::force(Real t, Vector& f) const {
+template <int D, int C>
+void DistributedLatticeSystem<D, C>::force(Real t, Vector& f) const {
   f.setZero(size());
   addSparseLoads(loads_, t, f.data());
 }
 
-template <int D>
-void DistributedLatticeSystem<D>::applyStiffness(const Vector& x, Vector& y) const {
+template <int D, int C>
+void DistributedLatticeSystem<D, C>::applyStiffness(const Vector& x, Vector& y) const {
   y.resize(size());
   stiffness_->multiply(x.data(), y.data());
 }
 
-template <int D>
+template <int D, int C>
 template <class Function>
-void DistributedLatticeSystem<D>::forEachOwnedNode(Function&& f) const {
+void DistributedLatticeSystem<D, C>::forEachOwnedNode(Function&& f) const {
   // Line by line (an owned line is a whole lattice line: x is not split), its row types from the
   // line's base type as forEachLatticeLine gives them; threads share lines in a fixed partition.
   const Box<D>& own = owned();
@@ -187,9 +187,9 @@ void DistributedLatticeSystem<D>::forEachOwnedNode(Function&& f) const {
   }
 }
 
-template <int D>
+template <int D, int C>
 template <class Function>
-Real DistributedLatticeSystem<D>::sumOverOwnedNodes(Function&& g) const {
+Real DistributedLatticeSystem<D, C>::sumOverOwnedNodes(Function&& g) const {
   // Line by line along x in node order, as sumOverLatticeNodes adds them; the lines over the ranks
   // in the lattice's order.
   const Index nx = owned().extent(0);
@@ -198,105 +198,93 @@ Real DistributedLatticeSystem<D>::sumOverOwnedNodes(Function&& g) const {
   return sumInLatticeOrder(decomposition_, rank_, lineSums, communicator_);
 }
 
-template <int D>
-Real DistributedLatticeSystem<D>::kineticEnergy(const Vector& v) const {
+template <int D, int C>
+Real DistributedLatticeSystem<D, C>::kineticEnergy(const Vector& v) const {
   return 0.5 * sumOverOwnedNodes([&](Index k, Index type) {
-           Real mv[D];
-           serial_.mass().rowProductAt(type, v.data() + D * k, nodeFlat_.data(), mv);
+           Real mv[C];
+           serial_.mass().rowProductAt(type, v.data() + C * k, nodeFlat_.data(), mv);
            Real s = 0;
-           for (int c = 0; c < D; ++c) s += v[D * k + c] * mv[c];
+           for (int c = 0; c < C; ++c) s += v[C * k + c] * mv[c];
            return s;
          });
 }
 
-template <int D>
-Real DistributedLatticeSystem<D>::strainEnergy(const Vector& u) const {
+template <int D, int C>
+Real DistributedLatticeSystem<D, C>::strainEnergy(const Vector& u) const {
   // As LatticeSecondOrderSystem::strainEnergy: u . K u per node from the products, per line.
   const Index nx = owned().extent(0);
   std::vector<Real> lineSums(static_cast<std::size_t>(owned().lineCount()), 0.0);
   stiffness_->forEachProduct(u.data(), [&](Index k, Index, const Real* ku, Index stride) {
     Real s = 0;
-    for (int c = 0; c < D; ++c) s += u[D * k + c] * ku[c * stride];
+    for (int c = 0; c < C; ++c) s += u[C * k + c] * ku[c * stride];
     lineSums[static_cast<std::size_t>(k / nx)] += s;
   }, [](Index) { return false; });
   return 0.5 * sumInLatticeOrder(decomposition_, rank_, lineSums, communicator_);
 }
 
-template <int D>
-Real DistributedLatticeSystem<D>::dampingPower(const Vector& v) const {
+template <int D, int C>
+Real DistributedLatticeSystem<D, C>::dampingPower(const Vector& v) const {
   if (!serial_.hasDamping()) return 0;
   // The serial sum adds only the nodes with dashpots; the others add nothing here either (a line
   // without dashpots sums to +0 in both).
-  const LatticeStencils<D>& damping = serial_.damping();
+  const LatticeStencils<D, C>& damping = serial_.damping();
   if (damping_) damping_->multiply(v.data(), cv_.data(), &allRowByRow_);
   const Index nx = owned().extent(0);
   std::vector<Real> lineSums(static_cast<std::size_t>(owned().lineCount()), 0.0);
   forEachOwnedNode([&](Index k, Index type) {
     if (damping.begin(type) == damping.end(type)) return;
-    Real own[D];
+    Real own[C];
     const Real* cv = own;
-    if (damping_) cv = cv_.data() + D * k;
-    else damping.rowProductAt(type, v.data() + D * k, nodeFlat_.data(), own);
+    if (damping_) cv = cv_.data() + C * k;
+    else damping.rowProductAt(type, v.data() + C * k, nodeFlat_.data(), own);
     Real& sum = lineSums[static_cast<std::size_t>(k / nx)];
-    for (int c = 0; c < D; ++c) sum += v[D * k + c] * cv[c];
+    for (int c = 0; c < C; ++c) sum += v[C * k + c] * cv[c];
   });
   return sumInLatticeOrder(decomposition_, rank_, lineSums, communicator_);
 }
 
-template <int D>
-Real DistributedLatticeSystem<D>::dot(const Vector& a, const Vector& b) const {
+template <int D, int C>
+Real DistributedLatticeSystem<D, C>::dot(const Vector& a, const Vector& b) const {
   return sumOverOwnedNodes([&](Index k, Index) {
     Real s = 0;
-    for (int c = 0; c < D; ++c) s += a[D * k + c] * b[D * k + c];
+    for (int c = 0; c < C; ++c) s += a[C * k + c] * b[C * k + c];
     return s;
   });
 }
 
-template <int D>
-Vector DistributedLatticeSystem<D>::lumpedMass() const {
-  const Vector perType = [&] {  // the serial diagonal per type (throws InputError("mass") as it does)
-    Vector diagonal(D * serial_.mass().typeCount());
-    for (Index type = 0; type < serial_.mass().typeCount(); ++type) {
-      Real b[D * D];
-      serial_.mass().typeSum(type, b);
-      for (int c = 0; c < D; ++c) {
-        for (int d = 0; d < D; ++d)
-          if (c != d && b[D * c + d] != 0) throw InputError("mass", "needs a diagonal (lumped) mass matrix");
-        diagonal[D * type + c] = b[D * c + c];
-      }
-    }
-    return diagonal;
-  }();
+template <int D, int C>
+Vector DistributedLatticeSystem<D, C>::lumpedMass() const {
+  const std::vector<Real> perType = serial_.lumpedMassPerType();
   Vector m(size());
   forEachOwnedNode([&](Index k, Index type) {
-    for (int c = 0; c < D; ++c) m[D * k + c] = perType[D * type + c];
+    for (int c = 0; c < C; ++c) m[C * k + c] = perType[static_cast<std::size_t>(C * type + c)];
   });
   return m;
 }
 
-template <int D>
-std::unique_ptr<CentredDampingSolve> DistributedLatticeSystem<D>::centredDamping(
+template <int D, int C>
+std::unique_ptr<CentredDampingSolve> DistributedLatticeSystem<D, C>::centredDamping(
     Real dt, const std::vector<Index>& prescribedDofs) const {
   if (!prescribedDofs.empty())
     throw InputError("prescribed_displacement",
                      "the distributed lattice system does not take prescribed displacements yet (docs/scaling.md)");
-  if (damping_) return std::make_unique<DistributedCoupledCentredDamping<D>>(*this, serial_, dt, communicator_);
-  return std::make_unique<DistributedCentredDamping<D>>(*this, serial_.inverseBlocks(0.5 * dt));
+  if (damping_) return std::make_unique<DistributedCoupledCentredDamping<D, C>>(*this, serial_, dt, communicator_);
+  return std::make_unique<DistributedCentredDamping<D, C>>(*this, serial_.inverseBlocks(0.5 * dt));
 }
 
-template <int D>
-Index DistributedLatticeSystem<D>::localNode(Index latticeNode) const {
+template <int D, int C>
+Index DistributedLatticeSystem<D, C>::localNode(Index latticeNode) const {
   const std::array<Index, D> node = serial_.types().node(latticeNode);
   return owned().contains(node) ? owned().localIndex(node) : -1;
 }
 
-template <int D>
-Vector DistributedLatticeSystem<D>::restrict(const Vector& whole) const {
+template <int D, int C>
+Vector DistributedLatticeSystem<D, C>::restrict(const Vector& whole) const {
   Box<D> all;
   all.hi = serial_.types().nodes();
   Vector part(size());
   owned().forEachNode([&](const std::array<Index, D>& node) {
-    for (int c = 0; c < D; ++c) part[D * owned().localIndex(node) + c] = whole[D * all.localIndex(node) + c];
+    for (int c = 0; c < C; ++c) part[C * owned().localIndex(node) + c] = whole[C * all.localIndex(node) + c];
   });
   return part;
 }
@@ -304,5 +292,7 @@ Vector DistributedLatticeSystem<D>::restrict(const Vector& whole) const {
 template class DistributedLatticeSystem<1>;
 template class DistributedLatticeSystem<2>;
 template class DistributedLatticeSystem<3>;
+template class DistributedLatticeSystem<2, 1>;
+template class DistributedLatticeSystem<3, 1>;
 
 }  // namespace mfwave

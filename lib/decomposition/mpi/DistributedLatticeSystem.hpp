@@ -27,18 +27,19 @@
 
 namespace mfwave {
 
-template <int D>
+// C unknowns per node, as the serial system's (LatticeSecondOrderSystem<D, C>).
+template <int D, int C = D>
 class DistributedLatticeSystem : public LinearOperatorSystem {
  public:
   // `serial` and `decomposition` must outlive this object; `decomposition` must keep x whole (the
   // sums' order). Throws InputError("loads")
   // for a force given as a function rather than as sparse loads, InputError("ranks") for a
   // decomposition that splits x.
-  DistributedLatticeSystem(const LatticeSecondOrderSystem<D>& serial, const BlockDecomposition<D>& decomposition,
+  DistributedLatticeSystem(const LatticeSecondOrderSystem<D, C>& serial, const BlockDecomposition<D>& decomposition,
                            int rank, MPI_Comm communicator);
 
-  // D values per owned node, in the owned box's order.
-  Index size() const override { return D * owned().count(); }
+  // C values per owned node, in the owned box's order.
+  Index size() const override { return C * owned().count(); }
   bool hasDamping() const override { return serial_.hasDamping(); }
   // This rank's communicator and the sum of the ranks' sizes: the ARKODE integrators then run on
   // SUNDIALS' MPI vectors (integrators/ArkodeMpiVectors.hpp, which the constructor enables), so
@@ -56,7 +57,7 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   Real dampingPower(const Vector& v) const override;
   Real dot(const Vector& a, const Vector& b) const override;
   // The owned part of the serial figures. stiffnessAbsoluteRowSums builds the whole lattice's
-  // vector first: a set-up cost of D N values per rank (the stable step is estimated on the serial
+  // vector first: a set-up cost of C N values per rank (the stable step is estimated on the serial
   // system anyway, docs/scaling.md).
   Vector lumpedMass() const override;
   Vector stiffnessAbsoluteRowSums() const override { return restrict(serial_.stiffnessAbsoluteRowSums()); }
@@ -67,7 +68,7 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   const Box<D>& owned() const { return stiffness_->owned(); }
   // The halo exchange of each stiffness product (its plan, bytes and messages).
   const HaloExchange<D>& exchange() const { return stiffness_->exchange(); }
-  // The owned part of a whole-lattice vector (D values per node).
+  // The owned part of a whole-lattice vector (C values per node).
   Vector restrict(const Vector& whole) const;
   // A lattice node's place in this rank's state, or -1 when another rank owns it.
   Index localNode(Index latticeNode) const;
@@ -85,13 +86,13 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   template <class Function>
   Real sumOverOwnedNodes(Function&& g) const;
 
-  const LatticeSecondOrderSystem<D>& serial_;
+  const LatticeSecondOrderSystem<D, C>& serial_;
   const BlockDecomposition<D>& decomposition_;
   int rank_;
   MPI_Comm communicator_;
   Index globalSize_ = 0;  // sum over the ranks of size()
-  std::unique_ptr<RankStencilProduct<D>> stiffness_;
-  std::unique_ptr<RankStencilProduct<D>> damping_;  // dashpots that couple nodes only
+  std::unique_ptr<RankStencilProduct<D, C>> stiffness_;
+  std::unique_ptr<RankStencilProduct<D, C>> damping_;  // dashpots that couple nodes only
   std::vector<char> allRowByRow_;                   // damping_'s rows, all row by row
   mutable std::vector<Real> cv_;                    // C v of the owned rows (damping_)
   std::vector<Real> inverseMass_;  // per type (LatticeSecondOrderSystem::inverseBlocks(0))
@@ -103,5 +104,7 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
 extern template class DistributedLatticeSystem<1>;
 extern template class DistributedLatticeSystem<2>;
 extern template class DistributedLatticeSystem<3>;
+extern template class DistributedLatticeSystem<2, 1>;
+extern template class DistributedLatticeSystem<3, 1>;
 
 }  // namespace mfwave

@@ -2,8 +2,8 @@
 
 namespace mfwave {
 
-template <int D>
-LatticeShare<D>::LatticeShare(const LatticeSecondOrderSystem<D>& serial, MPI_Comm communicator) : serial_(serial) {
+template <int D, int C>
+LatticeShare<D, C>::LatticeShare(const LatticeSecondOrderSystem<D, C>& serial, MPI_Comm communicator) : serial_(serial) {
   MPI_Comm_rank(communicator, &rank_);
   MPI_Comm_size(communicator, &ranks_);
   // A row costs about its stencil's entries, plus its dashpots'.
@@ -16,11 +16,11 @@ LatticeShare<D>::LatticeShare(const LatticeSecondOrderSystem<D>& serial, MPI_Com
   std::array<bool, D> splittable = BlockDecomposition<D>::allAxes();
   splittable[0] = false;  // whole lines along x: the sums keep the serial order (LineSums.hpp)
   decomposition_ = std::make_unique<BlockDecomposition<D>>(serial.types(), ranks_, cost, splittable);
-  system_ = std::make_unique<DistributedLatticeSystem<D>>(serial, *decomposition_, rank_, communicator);
+  system_ = std::make_unique<DistributedLatticeSystem<D, C>>(serial, *decomposition_, rank_, communicator);
 }
 
-template <int D>
-std::vector<Index> LatticeShare<D>::ownedNodes() const {
+template <int D, int C>
+std::vector<Index> LatticeShare<D, C>::ownedNodes() const {
   Box<D> all;
   all.hi = serial_.types().nodes();
   std::vector<Index> nodes;
@@ -32,5 +32,7 @@ std::vector<Index> LatticeShare<D>::ownedNodes() const {
 template class LatticeShare<1>;
 template class LatticeShare<2>;
 template class LatticeShare<3>;
+template class LatticeShare<2, 1>;
+template class LatticeShare<3, 1>;
 
 }  // namespace mfwave

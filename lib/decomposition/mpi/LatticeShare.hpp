@@ -15,15 +15,16 @@
 
 namespace mfwave {
 
-template <int D>
+// C unknowns per node, as the serial system's.
+template <int D, int C = D>
 class LatticeShare {
  public:
   // `serial` must outlive the share. Throws as DistributedLatticeSystem and BlockDecomposition do
   // (InputError "ranks" when the lattice has too few nodes across for the rank count).
-  LatticeShare(const LatticeSecondOrderSystem<D>& serial, MPI_Comm communicator);
+  LatticeShare(const LatticeSecondOrderSystem<D, C>& serial, MPI_Comm communicator);
 
-  DistributedLatticeSystem<D>& system() { return *system_; }
-  const DistributedLatticeSystem<D>& system() const { return *system_; }
+  DistributedLatticeSystem<D, C>& system() { return *system_; }
+  const DistributedLatticeSystem<D, C>& system() const { return *system_; }
   const BlockDecomposition<D>& decomposition() const { return *decomposition_; }
   int rank() const { return rank_; }
   int ranks() const { return ranks_; }
@@ -33,14 +34,16 @@ class LatticeShare {
   Index localNode(Index latticeNode) const { return system_->localNode(latticeNode); }
 
  private:
-  const LatticeSecondOrderSystem<D>& serial_;
+  const LatticeSecondOrderSystem<D, C>& serial_;
   int rank_ = 0, ranks_ = 1;
   std::unique_ptr<BlockDecomposition<D>> decomposition_;
-  std::unique_ptr<DistributedLatticeSystem<D>> system_;
+  std::unique_ptr<DistributedLatticeSystem<D, C>> system_;
 };
 
 extern template class LatticeShare<1>;
 extern template class LatticeShare<2>;
 extern template class LatticeShare<3>;
+extern template class LatticeShare<2, 1>;
+extern template class LatticeShare<3, 1>;
 
 }  // namespace mfwave

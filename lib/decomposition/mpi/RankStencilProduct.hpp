@@ -17,14 +17,15 @@
 
 namespace mfwave {
 
-template <int D>
+// C components per node, as the stencils' (LatticeStencils<D, C>).
+template <int D, int C = D>
 class RankStencilProduct {
  public:
   // `stencils` and `decomposition` must outlive this object.
-  RankStencilProduct(const LatticeStencils<D>& stencils, const BlockDecomposition<D>& decomposition, int rank,
+  RankStencilProduct(const LatticeStencils<D, C>& stencils, const BlockDecomposition<D>& decomposition, int rank,
                      MPI_Comm communicator);
 
-  // y = the owned rows applied to x, both D values per owned node in the owned box's order (y must
+  // y = the owned rows applied to x, both C values per owned node in the owned box's order (y must
   // not alias x). Collective: every rank calls it. `direct` as LocalStencils::multiply's.
   void multiply(const Real* x, Real* y, const std::vector<char>* direct = nullptr);
   // The products one by one (LocalStencils::forEachProduct) after the same exchange, so a caller
@@ -43,12 +44,14 @@ class RankStencilProduct {
   void exchange(const Real* x);
 
   std::unique_ptr<HaloExchange<D>> exchange_;
-  std::unique_ptr<LocalStencils<D>> rows_;
+  std::unique_ptr<LocalStencils<D, C>> rows_;
   std::vector<Real> local_;  // the local box's values
 };
 
 extern template class RankStencilProduct<1>;
 extern template class RankStencilProduct<2>;
 extern template class RankStencilProduct<3>;
+extern template class RankStencilProduct<2, 1>;
+extern template class RankStencilProduct<3, 1>;
 
 }  // namespace mfwave

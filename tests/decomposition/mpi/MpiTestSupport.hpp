@@ -39,8 +39,8 @@ inline Real maxOverRanks(Real value) {
 }
 
 // Owned entries of `got` that differ from the owned part of the serial `expected`, over all ranks.
-template <int D>
-long differencesOverRanks(const DistributedLatticeSystem<D>& system, const Vector& got, const Vector& expected) {
+template <int D, int C>
+long differencesOverRanks(const DistributedLatticeSystem<D, C>& system, const Vector& got, const Vector& expected) {
   const Vector mine = system.restrict(expected);
   long different = 0;
   for (Index i = 0; i < mine.size(); ++i)
@@ -49,8 +49,8 @@ long differencesOverRanks(const DistributedLatticeSystem<D>& system, const Vecto
 }
 
 // max |got - expected| over the owned entries of all ranks, relative to max |expected|.
-template <int D>
-Real relativeDifferenceOverRanks(const DistributedLatticeSystem<D>& system, const Vector& got, const Vector& expected) {
+template <int D, int C>
+Real relativeDifferenceOverRanks(const DistributedLatticeSystem<D, C>& system, const Vector& got, const Vector& expected) {
   const Vector mine = system.restrict(expected);
   return maxOverRanks((got - mine).cwiseAbs().maxCoeff()) / expected.cwiseAbs().maxCoeff();
 }
