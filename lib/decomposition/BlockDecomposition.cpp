@@ -139,6 +139,11 @@ BlockDecomposition<D>::BlockDecomposition(const LatticeRowTypes<D>& types, int r
 }
 
 template <int D>
+bool BlockDecomposition<D>::fits(const std::array<Index, D>& nodes, int ranks, const std::array<bool, D>& splittable) {
+  return ranks >= 1 && smallestInterfaceGrid<D>(nodes, ranks, splittable)[0] != 0;
+}
+
+template <int D>
 std::array<int, D> BlockDecomposition<D>::gridPosition(int rank) const {
   std::array<int, D> position{};
   for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s) {

@@ -30,7 +30,8 @@ class BlockDecomposition {
   // splittable axes, InputError("cost") for a cost list of the wrong length or a negative or
   // non-finite cost. `typeCost` empty: every node costs 1. `splittable[a]` false keeps axis a whole:
   // with x whole every rank owns whole lattice lines, whose sums (energies, norms) are then the
-  // serial ones, combined in the serial order by sumInLatticeOrder (mpi/LineSums.hpp).
+  // serial ones, combined in the serial order by sumInLatticeOrder (mpi/LineSums.hpp); with x split
+  // the pieces of a line chain their running sums there instead.
   BlockDecomposition(const LatticeRowTypes<D>& types, int ranks, const std::vector<Real>& typeCost = {},
                      const std::array<bool, D>& splittable = allAxes());
 
@@ -39,6 +40,10 @@ class BlockDecomposition {
     all.fill(true);
     return all;
   }
+  // Whether `ranks` blocks of at least one node each fit a lattice of `nodes` cutting only the
+  // `splittable` axes (else the constructor throws InputError("ranks")): a caller that prefers to
+  // keep an axis whole asks first.
+  static bool fits(const std::array<Index, D>& nodes, int ranks, const std::array<bool, D>& splittable);
 
   int ranks() const { return ranks_; }
   const std::array<Index, D>& nodes() const { return types_.nodes(); }

@@ -64,6 +64,19 @@ TEST(BlockDecompositionTest, AxesKeptWholeAreNotCut) {
   EXPECT_THROW(BlockDecomposition<2>(LatticeRowTypes<2>({50, 1}, 1), 2, {}, {false, true}), InputError);
 }
 
+TEST(BlockDecompositionTest, FitsSaysWhetherTheAxesThatMayBeCutTakeTheRanks) {
+  // y alone takes 4 ranks on 100 x 5, not 6; x and y together take 6 (and 500, one node each).
+  EXPECT_TRUE(BlockDecomposition<2>::fits({100, 5}, 4, {false, true}));
+  EXPECT_FALSE(BlockDecomposition<2>::fits({100, 5}, 6, {false, true}));
+  EXPECT_TRUE(BlockDecomposition<2>::fits({100, 5}, 6, {true, true}));
+  EXPECT_TRUE(BlockDecomposition<2>::fits({100, 5}, 500, {true, true}));
+  EXPECT_FALSE(BlockDecomposition<2>::fits({100, 5}, 501, {true, true}));
+  // 1-D with x whole takes one rank only; fits never throws.
+  EXPECT_TRUE(BlockDecomposition<1>::fits({41}, 1, {false}));
+  EXPECT_FALSE(BlockDecomposition<1>::fits({41}, 2, {false}));
+  EXPECT_FALSE(BlockDecomposition<1>::fits({41}, 0, {true}));
+}
+
 TEST(BlockDecompositionTest, EqualCostsGiveBlocksWithinOneNodePlaneOfEachOther) {
   const BlockDecomposition<2> d(LatticeRowTypes<2>({1000, 10}, 3), 3);
   ASSERT_EQ(d.grid(), (std::array<int, 2>{3, 1}));

@@ -83,9 +83,6 @@ DistributedLatticeSystem<D, C>::DistributedLatticeSystem(const LatticeSecondOrde
   if (serial.hasForce() && !serial.sparseLoads())
     throw InputError("loads", "the distributed lattice system needs its loads as nonzero entries (SparseLoads), not "
                               "as a function of the whole lattice's vector");
-  if (decomposition.grid()[0] != 1)
-    throw InputError("ranks", "the decomposition splits x into " + std::to_string(decomposition.grid()[0]) +
-                                  " blocks; the distributed system needs whole lattice lines per rank");
   stiffness_ = std::make_unique<RankStencilProduct<D, C>>(serial.stiffness(), decomposition, rank, communicator);
   if (serial.hasDamping() && !serial.damping().blockDiagonal()) {
     // C v reads the neighbours' velocities: its own halo, every row by itself as the serial
@@ -172,8 +169,9 @@ void DistributedLatticeSystem<D, C>::applyStiffness(const Vector& x, Vector& y) 
 template <int D, int C>
 template <class Function>
 void DistributedLatticeSystem<D, C>::forEachOwnedNode(Function&& f) const {
-  // Line by line (an owned line is a whole lattice line: x is not split), its row types from the
-  // line's base type as forEachLatticeLine gives them; threads share lines in a fixed partition.
+  // Line by line (an owned line is a whole lattice line, or its x-piece when x is split), its row
+  // types from the line's base type as forEachLatticeLine gives them (the base taken at the owned
+  // line's first node, wherever it starts); threads share lines in a fixed partition.
   const Box<D>& own = owned();
   const LatticeRowTypes<D>& types = serial_.types();
   const Index nx = own.extent(0);
@@ -190,12 +188,11 @@ void DistributedLatticeSystem<D, C>::forEachOwnedNode(Function&& f) const {
 template <int D, int C>
 template <class Function>
 Real DistributedLatticeSystem<D, C>::sumOverOwnedNodes(Function&& g) const {
-  // Line by line along x in node order, as sumOverLatticeNodes adds them; the lines over the ranks
-  // in the lattice's order.
-  const Index nx = owned().extent(0);
-  std::vector<Real> lineSums(static_cast<std::size_t>(owned().lineCount()), 0.0);
-  forEachOwnedNode([&](Index k, Index type) { lineSums[static_cast<std::size_t>(k / nx)] += g(k, type); });
-  return sumInLatticeOrder(decomposition_, rank_, lineSums, communicator_);
+  // One term per node, line by line along x in node order, as sumOverLatticeNodes adds them; the
+  // x-pieces of a line and the lines over the ranks in the lattice's order (LineSums.hpp).
+  return sumInLatticeOrder<D>(decomposition_, rank_, 1, [&](auto&& add) {
+    forEachOwnedNode([&](Index k, Index type) { add(k, 0, g(k, type)); });
+  }, communicator_);
 }
 
 template <int D, int C>
@@ -211,15 +208,15 @@ Real DistributedLatticeSystem<D, C>::kineticEnergy(const Vector& v) const {
 
 template <int D, int C>
 Real DistributedLatticeSystem<D, C>::strainEnergy(const Vector& u) const {
-  // As LatticeSecondOrderSystem::strainEnergy: u . K u per node from the products, per line.
-  const Index nx = owned().extent(0);
-  std::vector<Real> lineSums(static_cast<std::size_t>(owned().lineCount()), 0.0);
-  stiffness_->forEachProduct(u.data(), [&](Index k, Index, const Real* ku, Index stride) {
-    Real s = 0;
-    for (int c = 0; c < C; ++c) s += u[C * k + c] * ku[c * stride];
-    lineSums[static_cast<std::size_t>(k / nx)] += s;
-  }, [](Index) { return false; });
-  return 0.5 * sumInLatticeOrder(decomposition_, rank_, lineSums, communicator_);
+  // As LatticeSecondOrderSystem::strainEnergy: u . K u per node from the products, per line. The
+  // products (a collective halo exchange) are all taken before the x-pieces wait on one another.
+  return 0.5 * sumInLatticeOrder<D>(decomposition_, rank_, 1, [&](auto&& add) {
+    stiffness_->forEachProduct(u.data(), [&](Index k, Index, const Real* ku, Index stride) {
+      Real s = 0;
+      for (int c = 0; c < C; ++c) s += u[C * k + c] * ku[c * stride];
+      add(k, 0, s);
+    }, [](Index) { return false; });
+  }, communicator_);
 }
 
 template <int D, int C>
@@ -229,18 +226,17 @@ Real DistributedLatticeSystem<D, C>::dampingPower(const Vector& v) const {
   // without dashpots sums to +0 in both).
   const LatticeStencils<D, C>& damping = serial_.damping();
   if (damping_) damping_->multiply(v.data(), cv_.data(), &allRowByRow_);
-  const Index nx = owned().extent(0);
-  std::vector<Real> lineSums(static_cast<std::size_t>(owned().lineCount()), 0.0);
-  forEachOwnedNode([&](Index k, Index type) {
-    if (damping.begin(type) == damping.end(type)) return;
-    Real own[C];
-    const Real* cv = own;
-    if (damping_) cv = cv_.data() + C * k;
-    else damping.rowProductAt(type, v.data() + C * k, nodeFlat_.data(), own);
-    Real& sum = lineSums[static_cast<std::size_t>(k / nx)];
-    for (int c = 0; c < C; ++c) sum += v[C * k + c] * cv[c];
-  });
-  return sumInLatticeOrder(decomposition_, rank_, lineSums, communicator_);
+  // The serial sum adds each component's term to the line's sum: C terms per node.
+  return sumInLatticeOrder<D>(decomposition_, rank_, C, [&](auto&& add) {
+    forEachOwnedNode([&](Index k, Index type) {
+      if (damping.begin(type) == damping.end(type)) return;
+      Real own[C];
+      const Real* cv = own;
+      if (damping_) cv = cv_.data() + C * k;
+      else damping.rowProductAt(type, v.data() + C * k, nodeFlat_.data(), own);
+      for (int c = 0; c < C; ++c) add(k, c, v[C * k + c] * cv[c]);
+    });
+  }, communicator_);
 }
 
 template <int D, int C>

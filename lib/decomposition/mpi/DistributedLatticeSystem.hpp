@@ -31,10 +31,9 @@ namespace mfwave {
 template <int D, int C = D>
 class DistributedLatticeSystem : public LinearOperatorSystem {
  public:
-  // `serial` and `decomposition` must outlive this object; `decomposition` must keep x whole (the
-  // sums' order). Throws InputError("loads")
-  // for a force given as a function rather than as sparse loads, InputError("ranks") for a
-  // decomposition that splits x.
+  // `serial` and `decomposition` must outlive this object; any decomposition (x split too: the
+  // sums then chain along x, LineSums.hpp). Throws InputError("loads") for a force given as a
+  // function rather than as sparse loads.
   DistributedLatticeSystem(const LatticeSecondOrderSystem<D, C>& serial, const BlockDecomposition<D>& decomposition,
                            int rank, MPI_Comm communicator);
 
@@ -81,8 +80,8 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   // write what belongs to node k (lines run on threads).
   template <class Function>
   void forEachOwnedNode(Function&& f) const;
-  // Adds the sum over the ranks' owned line sums of g(k, type) (k the owned node, in its box's
-  // order), in the serial order.
+  // The sum over all ranks' owned nodes of g(k, type) (k the owned node, in its box's order), in
+  // the serial order.
   template <class Function>
   Real sumOverOwnedNodes(Function&& g) const;
 

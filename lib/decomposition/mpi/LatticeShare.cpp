@@ -13,8 +13,12 @@ LatticeShare<D, C>::LatticeShare(const LatticeSecondOrderSystem<D, C>& serial, M
     if (serial.hasDamping())
       cost[static_cast<std::size_t>(type)] += static_cast<Real>(serial.damping().end(type) - serial.damping().begin(type));
   }
+  // x whole when the other axes can take the ranks: a whole line runs its middle through one
+  // stencilRun and its sums need no chain along x. Else (always in 1-D, or too few nodes across)
+  // x is cut too, and the sums chain the pieces of each line in x order (LineSums.hpp).
   std::array<bool, D> splittable = BlockDecomposition<D>::allAxes();
-  splittable[0] = false;  // whole lines along x: the sums keep the serial order (LineSums.hpp)
+  splittable[0] = false;
+  if (!BlockDecomposition<D>::fits(serial.types().nodes(), ranks_, splittable)) splittable[0] = true;
   decomposition_ = std::make_unique<BlockDecomposition<D>>(serial.types(), ranks_, cost, splittable);
   system_ = std::make_unique<DistributedLatticeSystem<D, C>>(serial, *decomposition_, rank_, communicator);
 }

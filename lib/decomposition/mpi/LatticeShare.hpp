@@ -1,6 +1,7 @@
 #pragma once
 // One rank's share of a serial lattice system (issue 22), what a driver wires in place of the
-// serial system under mpirun: the blocks (x kept whole, the order of the serial sums; each row
+// serial system under mpirun: the blocks (x kept whole unless the other axes cannot take the
+// ranks, as in 1-D: whole lines run faster and sum without a chain along x; each row
 // type costing its stencil entries, so the face rows' extra work is balanced too), this rank's
 // DistributedLatticeSystem, and the map between the lattice's node numbers (x fastest, the
 // particles' numbers on a lattice) and the rank's state.

@@ -1,8 +1,10 @@
 // One rank's share of a lattice system under mpirun (ctest runs this program on 1, 2, 3 and 4
 // ranks, with HaloExchangeMpiTest.cpp): the serial integrator stepping DistributedLatticeSystem
-// keeps the serial run's bits, with and without dashpots and loads, and what the system does not
-// take yet is refused by name.
+// keeps the serial run's bits, with and without dashpots and loads, with x whole and with x cut
+// (1-D, and 2-D and 3-D with every axis splittable), and what the system does not take yet is
+// refused by name.
 #include "decomposition/mpi/DistributedLatticeSystem.hpp"
+#include "decomposition/mpi/LatticeShare.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "lattice/LatticeSecondOrderSystem.hpp"
 
@@ -27,8 +29,13 @@ namespace {
 // DistributedLatticeSystem. With `loaded`, the dashpot solve (eq. (32)), the loads and the ledger's
 // figures (dashpot power, load work's dot) keep the serial bits too.
 template <int D>
-void expectTheDistributedRunKeepsTheSerialBits(const std::array<Index, D>& nodes, bool loaded, bool coupled = false) {
-  LatticeCase<D> lattice(nodes, loaded, coupled);
+void expectTheDistributedRunKeepsTheSerialBits(const std::array<Index, D>& nodes, bool loaded, bool coupled = false,
+                                               bool splitX = false) {
+  LatticeCase<D> lattice(nodes, loaded, coupled, splitX);
+  // A case that asks for x to be split must split it on more than one rank, or it tests nothing new.
+  if ((splitX || D == 1) && worldSize() > 1) {
+    ASSERT_GT(lattice.decomposition->grid()[0], 1);
+  }
   LatticeSecondOrderSystem<D>& serial = *lattice.serial;
   ASSERT_EQ(serial.hasDamping(), loaded);
   ASSERT_EQ(loaded && !serial.damping().blockDiagonal(), coupled);
@@ -90,6 +97,41 @@ TEST(DistributedLatticeSystemMpiTest, DashpotsAndLoadsOnTheRanksKeepTheSerialBit
 TEST(DistributedLatticeSystemMpiTest, DashpotsThatCoupleNodesOnTheRanksKeepTheSerialBits) {
   expectTheDistributedRunKeepsTheSerialBits<3>({26, 15, 12}, true, true);
   expectTheDistributedRunKeepsTheSerialBits<2>({41, 23}, true, true);
+}
+
+// A 1-D lattice has only x to split: each rank owns a piece of the one lattice line, and the sums
+// chain the pieces in x order (LineSums.hpp). (The case's coupled dashpots need a face of more
+// than one node, so 1-D has own-dof dashpots only.)
+TEST(DistributedLatticeSystemMpiTest, AOneDimensionalLatticeCutAlongXKeepsTheSerialBits) {
+  expectTheDistributedRunKeepsTheSerialBits<1>({41}, false);
+  expectTheDistributedRunKeepsTheSerialBits<1>({41}, true);
+}
+
+// 2-D and 3-D lattices with every axis splittable: the grids with the smallest faces cut x on 2 to
+// 4 ranks (checked above; on 4 ranks y too), so the lines' pieces chain their sums within each
+// x-row of the rank grid, several rows at once where y is cut as well.
+TEST(DistributedLatticeSystemMpiTest, LatticesCutAlongXKeepTheSerialBits) {
+  expectTheDistributedRunKeepsTheSerialBits<2>({41, 23}, false, false, true);
+  expectTheDistributedRunKeepsTheSerialBits<2>({41, 23}, true, false, true);
+  expectTheDistributedRunKeepsTheSerialBits<2>({41, 23}, true, true, true);
+  expectTheDistributedRunKeepsTheSerialBits<3>({26, 15, 12}, true, true, true);
+}
+
+// A lattice share keeps x whole when the other axes can take the ranks (whole lines run faster),
+// and cuts x only when it must: always in 1-D, and when the other axes have too few nodes.
+TEST(DistributedLatticeSystemMpiTest, ALatticeShareCutsXOnlyWhenItMust) {
+  LatticeCase<1> line({41});
+  const LatticeShare<1> pieces(*line.serial, MPI_COMM_WORLD);
+  EXPECT_EQ(pieces.decomposition().grid()[0], worldSize());
+  LatticeCase<2> plane({41, 23});  // all axes may be cut: 2 or 3 ranks would cut x, not y
+  const LatticeShare<2> rows(*plane.serial, MPI_COMM_WORLD);
+  EXPECT_EQ(rows.decomposition().grid()[0], 1);
+  EXPECT_EQ(rows.decomposition().grid()[1], worldSize());
+  if (worldSize() > 2) {
+    LatticeCase<2> strip({41, 2}, false, false, true);  // 3 or 4 ranks do not fit 2 nodes across
+    const LatticeShare<2> cut(*strip.serial, MPI_COMM_WORLD);
+    EXPECT_GT(cut.decomposition().grid()[0], 1);
+  }
 }
 
 // What the distributed system does not take yet is refused by name.

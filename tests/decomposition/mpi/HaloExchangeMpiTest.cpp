@@ -207,3 +207,70 @@ TEST(HaloExchangeMpiTest, AnEnergyOverTheRanksIsTheSerialEnergyBitForBit) {
   }
 }
 
+
+// Sums over a lattice whose lines are cut along x: each x-piece goes on from the running sums of
+// the piece before it (LineSums.hpp), so the total is the serial one bit for bit. The terms span
+// 16 orders of magnitude and some are absent (-0.0), so any other order of addition (each piece
+// from 0, say) misses, which the test checks of its own data.
+TEST(HaloExchangeMpiTest, SumsOfLinesCutAlongXAreTheSerialSumsBitForBit) {
+  const LatticeRowTypes<2> types({40, 6}, 1);
+  const BlockDecomposition<2> decomposition(types, worldSize());  // every axis may be cut
+  if (worldSize() > 1) {
+    ASSERT_GT(decomposition.grid()[0], 1);
+  }
+  Box<2> all;
+  all.hi = types.nodes();
+  const int termsPerNode = 2;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<Real> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-8, 8);
+  std::vector<Real> terms(static_cast<std::size_t>(termsPerNode * all.count()));
+  for (Real& t : terms) t = random() % 5 == 0 ? -0.0 : mantissa(random) * std::pow(10.0, exponent(random));
+  // The serial order: each line along x from +0, absent terms not added, then the lines in order.
+  Real serial = 0, piecesFromZero = 0;
+  std::vector<Real> lineSums(static_cast<std::size_t>(all.lineCount()), 0.0);
+  all.forEachNode([&](const std::array<Index, 2>& node) {
+    for (int j = 0; j < termsPerNode; ++j) {
+      const Real t = terms[static_cast<std::size_t>(termsPerNode * all.localIndex(node) + j)];
+      if (!std::signbit(t) || t != 0) lineSums[static_cast<std::size_t>(node[1])] += t;
+    }
+  });
+  for (Real s : lineSums) serial += s;
+  // What adding each piece from 0 would give: the order the chain must not take.
+  {
+    for (Index y = 0; y < types.nodes()[1]; ++y) {
+      Real line = 0;
+      for (std::size_t k = 0; k + 1 < decomposition.cuts(0).size(); ++k) {
+        Real piece = 0;
+        for (Index x = decomposition.cuts(0)[k]; x < decomposition.cuts(0)[k + 1]; ++x)
+          for (int j = 0; j < termsPerNode; ++j) piece += terms[static_cast<std::size_t>(termsPerNode * all.localIndex({x, y}) + j)];
+        line += piece;
+      }
+      piecesFromZero += line;
+    }
+  }
+  if (decomposition.grid()[0] > 1) {
+    ASSERT_NE(piecesFromZero, serial) << "the test's terms do not tell the orders apart";
+  }
+
+  // This rank's block's terms, in its order.
+  const Box<2> own = decomposition.block(worldRank());
+  std::vector<Real> mine;
+  own.forEachNode([&](const std::array<Index, 2>& node) {
+    for (int j = 0; j < termsPerNode; ++j) mine.push_back(terms[static_cast<std::size_t>(termsPerNode * all.localIndex(node) + j)]);
+  });
+  const Real chained = sumNodeTermsInLatticeOrder(decomposition, worldRank(), mine, termsPerNode, MPI_COMM_WORLD);
+  EXPECT_EQ(chained, serial) << "difference " << chained - serial;
+  // The callers' form: the terms through a callable (absent ones not given).
+  const Real given = sumInLatticeOrder<2>(decomposition, worldRank(), termsPerNode, [&](auto&& add) {
+    for (Index k = 0; k < own.count(); ++k)
+      for (int j = 0; j < termsPerNode; ++j) {
+        const Real t = mine[static_cast<std::size_t>(termsPerNode * k + j)];
+        if (!std::signbit(t) || t != 0) add(k, j, t);
+      }
+  }, MPI_COMM_WORLD);
+  EXPECT_EQ(given, serial) << "difference " << given - serial;
+  // A count of terms that does not match the block is refused.
+  EXPECT_THROW(sumNodeTermsInLatticeOrder(decomposition, worldRank(), std::vector<Real>(1), termsPerNode, MPI_COMM_WORLD),
+               Error);
+}

@@ -58,14 +58,15 @@ Real relativeDifferenceOverRanks(const DistributedLatticeSystem<D, C>& system, c
 // The lattice case of the distributed runs: M u'' + C u' + K u = f on `nodes`, K the lattice
 // Laplacian of the 3^D - 1 neighbours (weight 1 / |offset|^2, fewer neighbours at the faces),
 // M = 1.5 I, a smooth bump as u0, at rest; the serial system and this rank's share of it (x kept
-// whole). With `loaded`, the faces carry dashpots on their own dofs (C = 0.7 I there, the Galerkin
+// whole, unless `splitX` or in 1-D: then every axis may be cut, and the grid with the smallest
+// faces often cuts x). With `loaded`, the faces carry dashpots on their own dofs (C = 0.7 I there, the Galerkin
 // very weak SPH's kind) and two loads of their own histories push on a few nodes (one near a
 // corner, one in the middle). With `coupled` too, each face node's dashpot also pulls on its face
 // neighbours along every axis (-0.1 I each): dashpots that couple nodes, as the consistent very
 // weak SPH's do, solved through the surface block of eq. (32).
 template <int D>
 struct LatticeCase {
-  LatticeCase(const std::array<Index, D>& nodes, bool loaded = false, bool coupled = false)
+  LatticeCase(const std::array<Index, D>& nodes, bool loaded = false, bool coupled = false, bool splitX = false)
       : types(nodes, 1), ramp(TimeFunction::ramp(0.5, 2.0, 3.0)), constant(TimeFunction::constant(-0.4)) {
     Box<D> compact;
     compact.hi = types.compactNodes();
@@ -141,7 +142,7 @@ struct LatticeCase {
       for (int c = 0; c < D; ++c) u0[D * all.localIndex(node) + c] = std::exp(-20 * r2) * (1.0 + 0.1 * c);
     });
     std::array<bool, D> splittable = BlockDecomposition<D>::allAxes();
-    splittable[0] = false;  // the distributed system keeps whole x lines per rank
+    splittable[0] = splitX || D == 1;  // x whole: the decomposition a lattice share prefers
     decomposition.emplace(types, worldSize(), std::vector<Real>{}, splittable);
     distributed.emplace(*serial, *decomposition, worldRank(), MPI_COMM_WORLD);
   }
