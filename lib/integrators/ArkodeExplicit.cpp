@@ -16,9 +16,14 @@
 #include <cmath>
 #include <cstdlib>
 #include <exception>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace mfwave {
 namespace {
@@ -95,6 +100,36 @@ std::atomic<ArkodeParallelVectorMaker> parallelVectorMaker{nullptr};
 
 void setArkodeParallelVectorMaker(ArkodeParallelVectorMaker maker) { parallelVectorMaker.store(maker); }
 
+namespace {
+
+// The WRMS norm of a system that fixes the order of its sums (VectorDistribution::
+// orderedSumOfSquares): sqrt(sum_i (x_i w_i)^2 / N) with the sum in the system's order. SUNDIALS
+// calls the vector operation without user data, so the integrator is found by the vector's context
+// (one per integrator).
+struct OrderedNorm {
+  std::function<Real(const Real*, Index)> sumOfSquares;
+  Index localLength = 0;
+  Real globalLength = 0;
+  std::vector<Real> scratch;
+};
+std::mutex orderedNormsMutex;
+std::map<SUNContext, OrderedNorm*> orderedNorms;
+
+sunrealtype orderedWrmsNorm(N_Vector x, N_Vector w) {
+  OrderedNorm* norm = nullptr;
+  {
+    const std::lock_guard<std::mutex> lock(orderedNormsMutex);
+    norm = orderedNorms.at(x->sunctx);
+  }
+  const Real* xd = N_VGetArrayPointer(x);
+  const Real* wd = N_VGetArrayPointer(w);
+  norm->scratch.resize(static_cast<std::size_t>(norm->localLength));
+  for (Index i = 0; i < norm->localLength; ++i) norm->scratch[static_cast<std::size_t>(i)] = xd[i] * wd[i];
+  return std::sqrt(norm->sumOfSquares(norm->scratch.data(), norm->localLength) / norm->globalLength);
+}
+
+}  // namespace
+
 struct ArkodeExplicit::Impl {
   ArkodeOptions options;
   ARKodeButcherTable table = nullptr;  // our copy; ERKStepSetTable copies it again
@@ -110,6 +145,7 @@ struct ArkodeExplicit::Impl {
   bool repeatedSetupEvaluation = false;  // resumed: ARKODE's set-up evaluation is not counted again
   std::exception_ptr pending;  // an exception thrown by the system inside a SUNDIALS callback
   std::string lastMessage;     // SUNDIALS's own text for the last error
+  std::unique_ptr<OrderedNorm> orderedNorm;  // the system's order of the norms' sums, if it fixes one
 
   ~Impl() {
     release();
@@ -118,6 +154,11 @@ struct ArkodeExplicit::Impl {
 
   void release() {
     if (memory) ERKStepFree(&memory);
+    if (context && orderedNorm) {
+      const std::lock_guard<std::mutex> lock(orderedNormsMutex);
+      orderedNorms.erase(context);
+    }
+    orderedNorm.reset();
     if (y) N_VDestroy(y);  // a vector made over user data leaves the data alone
     y = nullptr;
     if (context) SUNContext_Free(&context);
@@ -171,8 +212,25 @@ struct ArkodeExplicit::Impl {
   // over the ranks so that every rank's error test sees the same global norm and all take the same
   // steps. Element-wise operations are the serial ones either way.
   void makeVector(const std::optional<VectorDistribution>& distribution) {
+    makeSerialOrParallelVector(distribution);
+    if (!distribution || !distribution->orderedSumOfSquares) return;
+    // The system's order for the norms' sums: every vector ARKODE clones from y inherits the
+    // operation; the fused array version is dropped so that none bypasses it.
+    orderedNorm = std::make_unique<OrderedNorm>();
+    orderedNorm->sumOfSquares = distribution->orderedSumOfSquares;
+    orderedNorm->localLength = yData.size();
+    orderedNorm->globalLength = static_cast<Real>(N_VGetLength(y));
+    {
+      const std::lock_guard<std::mutex> lock(orderedNormsMutex);
+      orderedNorms[context] = orderedNorm.get();
+    }
+    y->ops->nvwrmsnorm = &orderedWrmsNorm;
+    y->ops->nvwrmsnormvectorarray = nullptr;
+  }
+
+  void makeSerialOrParallelVector(const std::optional<VectorDistribution>& distribution) {
     const auto local = static_cast<sunindextype>(yData.size());
-    if (!distribution) {
+    if (!distribution || !distribution->communicator) {
       check(SUNContext_Create(nullptr, &context), "SUNContext_Create");
       y = N_VMake_Serial(local, yData.data(), context);
       if (!y) throw Error("ARKODE N_VMake_Serial failed");

@@ -245,6 +245,17 @@ Real LatticeSecondOrderSystem<D, C>::dot(const Vector& a, const Vector& b) const
 }
 
 template <int D, int C>
+std::optional<VectorDistribution> LatticeSecondOrderSystem<D, C>::distribution() const {
+  VectorDistribution d;
+  d.globalSize = size();
+  d.orderedSumOfSquares = [this](const Real* z, Index count) {
+    const Vector values = Eigen::Map<const Vector>(z, count);
+    return dot(values, values);
+  };
+  return d;
+}
+
+template <int D, int C>
 Real LatticeSecondOrderSystem<D, C>::dampingPower(const Vector& v) const {
   if (!hasDamping_) return 0;
   // Line by line, visiting only the nodes whose type has dashpots (the surface): per-line sums,

@@ -55,6 +55,9 @@ class LatticeSecondOrderSystem : public LinearOperatorSystem {
   Real dampingPower(const Vector& v) const override;
   // Per lattice line along x node by node, then the lines in order (as the energies).
   Real dot(const Vector& a, const Vector& b) const override;
+  // Serial vectors whose norms sum in lattice order (dot's), as a distributed system's do on any
+  // number of ranks: an adaptive ARKODE run takes the same steps serially and on ranks.
+  std::optional<VectorDistribution> distribution() const override;
   Vector lumpedMass() const override;
   // The diagonal of M per row type, C values each. Throws InputError("mass") when M is not diagonal.
   std::vector<Real> lumpedMassPerType() const;

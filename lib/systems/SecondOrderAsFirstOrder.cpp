@@ -15,7 +15,11 @@ void SecondOrderAsFirstOrder::rhs(Real t, Eigen::Ref<const Vector> y, Eigen::Ref
 
 std::optional<VectorDistribution> SecondOrderAsFirstOrder::distribution() const {
   std::optional<VectorDistribution> d = system_.distribution();
-  if (d) d->globalSize *= 2;
+  if (!d) return d;
+  d->globalSize *= 2;
+  // y = (u, v), each in the system's layout: the u part's sum, then the v part's.
+  if (auto half = d->orderedSumOfSquares)
+    d->orderedSumOfSquares = [half](const Real* z, Index count) { return half(z, count / 2) + half(z + count / 2, count / 2); };
   return d;
 }
 

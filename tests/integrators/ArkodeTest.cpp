@@ -231,7 +231,7 @@ TEST(ArkodeExplicit, ADistributedSystemWithoutMpiVectorsIsRefused) {
   struct Distributed : FirstOrderSystem {
     Index size() const override { return 2; }
     void rhs(Real, Eigen::Ref<const Vector> y, Eigen::Ref<Vector> ydot) override { ydot = -y; }
-    std::optional<VectorDistribution> distribution() const override { return VectorDistribution{&handle, 4}; }
+    std::optional<VectorDistribution> distribution() const override { return VectorDistribution{&handle, 4, {}}; }
     int handle = 0;  // stands for a communicator; never read without MPI vectors
   } system;
   ArkodeOptions options;

@@ -240,6 +240,16 @@ Real DistributedLatticeSystem<D, C>::dampingPower(const Vector& v) const {
 }
 
 template <int D, int C>
+std::optional<VectorDistribution> DistributedLatticeSystem<D, C>::distribution() const {
+  VectorDistribution d{&communicator_, globalSize_, {}};
+  d.orderedSumOfSquares = [this](const Real* z, Index count) {
+    const Vector values = Eigen::Map<const Vector>(z, count);
+    return dot(values, values);
+  };
+  return d;
+}
+
+template <int D, int C>
 Real DistributedLatticeSystem<D, C>::dot(const Vector& a, const Vector& b) const {
   return sumOverOwnedNodes([&](Index k, Index) {
     Real s = 0;

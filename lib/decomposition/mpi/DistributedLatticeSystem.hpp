@@ -43,7 +43,8 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   // This rank's communicator and the sum of the ranks' sizes: the ARKODE integrators then run on
   // SUNDIALS' MPI vectors (integrators/ArkodeMpiVectors.hpp, which the constructor enables), so
   // their adaptive steps are chosen from norms over all the ranks.
-  std::optional<VectorDistribution> distribution() const override { return VectorDistribution{&communicator_, globalSize_}; }
+  // Their norms sum in the serial lattice order (dot), so adaptive steps are the serial ones too.
+  std::optional<VectorDistribution> distribution() const override;
   void acceleration(Real t, Eigen::Ref<const Vector> u, Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) override;
 
   // The owned part of f(t).
