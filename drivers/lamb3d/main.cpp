@@ -68,6 +68,7 @@
 #include "studies/lamb3d/LambSolidSpec.hpp"
 
 #include "core/Error.hpp"
+#include "core/Interruption.hpp"
 #include "integrators/ConstrainedIntegrators.hpp"
 #include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
@@ -76,6 +77,7 @@
 #include "io/run/RunSummary.hpp"
 #ifdef MFWAVE_WITH_MPI
 #include "decomposition/mpi/MpiSession.hpp"
+#include "decomposition/mpi/RankAgreement.hpp"
 #include "decomposition/mpi/RankCheckpointStore.hpp"
 #endif
 #include "io/run/StudyCases.hpp"
@@ -652,9 +654,16 @@ int main(int argc, char** argv) {
     const std::string folder = prepareOutputFolder(cli.options(), plan.study.scene.output.folder, reader, storeMaker);
 
     const bool progress = !cli.options().quiet && rank == 0;
+#ifdef MFWAVE_WITH_MPI
+    // Cases run on rank 0 alone too: the ranks agree between cases whether a signal stops the study.
+    const TimeLoop::Agreement caseAgreement =
+        MpiSession::size() > 1 ? maximumOverRanks(MPI_COMM_WORLD) : TimeLoop::Agreement();
+#else
+    const TimeLoop::Agreement caseAgreement;
+#endif
     const std::vector<CaseResult> results = runCases(
         plan.cases, [&](const CaseSettings& settings) { return runCase(plan.study, settings, folder, progress); },
-        progress);
+        progress, caseAgreement);
     if (rank != 0) return 0;  // rank 0 reports and writes the run's tables
     const CaseTable<CaseResult> table = casesTable(results.front().probes);
     table.writeCsv(folder + "/cases.csv", results, 8);
@@ -697,7 +706,9 @@ int main(int argc, char** argv) {
   });
 #ifdef MFWAVE_WITH_MPI
   // A rank that failed must not leave the others waiting in a halo exchange.
-  if (code != 0) MpiSession::abortOthers(code);
+  // An agreed interruption (130, 143) is no failure: every rank stops at the same step and rank 0
+  // writes its tables; only then do they exit.
+  if (code != 0 && !interruptionRequested()) MpiSession::abortOthers(code);
 #endif
   return code;
 }

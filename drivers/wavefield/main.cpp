@@ -9,6 +9,7 @@
 #include "analysis/StableTimeStep.hpp"
 #include "core/Stopwatch.hpp"
 #include "core/Error.hpp"
+#include "core/Interruption.hpp"
 #include "integrators/IntegratorFactory.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/MemoryGuard.hpp"
@@ -34,6 +35,8 @@
 #ifdef MFWAVE_WITH_MPI
 #include "decomposition/mpi/LatticeShare.hpp"
 #include "decomposition/mpi/MpiSession.hpp"
+#include "decomposition/mpi/RankAgreement.hpp"
+#include "decomposition/mpi/RankCheckpointStore.hpp"
 #include "decomposition/mpi/RankProbes.hpp"
 #include "io/vtk/ParallelVtkFrameWriter.hpp"
 #endif
@@ -158,6 +161,7 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
   std::optional<RankProbes> rankProbes;
   std::optional<ParallelVtkFrameWriter<D>> pieces;
   if (share) {
+    loop.agreeAcrossRanks(maximumOverRanks(MPI_COMM_WORLD));  // stops and wall-clock checkpoints at one step
     rankProbes.emplace(probeList, [&share](Index particle) { return share->localNode(particle); }, 1, MPI_COMM_WORLD);
     rankProbes->sampleAtEnd(false);  // the serial recorder's rows
     if (!scene.probes.empty()) loop.add(*rankProbes, scene.output.probeEvery);
@@ -276,7 +280,14 @@ int main(int argc, char** argv) {
         "geometry.spacing = " + mfwave::scene::formatNumber(scene.geometry.spacing),
         {static_cast<double>(scene.geometry.particleCount()), 1536, "the finite-difference wave, 0.7 KiB measured"});
     if (!why.empty()) reader.fail("geometry.spacing", why);
-    const std::string folder = prepareOutputFolder(cli.options(), scene.output.folder, reader);
+#ifdef MFWAVE_WITH_MPI
+    // On several ranks each writes its own share of every checkpoint and rank 0 one manifest.
+    const CheckpointStoreMaker storeMaker =
+        MpiSession::size() > 1 ? CheckpointStoreMaker(makeRankCheckpointStore) : CheckpointStoreMaker();
+#else
+    const CheckpointStoreMaker storeMaker;
+#endif
+    const std::string folder = prepareOutputFolder(cli.options(), scene.output.folder, reader, storeMaker);
     switch (scene.geometry.dimension) {
       case 1:
         return run<1>(scene, folder, cli.options());
@@ -288,7 +299,9 @@ int main(int argc, char** argv) {
   });
 #ifdef MFWAVE_WITH_MPI
   // A rank that failed must not leave the others waiting in a halo exchange.
-  if (code != 0) MpiSession::abortOthers(code);
+  // An agreed interruption (130, 143) is no failure: every rank stops at the same step and rank 0
+  // writes its tables; only then do they exit.
+  if (code != 0 && !interruptionRequested()) MpiSession::abortOthers(code);
 #endif
   return code;
 }

@@ -36,6 +36,9 @@ class CheckpointStore {
   virtual double everySeconds() const = 0;
   // The key or option to name when a run cannot be checkpointed ("--checkpoint-every", ...).
   virtual std::string settingName() const = 0;
+  // True when every rank of a split run writes its share of each checkpoint: then a wall-clock
+  // period needs a loop that agrees its steps across the ranks (TimeLoop::agreeAcrossRanks).
+  virtual bool sharedByRanks() const { return false; }
 
   // The number of the next time loop of this process (0, 1, ...).
   int claimLoop() { return loops_++; }

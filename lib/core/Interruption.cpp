@@ -45,6 +45,10 @@ const char* interruptionSignalName() {
   }
 }
 
+void requestInterruption(int signal) {
+  if (requested == 0 && signal != 0) requested = signal;
+}
+
 void clearInterruption() { requested = 0; }
 
 }  // namespace mfwave

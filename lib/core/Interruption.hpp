@@ -24,6 +24,11 @@ inline bool interruptionRequested() { return interruptionSignal() != 0; }
 // "SIGINT", "SIGTERM" or "a signal".
 const char* interruptionSignalName();
 
+// Raises the flag as the signal's handler would (a no-op when one is already raised): how the
+// ranks of a run that agreed to stop (TimeLoop::agreeAcrossRanks) all stop alike, also those
+// that received no signal themselves.
+void requestInterruption(int signal);
+
 // For tests: forget a past interruption.
 void clearInterruption();
 

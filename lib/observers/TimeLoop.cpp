@@ -44,6 +44,9 @@ void TimeLoop::restore(Integrator& integrator, const StateArchive& archive, long
 RunStatistics TimeLoop::run(Integrator& integrator, Real endTime) {
   if (!std::isfinite(endTime)) throw InputError("end_time", "must be finite");
   CheckpointStore* store = checkpointStore();
+  if (store && store->sharedByRanks() && store->everySeconds() > 0 && !agree_)
+    throw InputError(store->settingName(), "a wall-clock checkpoint period on MPI ranks needs a time loop that "
+                                           "agrees its steps across them; give a step count");
   const int loopIndex = store ? store->claimLoop() : -1;
   const std::optional<CheckpointPoint> resume = store ? store->resumePoint(loopIndex) : std::nullopt;
   RunStatistics stats;
@@ -77,14 +80,28 @@ RunStatistics TimeLoop::run(Integrator& integrator, Real endTime) {
 
   // Half a step of slack so round-off in t never adds or drops a fixed step.
   const auto beforeTheEnd = [&] { return integrator.time() < endTime - 0.5 * integrator.stepSize(); };
-  while (beforeTheEnd() && !interruptionRequested()) {
+  // On ranks the stop and the wall-clock checkpoint are agreed at the step boundary (agree_).
+  bool wallClockDue = false;
+  const auto stopRequested = [&] {
+    const bool due = store && store->everySeconds() > 0 && sinceCheckpoint.seconds() >= store->everySeconds();
+    if (!agree_) {
+      wallClockDue = due;
+      return interruptionRequested();
+    }
+    int flags[2] = {interruptionSignal(), due ? 1 : 0};
+    agree_(flags, 2);
+    requestInterruption(flags[0]);
+    wallClockDue = flags[1] != 0;
+    return flags[0] != 0;
+  };
+  while (beforeTheEnd() && !stopRequested()) {
+    // Due after the last step (the state every observer has seen), written before the next.
+    if (wallClockDue && lastCheckpoint != integrator.stepCount()) writeCheckpoint();
     integrator.step();
     const long n = integrator.stepCount() - firstStep;
     for (auto& entry : observers_)
       if (n % entry.every == 0) entry.observer->observe(integrator.state());
-    if (store && ((store->everySteps() > 0 && n % store->everySteps() == 0) ||
-                  (store->everySeconds() > 0 && sinceCheckpoint.seconds() >= store->everySeconds())))
-      writeCheckpoint();
+    if (store && store->everySteps() > 0 && n % store->everySteps() == 0) writeCheckpoint();
   }
   // The state the loop ends in (its end, or where a signal stopped it), before the closing
   // observations: a restart from it observes and closes exactly as this run does.

@@ -4,6 +4,7 @@
 
 #include "observers/Observer.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace mfwave {
@@ -37,6 +38,15 @@ class TimeLoop {
   // start, so the run reads as one.
   RunStatistics run(Integrator& integrator, Real endTime);
 
+  // For a loop whose integrator steps a system split over ranks (every rank runs the same loop):
+  // `agree` replaces each value of a small array by its maximum over the ranks (collective). At
+  // every step boundary the loop agrees on whether a signal asked to stop and on whether a
+  // wall-clock checkpoint is due, so every rank stops, or writes its share of a checkpoint, after
+  // the same step: a rank that stopped alone would leave the others waiting in a halo exchange. A
+  // rank that received no signal raises the agreed one (requestInterruption), so it stops too.
+  using Agreement = std::function<void(int* values, int count)>;
+  void agreeAcrossRanks(Agreement agree) { agree_ = std::move(agree); }
+
  private:
   void restore(Integrator& integrator, const StateArchive& archive, long& firstStep, Real& startTime);
   StateArchive save(const Integrator& integrator, long firstStep, Real startTime) const;
@@ -46,6 +56,7 @@ class TimeLoop {
     long every;
   };
   std::vector<Entry> observers_;
+  Agreement agree_;
 };
 
 }  // namespace mfwave

@@ -152,5 +152,41 @@ TEST(TimeLoopCheckpoint, APartThatCannotBeCheckpointedIsRefusedBeforeTheFirstSte
   EXPECT_EQ(loop.run(integrator, 1.0).steps, 10);
 }
 
+// A store shared by the ranks of a split run with a wall-clock period: each rank's clock fires at
+// another step, so the loop takes the period only from the ranks' agreement. Here the period never
+// fires locally (a day) and a stand-in for the other ranks says one is due at the fourth boundary:
+// the loop writes that checkpoint after step 3, before step 4. Without an agreement the store is
+// refused before the first step.
+TEST(TimeLoopCheckpoint, OnRanksAWallClockCheckpointIsTakenWhenTheRanksAgree) {
+  class RankStore : public MemoryStore {
+   public:
+    RankStore() : MemoryStore(0) {}
+    double everySeconds() const override { return 86400; }
+    bool sharedByRanks() const override { return true; }
+  };
+  auto system = test::oscillator(1.0, 0);
+  CentralDifference integrator;
+  integrator.initialise(*system, 0, Vector::Constant(1, 1.0), Vector::Zero(1), 0.1);
+  auto store = std::make_shared<RankStore>();
+  installCheckpointStore(store);
+  TimeLoop refused;
+  EXPECT_THROW(refused.run(integrator, 1.0), InputError);
+  EXPECT_EQ(integrator.stepCount(), 0);
+
+  auto agreed = std::make_shared<RankStore>();
+  installCheckpointStore(agreed);
+  TimeLoop loop;
+  int boundaries = 0;
+  loop.agreeAcrossRanks([&boundaries](int* values, int) {
+    EXPECT_EQ(values[1], 0);  // not due on this rank's clock
+    if (++boundaries == 4) values[1] = 1;
+  });
+  EXPECT_EQ(loop.run(integrator, 1.0).steps, 10);
+  installCheckpointStore(nullptr);
+  std::vector<long> steps;
+  for (const CheckpointPoint& p : agreed->written[0]) steps.push_back(p.step);
+  EXPECT_EQ(steps, (std::vector<long>{3, 10}));  // the agreed one, then the end's
+}
+
 }  // namespace
 }  // namespace mfwave

@@ -73,3 +73,29 @@ TEST(TimeLoop, AnInterruptionEndsTheLoopAfterTheCurrentStep) {
   EXPECT_EQ(full.steps, 10);
   EXPECT_FALSE(full.interrupted);
 }
+
+// On ranks (TimeLoop::agreeAcrossRanks): the loop asks the agreement at every step boundary with
+// its own signal and wall-clock flag, and obeys what the ranks agreed. Here a stand-in for the
+// other ranks reports a SIGTERM this process never received, at the fifth boundary: the loop stops
+// after step 4 as if the signal were its own, and raises the flag so the study stops too.
+TEST(TimeLoop, AnAgreedStopEndsEveryRanksLoopAfterTheSameStep) {
+  clearInterruption();
+  ScriptedIntegrator integrator(Vector::Zero(2), Vector::Zero(2), 0.1, [](long, Vector&, Vector&) {});
+  StepLog log;
+  TimeLoop loop;
+  loop.add(log, 3);
+  int boundaries = 0;
+  loop.agreeAcrossRanks([&boundaries](int* values, int count) {
+    ASSERT_EQ(count, 2);
+    EXPECT_EQ(values[0], 0);  // this process's own signal: none
+    EXPECT_EQ(values[1], 0);  // no store, so no wall-clock checkpoint
+    if (++boundaries == 5) values[0] = SIGTERM;  // another rank's
+  });
+  const RunStatistics stats = loop.run(integrator, 1.0);
+  EXPECT_EQ(boundaries, 5);
+  EXPECT_EQ(stats.steps, 4);
+  EXPECT_TRUE(stats.interrupted);
+  EXPECT_EQ(interruptionSignal(), SIGTERM);
+  EXPECT_EQ(log.steps, (std::vector<long>{0, 3, 4}));
+  clearInterruption();
+}

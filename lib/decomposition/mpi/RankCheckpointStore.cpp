@@ -38,11 +38,8 @@ RankCheckpointStore::RankCheckpointStore(std::string outputFolder, std::string s
   MPI_Comm_rank(comm_, &rank_);
   MPI_Comm_size(comm_, &ranks_);
   const std::string counts = std::to_string(ranks_) + " MPI ranks";
-  // Every rank reads the same settings and the same manifest, so every rank throws alike.
-  if (settings_.everySeconds > 0)
-    throw InputError(settings_.setting, "a wall-clock checkpoint period is not taken on " + counts +
-                                            ": each rank's clock would fire at another step, and a checkpoint must "
-                                            "be of one step on every rank; give a step count (--checkpoint-every N)");
+  // A wall-clock period is taken: each rank's clock fires at another step, so the ranks' loops
+  // agree at every step boundary whether one is due (TimeLoop::agreeAcrossRanks).
   rankFolder_ = (fs::path(folder_) / rankCheckpointFolderName(rank_, ranks_)).string();
   std::error_code ec;
   fs::create_directories(rankFolder_, ec);

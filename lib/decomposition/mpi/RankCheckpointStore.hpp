@@ -41,7 +41,9 @@ class RankCheckpointStore : public CheckpointStore {
                       std::string sceneText, MPI_Comm comm);
 
   long everySteps() const override { return settings_.everySteps; }
-  double everySeconds() const override { return 0; }
+  double everySeconds() const override { return settings_.everySeconds; }
+  // While a loop runs on rank 0 alone its checkpoints are rank 0's alone.
+  bool sharedByRanks() const override { return !alone_ && ranks_ > 1; }
   std::string settingName() const override { return settings_.setting; }
   std::optional<CheckpointPoint> resumePoint(int loop) override;
   void write(int loop, long step, Real time, const StateArchive& archive) override;

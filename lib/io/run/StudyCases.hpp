@@ -33,9 +33,11 @@ struct StudyCase {
 // Runs `run(settings)` for each entry of `plan` in order and returns the results; with `progress`,
 // says on stderr when each case is done, by its record's name, particles and steps. After SIGINT or
 // SIGTERM (core/Interruption) the case that was stepping ends early and no further case starts:
-// the results hold the cases run so far.
+// the results hold the cases run so far. Under mpirun, `agree` (TimeLoop::Agreement) makes the
+// ranks agree after each case whether to stop, so a signal that reached only some of them still
+// stops all of them before the same case.
 template <class Settings, class Run>
-auto runCases(const std::vector<Settings>& plan, Run&& run, bool progress) {
+auto runCases(const std::vector<Settings>& plan, Run&& run, bool progress, const TimeLoop::Agreement& agree = {}) {
   std::vector<std::decay_t<std::invoke_result_t<Run&, const Settings&>>> results;
   results.reserve(plan.size());
   for (const Settings& settings : plan) {
@@ -43,6 +45,11 @@ auto runCases(const std::vector<Settings>& plan, Run&& run, bool progress) {
     if (progress) {
       const CaseRecord& r = results.back().record;
       std::cerr << "  done " << r.name << " (" << r.particles << " particles, " << r.steps << " steps)\n";
+    }
+    if (agree) {
+      int signal = interruptionSignal();
+      agree(&signal, 1);
+      requestInterruption(signal);
     }
     if (interruptionRequested()) break;
   }

@@ -5,6 +5,7 @@
 
 #include "core/Error.hpp"
 #include "decomposition/mpi/LatticeShare.hpp"
+#include "decomposition/mpi/RankAgreement.hpp"
 #include "decomposition/mpi/RankStencilProduct.hpp"
 #include "decomposition/mpi/RankProbes.hpp"
 #include "io/run/ProgressReporter.hpp"
@@ -74,6 +75,7 @@ CaseResult runOnRanks(const StudySettings& study, const CaseSettings& settings, 
   if (settings.writeFrames && scene.output.vtk)
     frames.emplace(particles, share.ownedNodes(), folder, settings.name, D, share.rank(), share.ranks());
   TimeLoop loop;
+  loop.agreeAcrossRanks(maximumOverRanks(MPI_COMM_WORLD));  // stops and wall-clock checkpoints at one step
   loop.add(monitor);
   loop.add(ledger);
   loop.add(reporter);
