@@ -50,6 +50,16 @@ LocalStencils<D, C>::LocalStencils(const LatticeStencils<D, C>& stencils, const 
                                        ", beyond the local box: the halo is shallower than the stencils' reach");
       }
   });
+  // The halo lies where the local box passes the owned one; a row of a node within the reach of
+  // such a side reads it.
+  const std::array<Index, D> reach = stencilReach(stencils);
+  inner_ = owned;
+  for (int a = 0; a < D; ++a) {
+    const auto s = static_cast<std::size_t>(a);
+    if (local.lo[s] < owned.lo[s]) inner_.lo[s] = owned.lo[s] + reach[s];
+    if (local.hi[s] > owned.hi[s]) inner_.hi[s] = owned.hi[s] - reach[s];
+  }
+  xReadsHalo_ = inner_.lo[0] != owned.lo[0] || inner_.hi[0] != owned.hi[0];
   std::array<Index, D> storage{};
   for (int a = 0; a < D; ++a) storage[static_cast<std::size_t>(a)] = local.extent(a);
   flat_ = stencils.flatOffsets(storage);

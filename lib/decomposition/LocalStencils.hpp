@@ -22,6 +22,10 @@ template <int D, int C>
 std::array<Index, D> stencilReach(const LatticeStencils<D, C>& stencils);
 
 // C components per node, as the stencils' (LatticeStencils<D, C>).
+// Which owned lines a product visits: all, those whose rows read owned nodes only (computed while
+// the halo is in flight), or the others (once it has arrived).
+enum class OwnedLines { All, WithoutHalo, WithHalo };
+
 template <int D, int C = D>
 class LocalStencils {
  public:
@@ -40,20 +44,34 @@ class LocalStencils {
   // The products one by one, as LatticeStencils::forEachProduct gives the serial ones: f(k, type,
   // product, stride) for every owned node k (the owned box's order) with its row applied to x,
   // component c at product[c * stride]; a line's middle goes row by row when direct(type) holds.
-  // f must only write what belongs to node k (lines run on threads).
+  // f must only write what belongs to node k (lines run on threads). `lines` picks the owned lines
+  // (each is visited whole, so every row is the same whichever part computes it).
   template <class Function, class Direct>
-  void forEachProduct(const Real* x, Function&& f, Direct&& direct) const;
+  void forEachProduct(const Real* x, Function&& f, Direct&& direct, OwnedLines lines = OwnedLines::All) const;
+
+  // Whether the rows of the owned line starting at node g (x = owned().lo[0]) read a halo node.
+  bool lineReadsHalo(const std::array<Index, D>& g) const {
+    if (xReadsHalo_) return true;
+    for (int a = 1; a < D; ++a) {
+      const auto s = static_cast<std::size_t>(a);
+      if (g[s] < inner_.lo[s] || g[s] >= inner_.hi[s]) return true;
+    }
+    return false;
+  }
 
  private:
   const LatticeStencils<D, C>* stencils_;
   Box<D> owned_, local_;
   std::vector<Index> flat_;  // per entry: the offset as a node-index difference in the local box
   std::uint64_t table_ = 0;  // stencil numbers of these offsets (freshStencilNumbers)
+  // The owned nodes whose rows read no halo node along y and z; x: whether any row reads one.
+  Box<D> inner_;
+  bool xReadsHalo_ = false;
 };
 
 template <int D, int C>
 template <class Function, class Direct>
-void LocalStencils<D, C>::forEachProduct(const Real* x, Function&& f, Direct&& direct) const {
+void LocalStencils<D, C>::forEachProduct(const Real* x, Function&& f, Direct&& direct, OwnedLines which) const {
   const LatticeStencils<D, C>& stencils = *stencils_;
   const LatticeRowTypes<D>& types = stencils.types();
   const Index nx = types.nodes()[0], depth = types.depth();
@@ -66,6 +84,7 @@ void LocalStencils<D, C>::forEachProduct(const Real* x, Function&& f, Direct&& d
 #pragma omp parallel for schedule(static) if (lines > 16 && owned_.count() > 20000)
   for (long line = 0; line < lines; ++line) {
     const std::array<Index, D> g = owned_.lineStart(line);
+    if (which != OwnedLines::All && lineReadsHalo(g) != (which == OwnedLines::WithHalo)) continue;
     Index base = 0, stride = types.compactNodes()[0];
     for (int a = 1; a < D; ++a) {
       const auto s = static_cast<std::size_t>(a);

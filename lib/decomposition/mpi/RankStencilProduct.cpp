@@ -14,12 +14,16 @@ RankStencilProduct<D, C>::RankStencilProduct(const LatticeStencils<D, C>& stenci
 
 template <int D, int C>
 void RankStencilProduct<D, C>::multiply(const Real* x, Real* y, const std::vector<char>* direct) {
-  exchange(x);
-  rows_->multiply(local_.data(), y, direct);
+  forEachProduct(
+      x,
+      [y](Index k, Index, const Real* product, Index stride) {
+        for (int c = 0; c < C; ++c) y[C * k + c] = product[c * stride];
+      },
+      [direct](Index type) { return direct && (*direct)[static_cast<std::size_t>(type)]; });
 }
 
 template <int D, int C>
-void RankStencilProduct<D, C>::exchange(const Real* x) {
+void RankStencilProduct<D, C>::startExchange(const Real* x) {
   const Box<D>& own = owned();
   const Box<D>& local = exchange_->plan().local();
   // Line by line: an owned line is contiguous in both boxes (x fastest).
@@ -30,7 +34,7 @@ void RankStencilProduct<D, C>::exchange(const Real* x) {
     const std::array<Index, D> start = own.lineStart(line);
     std::copy_n(x + C * own.localIndex(start), length, local_.data() + C * local.localIndex(start));
   }
-  exchange_->exchange(local_.data());
+  exchange_->start(local_.data());
 }
 
 template class RankStencilProduct<1>;

@@ -30,18 +30,22 @@ class RankStencilProduct {
   void multiply(const Real* x, Real* y, const std::vector<char>* direct = nullptr);
   // The products one by one (LocalStencils::forEachProduct) after the same exchange, so a caller
   // fuses its use of each row with the product, as the serial fused solve does.
+  // The rows that read no halo node run while the halo messages are in flight, the others after
+  // they arrive; each line is computed whole either way, so every row is the serial one.
   template <class Function, class Direct>
   void forEachProduct(const Real* x, Function&& f, Direct&& direct) {
-    exchange(x);
-    rows_->forEachProduct(local_.data(), std::forward<Function>(f), std::forward<Direct>(direct));
+    startExchange(x);
+    rows_->forEachProduct(local_.data(), f, direct, OwnedLines::WithoutHalo);
+    exchange_->finish(local_.data());
+    rows_->forEachProduct(local_.data(), f, direct, OwnedLines::WithHalo);
   }
 
   const Box<D>& owned() const { return exchange_->plan().owned(); }
   const HaloExchange<D>& exchange() const { return *exchange_; }
 
  private:
-  // x (owned) into the local box, its halo exchanged.
-  void exchange(const Real* x);
+  // x (owned) into the local box, and its halo messages posted (HaloExchange::start).
+  void startExchange(const Real* x);
 
   std::unique_ptr<HaloExchange<D>> exchange_;
   std::unique_ptr<LocalStencils<D, C>> rows_;
