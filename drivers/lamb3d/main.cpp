@@ -703,7 +703,7 @@ int main(int argc, char** argv) {
     summary.mergeNotesAndFiles(results);
     summary.conclude(folder, &std::cout);
     return 0;
-  });
+  }, rank);
 #ifdef MFWAVE_WITH_MPI
   // A rank that failed must not leave the others waiting in a halo exchange.
   // An agreed interruption (130, 143) is no failure: every rank stops at the same step and rank 0

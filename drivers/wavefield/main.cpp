@@ -265,6 +265,9 @@ int main(int argc, char** argv) {
   cli.setDefaultScene("block-ricker.toml");
 #ifdef MFWAVE_WITH_MPI
   const MpiSession mpi(argc, argv);  // only under a launcher: a plain run starts no MPI
+  const int rank = MpiSession::rank();
+#else
+  const int rank = 0;
 #endif
   if (const auto exit = cli.parse(argc, argv)) return *exit;
 
@@ -296,7 +299,7 @@ int main(int argc, char** argv) {
       default:
         return run<3>(scene, folder, cli.options());
     }
-  });
+  }, rank);
 #ifdef MFWAVE_WITH_MPI
   // A rank that failed must not leave the others waiting in a halo exchange.
   // An agreed interruption (130, 143) is no failure: every rank stops at the same step and rank 0

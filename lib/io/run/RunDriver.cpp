@@ -4,13 +4,17 @@
 #include "core/Error.hpp"
 #include "core/Interruption.hpp"
 
+#include <chrono>
 #include <csignal>
 #include <exception>
 #include <iostream>
+#include <string>
+#include <thread>
 
 namespace mfwave {
 
-int runDriver(const std::string& program, const std::function<int()>& body) {
+int runDriver(const std::string& program, const std::function<int()>& body, int rank) {
+  const std::string who = rank > 0 ? program + " (rank " + std::to_string(rank) + ")" : program;
   // A file that outgrows RLIMIT_FSIZE (a quota, a small filesystem limit) would kill the process
   // with SIGXFSZ mid-write; ignored, the write fails instead and the writer reports it (exit 1,
   // naming the file, the temporary removed).
@@ -18,6 +22,7 @@ int runDriver(const std::string& program, const std::function<int()>& body) {
   try {
     const int status = body();
     if (interruptionRequested()) {
+      if (rank > 0) return 128 + interruptionSignal();
       std::cerr << program << ": interrupted by " << interruptionSignalName()
                 << ": the outputs of the steps taken are written (summary.json says where the run stopped)";
       if (const CheckpointStore* store = checkpointStore(); store && !store->folder().empty())
@@ -28,16 +33,17 @@ int runDriver(const std::string& program, const std::function<int()>& body) {
     }
     return status;
   } catch (const InputError& e) {
-    std::cerr << program << ": error: " << e.what() << '\n';
+    if (rank > 0) std::this_thread::sleep_for(std::chrono::seconds(1));
+    std::cerr << who << ": error: " << e.what() << '\n';
     return 2;
   } catch (const InstabilityError& e) {
-    std::cerr << program << ": run stopped: " << e.what() << '\n';
+    std::cerr << who << ": run stopped: " << e.what() << '\n';
     return 3;
   } catch (const Error& e) {
-    std::cerr << program << ": error: " << e.what() << '\n';
+    std::cerr << who << ": error: " << e.what() << '\n';
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << program << ": internal error: " << e.what() << '\n';
+    std::cerr << who << ": internal error: " << e.what() << '\n';
     return 1;
   }
 }

@@ -10,6 +10,11 @@
 
 namespace mfwave {
 
-int runDriver(const std::string& program, const std::function<int()>& body);
+// `rank`: this process's rank in an MPI run (0 otherwise). Rank 0 speaks as a serial run does.
+// Another rank names itself in its messages, says nothing of an interruption (the ranks agree on
+// it, rank 0 reports it), and waits a second before reporting bad input: every rank reads the same
+// scene and meets the same error, and rank 0's message with its abort of the job come first, so a
+// user sees it once; an error of that rank's own is still printed after the wait.
+int runDriver(const std::string& program, const std::function<int()>& body, int rank = 0);
 
 }  // namespace mfwave
