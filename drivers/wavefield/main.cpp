@@ -1,7 +1,7 @@
 // wavefield: runs any scene with the reference finite-difference discretisation (a scalar wave,
 // rho u_tt = (lambda + 2 mu) Lap(u)) on a line, rectangle or block, and writes probes, energy,
 // VTK frames and PNG frames as the scene asks. It is the sample of how every study driver is
-// wired: scene -> particles + neighbours -> method -> integrator -> observers -> summary.
+// wired: scene -> lattice -> method (stencils) -> integrator -> observers -> summary.
 //
 //   wavefield --scene data/scenes/block-ricker.toml [--set key=value ...] [--out DIR]
 //   mpirun -np 2 wavefield ...   (each rank steps a block of the lattice; the same numbers)
@@ -66,22 +66,6 @@ std::uint8_t fixedFaces(const Scene& scene) {
   return facesWith(scene.boundaries, BoundaryType::Fixed);
 }
 
-template <int D>
-Index nearestParticle(const ParticleSet<D>& particles, const std::vector<Real>& position) {
-  Vec<D> x;
-  for (int a = 0; a < D; ++a) x[a] = position[static_cast<std::size_t>(a)];
-  Index best = 0;
-  Real bestDistance = std::numeric_limits<Real>::infinity();
-  for (Index i = 0; i < particles.physicalCount(); ++i) {
-    const Real d = (particles.position(i) - x).squaredNorm();
-    if (d < bestDistance) {
-      bestDistance = d;
-      best = i;
-    }
-  }
-  return best;
-}
-
 // The geometry's lattice: buildParticles numbers its nodes x fastest, as the lattice stencils do.
 template <int D>
 std::array<Index, D> latticeNodes(const GeometrySpec& geometry) {
@@ -98,11 +82,15 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
   const Stopwatch setup;
   RunSummary summary(kProgram, scene.info.name, scene.method.name, scene.integrator.name);
 
-  // particles: the box lattice
-  const ParticleSet<D> particles = buildParticles<D>(scene.geometry);
-  if (particles.ghostCount() != 0)
+  // the box lattice, described by its corners: a rank builds only its own block's particles
+  if (scene.geometry.ghostLayers > 0 && scene.geometry.ghostFaces != 0)
     throw InputError("geometry.ghost_layers", "the finite_difference method takes no ghost particles");
   const Real dx = scene.geometry.spacing;
+  const Vec<D> lower = Eigen::Map<const Vec<D>>(scene.geometry.lower.data());
+  const Vec<D> upper = Eigen::Map<const Vec<D>>(scene.geometry.upper.data());
+  const std::array<Index, D> nodes = latticeNodes<D>(scene.geometry);
+  Index nodeCount = 1;
+  for (Index n : nodes) nodeCount *= n;
 
   // discretisation: the scalar reference with c^2 = (lambda + 2 mu) / rho, as lattice stencils
   // (nothing stored per particle). Each point force acts on the particle nearest its position (the
@@ -114,18 +102,10 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
   fd.fixedFaces = fixedFaces(scene);
   std::vector<SparseLoad> loads;
   for (const LoadSpec& load : scene.loads)
-    loads.push_back({{nearestParticle(particles, load.position)}, {load.amplitude}, &load.timeFunction});
-  LatticeSecondOrderSystem<D, 1> serial = finiteDifferenceLatticeSystem<D>(latticeNodes<D>(scene.geometry), fd, loads);
-
-  // integrator, with the step a fraction of the operator's stable central-difference step (the
-  // Gershgorin bound, exact for this operator; the power-iteration estimate is reported beside it)
-  // Every integrator's step is checked against its own limit before any work (exit 2 above it).
-  const StableTimeStep stable = centralDifferenceStableStep(serial, 1e-6, 2000);
-  const Real dt = scene.integrator.timeStepFor(stable.safe());
-  const StepLimitCheck check = checkStepLimit(scene.integrator, scene.stability, 2 / stable.safe(), dt, stable.safe(),
-                                              "the Gershgorin bound of the operator (exact for this stencil)",
-                                              "at dx = " + std::to_string(dx));
-  if (!check.note.empty()) summary.notes.add(check.note);
+    loads.push_back({{nearestLatticeNode<D>(lower, upper, dx, Eigen::Map<const Vec<D>>(load.position.data()))},
+                     {load.amplitude},
+                     &load.timeFunction});
+  LatticeSecondOrderSystem<D, 1> serial = finiteDifferenceLatticeSystem<D>(nodes, fd, loads);
 
   // Under mpirun each rank steps its block of the lattice (LatticeShare): every row, probe and
   // energy is the serial run's bit for bit; rank 0 writes the tables and the summary.
@@ -141,21 +121,33 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
   }
 #endif
   const bool writer = rank == 0;
+
+  // integrator, with the step a fraction of the operator's stable central-difference step (the
+  // Gershgorin bound, exact for this operator; the power-iteration estimate is reported beside it),
+  // both over the ranks' shares on ranks (the serial figures, bit for bit).
+  // Every integrator's step is checked against its own limit before any work (exit 2 above it).
+  const StableTimeStep stable = centralDifferenceStableStep(*system, 1e-6, 2000);
+  const Real dt = scene.integrator.timeStepFor(stable.safe());
+  const StepLimitCheck check = checkStepLimit(scene.integrator, scene.stability, 2 / stable.safe(), dt, stable.safe(),
+                                              "the Gershgorin bound of the operator (exact for this stencil)",
+                                              "at dx = " + std::to_string(dx));
+  if (!check.note.empty()) summary.notes.add(check.note);
   auto integrator = makeSecondOrderIntegrator(scene.integrator.name, scene.integrator.options);
   const Vector zero = Vector::Zero(system->size());
   integrator->initialise(*system, 0, zero, zero, dt);
 
   // observers
   StabilityMonitor monitor(scene.stability.options(1, loadsQuietAfter(scene)));
-  std::vector<Probe> probeList = resolveProbes(scene.probes, particles);
+  std::vector<Probe> probeList = resolveProbesOnLattice(scene.probes, scene.geometry);
   for (Probe& probe : probeList) probe.component = 0;  // a scalar state has one component
   EnergyObserver energy(EnergyObserver::ofLinearSystem(*system));
-  ProgressReporter progress(scene.integrator.endTime, particles.size(), !cli.quiet && writer);
+  ProgressReporter progress(scene.integrator.endTime, nodeCount, !cli.quiet && writer);
   TimeLoop loop;
   loop.add(monitor);
   loop.add(progress);
   if (scene.output.energy) loop.add(energy, scene.output.probeEvery);
   std::optional<ProbeRecorder> probes;
+  std::optional<ParticleSet<D>> particles;  // for the frames: the whole lattice, or a rank's block
   std::optional<ParticleFrames<D>> frames;
 #ifdef MFWAVE_WITH_MPI
   std::optional<RankProbes> rankProbes;
@@ -166,7 +158,11 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
     rankProbes->sampleAtEnd(false);  // the serial recorder's rows
     if (!scene.probes.empty()) loop.add(*rankProbes, scene.output.probeEvery);
     if (scene.output.vtk) {
-      pieces.emplace(particles, share->ownedNodes(), folder, "frame", 1, rank, ranks);
+      const Box<D>& owned = share->system().owned();
+      particles.emplace(makeLattice<D>(lower, upper, dx, owned.lo, owned.hi));
+      std::vector<Index> mine(static_cast<std::size_t>(particles->size()));
+      for (std::size_t k = 0; k < mine.size(); ++k) mine[k] = static_cast<Index>(k);
+      pieces.emplace(*particles, std::move(mine), folder, "frame", 1, rank, ranks);
       loop.add(*pieces, scene.output.every);
     }
   }
@@ -177,7 +173,8 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
     typename ParticleFrames<D>::Settings frameOptions = frameSettings<D>(scene.output);
     frameOptions.components = 1;  // a scalar state
     if (frameOptions.pngOptions.component != PngOptions::magnitude) frameOptions.pngOptions.component = 0;
-    frames.emplace(particles, folder, "frame", frameOptions);
+    particles.emplace(buildParticles<D>(scene.geometry));
+    frames.emplace(*particles, folder, "frame", frameOptions);
     frames->attachTo(loop, scene.output.every);
   }
 
@@ -230,7 +227,7 @@ int run(const Scene& scene, const std::string& folder, const DriverOptions& cli)
   std::vector<std::string> growth;
   noteAllowedGrowth(growth, "", {monitor.growthMessage()});
   summary.notes.addAll(growth);
-  summary.particles = particles.size();
+  summary.particles = nodeCount;
   summary.steps = stats.steps;
   summary.timeStep = dt;
   summary.simulatedTime = stats.endTime;
@@ -265,9 +262,9 @@ int main(int argc, char** argv) {
   cli.setDefaultScene("block-ricker.toml");
 #ifdef MFWAVE_WITH_MPI
   const MpiSession mpi(argc, argv);  // only under a launcher: a plain run starts no MPI
-  const int rank = MpiSession::rank();
+  const int rank = MpiSession::rank(), ranks = MpiSession::size();
 #else
-  const int rank = 0;
+  const int rank = 0, ranks = 1;
 #endif
   if (const auto exit = cli.parse(argc, argv)) return *exit;
 
@@ -277,11 +274,13 @@ int main(int argc, char** argv) {
     reader.checkAllKeysRead();  // unknown keys: before any work
     if (scene.method.name != "finite_difference")
       throw InputError("method.name", "wavefield runs the finite_difference method only");
-    // 0.7 KiB per particle measured (block-ricker at 68,921 particles: its sparse operator, the state,
-    // the probes), doubled for a margin.
+    // 94 bytes per node measured (block-ricker at dx = 0.005, 8.1 x 10^6 nodes: the state, the
+    // stable-step estimate's vectors; the lattice stencils are 15 kB), doubled and rounded up; a
+    // rank holds its share (74 bytes per node on 2 ranks).
     const std::string why = memoryRefusal(
         "geometry.spacing = " + mfwave::scene::formatNumber(scene.geometry.spacing),
-        {static_cast<double>(scene.geometry.particleCount()), 1536, "the finite-difference wave, 0.7 KiB measured"});
+        {static_cast<double>(scene.geometry.particleCount()) / ranks, 256,
+         "the finite-difference wave on lattice stencils, 94 bytes measured"});
     if (!why.empty()) reader.fail("geometry.spacing", why);
 #ifdef MFWAVE_WITH_MPI
     // On several ranks each writes its own share of every checkpoint and rank 0 one manifest.

@@ -4,7 +4,7 @@
 
 #include <cmath>
 #include <limits>
-#include <random>
+#include <cstdint>
 
 namespace mfwave {
 
@@ -31,9 +31,21 @@ Vector inverseLumpedMass(const LinearOperatorSystem& system) {
   return mass.cwiseInverse();
 }
 
-// Gershgorin: every eigenvalue of M^{-1} K lies in a disc around a row's diagonal.
+// Gershgorin: every eigenvalue of M^{-1} K lies in a disc around a row's diagonal (the largest
+// over the ranks of a distributed system).
 Real gershgorinOmegaSquared(const LinearOperatorSystem& system, const Vector& inverseMass) {
-  return system.stiffnessAbsoluteRowSums().cwiseProduct(inverseMass).maxCoeff();
+  return system.maximum(system.stiffnessAbsoluteRowSums().cwiseProduct(inverseMass).maxCoeff());
+}
+
+// The power iteration's start: a value in [-1, 1) per global unknown from a hash of its number
+// (splitmix64), so it has components along every mode and is the same vector on any number of
+// ranks.
+Real startValue(Index i) {
+  std::uint64_t z = 0x9e3779b97f4a7c15ULL * (static_cast<std::uint64_t>(i) + 20261121ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  z ^= z >> 31;
+  return static_cast<Real>(z >> 11) * 0x1.0p-52 - 1;
 }
 
 }  // namespace
@@ -51,19 +63,18 @@ StableTimeStep centralDifferenceStableStep(const LinearOperatorSystem& system, R
   StableTimeStep result;
   result.gershgorinOmegaSquared = gershgorinOmegaSquared(system, inverseMass);
 
-  // Power iteration; the start has components along every mode (random signs), and the quotient
-  // x.(M^-1 K x) / x.x tends to the dominant eigenvalue.
-  std::mt19937_64 random(20261121);
-  std::uniform_real_distribution<Real> uniform(-1, 1);
+  // Power iteration; the start has components along every mode, and the quotient
+  // x.(M^-1 K x) / x.x tends to the dominant eigenvalue. Dot products through the system, so a
+  // distributed one sums over its ranks in the serial order and every rank gets the serial figure.
   Vector x(n), y(n);
-  for (Index i = 0; i < n; ++i) x[i] = uniform(random);
-  x.normalize();
+  system.fillByGlobalIndex(x, startValue);
+  x /= std::sqrt(system.dot(x, x));
   Real previous = 0;
   for (int iteration = 1; iteration <= maximumIterations; ++iteration) {
     system.applyStiffness(x, y);
     y.array() *= inverseMass.array();
-    const Real quotient = x.dot(y);
-    const Real norm = y.norm();
+    const Real quotient = system.dot(x, y);
+    const Real norm = std::sqrt(system.dot(y, y));
     result.iterations = iteration;
     result.powerIterationOmegaSquared = quotient;
     if (norm == 0) break;  // K x = 0: no stiffness at all

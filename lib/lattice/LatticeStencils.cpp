@@ -112,15 +112,24 @@ void LatticeStencils<D, C>::multiply(const Vector& x, Vector& y) const {
 }
 
 template <int D, int C>
-Vector LatticeStencils<D, C>::absoluteRowSums() const {
-  Vector sums(C * types_.nodeCount());
-  forEachLatticeNode<D>(types_, [&](Index p, Index type) {
+std::vector<Real> LatticeStencils<D, C>::absoluteRowSumsPerType() const {
+  std::vector<Real> sums(static_cast<std::size_t>(C * typeCount()), 0.0);
+  for (Index type = 0; type < typeCount(); ++type)
     for (int c = 0; c < C; ++c) {
       Real s = 0;
       for (Index e = begin(type); e < end(type); ++e)
         for (int d = 0; d < C; ++d) s += std::abs(block(e)[C * c + d]);
-      sums[C * p + c] = s;
+      sums[static_cast<std::size_t>(C * type + c)] = s;
     }
+  return sums;
+}
+
+template <int D, int C>
+Vector LatticeStencils<D, C>::absoluteRowSums() const {
+  const std::vector<Real> perType = absoluteRowSumsPerType();
+  Vector sums(C * types_.nodeCount());
+  forEachLatticeNode<D>(types_, [&](Index p, Index type) {
+    for (int c = 0; c < C; ++c) sums[C * p + c] = perType[static_cast<std::size_t>(C * type + c)];
   });
   return sums;
 }

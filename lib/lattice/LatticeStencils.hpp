@@ -55,6 +55,8 @@ class LatticeStencils {
   // y = A x and the row sums of |A|, over the whole lattice.
   void multiply(const Vector& x, Vector& y) const;
   Vector absoluteRowSums() const;
+  // The row sums of |A| per row type, C values each (what absoluteRowSums gives each node).
+  std::vector<Real> absoluteRowSumsPerType() const;
   // The operator as a sparse matrix (for checks on small lattices).
   SparseMatrix toSparse() const;
   // max |A_stencil - matrix| / max |matrix| for `matrix` assembled on the lattice of types() by the

@@ -25,6 +25,18 @@ std::array<Index, D> latticeIntervals(const Vec<D>& lower, const Vec<D>& upper, 
 // faceMask marks the faces each surface particle lies on.
 template <int D>
 ParticleSet<D> makeLattice(const Vec<D>& lower, const Vec<D>& upper, Real dx);
+// The particles of the lattice's nodes [first, end) per axis (a rank's block), with the positions,
+// face tags and global ids (x-fastest node numbers) the whole lattice gives them. Throws
+// InputError("lattice") for a range outside the lattice or empty.
+template <int D>
+ParticleSet<D> makeLattice(const Vec<D>& lower, const Vec<D>& upper, Real dx, const std::array<Index, D>& first,
+                           const std::array<Index, D>& end);
+
+// The number (x fastest) of the lattice node nearest x, found per axis by the nodes' coordinates;
+// on a tie the lower node, as a search over makeLattice's particles in their order finds it. Costs
+// nothing per node, so a rank can place probes and point loads without the whole lattice.
+template <int D>
+Index nearestLatticeNode(const Vec<D>& lower, const Vec<D>& upper, Real dx, const Vec<D>& x);
 
 ParticleSet<1> makeLine(Real x0, Real x1, Real dx);
 ParticleSet<2> makeRectangle(const Vec2& lower, const Vec2& upper, Real dx);

@@ -7,6 +7,7 @@
 
 #include "systems/SecondOrderSystem.hpp"
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -38,6 +39,14 @@ class LinearOperatorSystem : public SecondOrderSystem {
   // a . b over all the system's unknowns (the load work of the energy ledger). A system may fix the
   // order of the sum, so that a distributed system (lib/decomposition) gives its serial bits.
   virtual Real dot(const Vector& a, const Vector& b) const { return a.dot(b); }
+  // The largest of `value` over the ranks of a distributed system (collective), `value` otherwise.
+  virtual Real maximum(Real value) const { return value; }
+  // Each of this system's values set from its global unknown's number (the place it has in the
+  // serial system): value(i) for unknown i here; a distributed system maps its own.
+  virtual void fillByGlobalIndex(Vector& x, const std::function<Real(Index)>& value) const {
+    x.resize(size());
+    for (Index i = 0; i < size(); ++i) x[i] = value(i);
+  }
   // The diagonal of a lumped M; throws InputError("mass") when M is not diagonal.
   virtual Vector lumpedMass() const = 0;
   // sum_j |K_ij| for every row i (Gershgorin).

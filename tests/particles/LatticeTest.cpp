@@ -149,3 +149,54 @@ TEST(Lattice, InvertedOrEmptyBoxIsAGeometryError) {
   EXPECT_EQ(errorKey([] { makeBlock(Vec3(0, 0, 2), Vec3(1, 1, 1), 0.5); }, &message), "geometry");
   EXPECT_NE(message.find("axis z"), std::string::npos) << message;
 }
+
+// A rank's block of the lattice: the particles of the whole lattice's nodes in the block, in their
+// order, with the same positions (bit for bit), face tags and global ids.
+TEST(Lattice, ABlockHasTheWholeLatticesParticles) {
+  const Vec3 lower(-0.3, 0.1, 2.0), upper(0.7, 0.9, 2.6);
+  const Real dx = 0.1;
+  const ParticleSet<3> whole = makeLattice<3>(lower, upper, dx);  // 11 x 9 x 7
+  const std::array<Index, 3> first{3, 0, 2}, end{11, 5, 6};
+  const ParticleSet<3> block = makeLattice<3>(lower, upper, dx, first, end);
+  ASSERT_EQ(block.size(), 8 * 5 * 4);
+  Index k = 0;
+  for (Index z = first[2]; z < end[2]; ++z)
+    for (Index y = first[1]; y < end[1]; ++y)
+      for (Index x = first[0]; x < end[0]; ++x, ++k) {
+        const Index p = x + 11 * (y + 9 * z);
+        for (int a = 0; a < 3; ++a) EXPECT_EQ(block.position(k)[a], whole.position(p)[a]) << k;
+        EXPECT_EQ(block.faceMask[static_cast<std::size_t>(k)], whole.faceMask[static_cast<std::size_t>(p)]) << k;
+        EXPECT_EQ(block.globalId[static_cast<std::size_t>(k)], p);
+      }
+  EXPECT_EQ(errorKey([&] { makeLattice<3>(lower, upper, dx, {0, 0, 0}, {12, 9, 7}); }), "lattice");
+  EXPECT_EQ(errorKey([&] { makeLattice<3>(lower, upper, dx, {4, 0, 0}, {4, 9, 7}); }), "lattice");
+}
+
+// The nearest node by lattice arithmetic is the one a search over the particles finds (the first
+// of equally near ones), for points inside, on and between nodes, at ties and beyond the box.
+TEST(Lattice, TheNearestNodeIsTheOneASearchFinds) {
+  const Vec2 lower(-0.3, 0.1), upper(0.7, 0.9);
+  const Real dx = 0.1;
+  const ParticleSet<2> whole = makeLattice<2>(lower, upper, dx);
+  auto search = [&](const Vec2& x) {
+    Index best = 0;
+    Real distance = std::numeric_limits<Real>::infinity();
+    for (Index p = 0; p < whole.size(); ++p)
+      if ((whole.position(p) - x).squaredNorm() < distance) {
+        distance = (whole.position(p) - x).squaredNorm();
+        best = p;
+      }
+    return best;
+  };
+  int checked = 0;
+  for (Real x = -0.45; x <= 0.85; x += 0.0125)
+    for (Real y = -0.05; y <= 1.05; y += 0.025) {
+      const Vec2 point(x, y);
+      EXPECT_EQ(nearestLatticeNode<2>(lower, upper, dx, point), search(point)) << x << ", " << y;
+      ++checked;
+    }
+  // Exactly halfway between two nodes' coordinates: the lower one.
+  const Vec2 half(0.5 * (whole.position(3)[0] + whole.position(4)[0]), whole.position(0)[1]);
+  EXPECT_EQ(nearestLatticeNode<2>(lower, upper, dx, half), search(half));
+  EXPECT_GT(checked, 4000);
+}

@@ -269,6 +269,33 @@ Vector DistributedLatticeSystem<D, C>::lumpedMass() const {
 }
 
 template <int D, int C>
+Vector DistributedLatticeSystem<D, C>::stiffnessAbsoluteRowSums() const {
+  const std::vector<Real> perType = serial_.stiffness().absoluteRowSumsPerType();
+  Vector sums(size());
+  forEachOwnedNode([&](Index k, Index type) {
+    for (int c = 0; c < C; ++c) sums[C * k + c] = perType[static_cast<std::size_t>(C * type + c)];
+  });
+  return sums;
+}
+
+template <int D, int C>
+Real DistributedLatticeSystem<D, C>::maximum(Real value) const {
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, communicator_);
+  return value;
+}
+
+template <int D, int C>
+void DistributedLatticeSystem<D, C>::fillByGlobalIndex(Vector& x, const std::function<Real(Index)>& value) const {
+  Box<D> all;
+  all.hi = serial_.types().nodes();
+  x.resize(size());
+  owned().forEachNode([&](const std::array<Index, D>& node) {
+    const Index k = owned().localIndex(node), global = all.localIndex(node);
+    for (int c = 0; c < C; ++c) x[C * k + c] = value(C * global + c);
+  });
+}
+
+template <int D, int C>
 std::unique_ptr<CentredDampingSolve> DistributedLatticeSystem<D, C>::centredDamping(
     Real dt, const std::vector<Index>& prescribedDofs) const {
   if (!prescribedDofs.empty())

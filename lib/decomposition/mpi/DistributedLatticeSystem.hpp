@@ -56,11 +56,12 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   Real strainEnergy(const Vector& u) const override;
   Real dampingPower(const Vector& v) const override;
   Real dot(const Vector& a, const Vector& b) const override;
-  // The owned part of the serial figures. stiffnessAbsoluteRowSums builds the whole lattice's
-  // vector first: a set-up cost of C N values per rank (the stable step is estimated on the serial
-  // system anyway, docs/scaling.md).
+  // The owned part of the serial figures, from the per-type values (nothing of the whole lattice).
   Vector lumpedMass() const override;
-  Vector stiffnessAbsoluteRowSums() const override { return restrict(serial_.stiffnessAbsoluteRowSums()); }
+  Vector stiffnessAbsoluteRowSums() const override;
+  // The largest over the ranks; each owned value from its lattice dof's number (node * C + c).
+  Real maximum(Real value) const override;
+  void fillByGlobalIndex(Vector& x, const std::function<Real(Index)>& value) const override;
   // Eq. (32) with (M + dt/2 C)^-1 per row type. Throws InputError("prescribed_displacement") for
   // prescribed dofs.
   std::unique_ptr<CentredDampingSolve> centredDamping(Real dt, const std::vector<Index>& prescribedDofs) const override;

@@ -3,6 +3,7 @@
 #include "io/scene/Faces.hpp"
 #include "io/scene/Format.hpp"
 #include "io/scene/ScenePath.hpp"
+#include "particles/Lattice.hpp"
 
 #include <limits>
 
@@ -46,8 +47,11 @@ std::vector<ProbeSpec> readProbes(SceneReader& reader, const GeometrySpec& geome
   return probes;
 }
 
-template <int D>
-std::vector<Probe> resolveProbes(const std::vector<ProbeSpec>& probes, const ParticleSet<D>& particles) {
+namespace {
+
+// The probes with each position placed by `nearest` and each particle index checked against `count`.
+template <class Nearest>
+std::vector<Probe> resolveWith(const std::vector<ProbeSpec>& probes, Index count, Nearest&& nearest) {
   std::vector<Probe> out;
   for (std::size_t i = 0; i < probes.size(); ++i) {
     const ProbeSpec& spec = probes[i];
@@ -56,24 +60,57 @@ std::vector<Probe> resolveProbes(const std::vector<ProbeSpec>& probes, const Par
     probe.component = spec.component;
     probe.quantity = spec.quantity;
     if (spec.particle) {
-      if (*spec.particle >= particles.physicalCount())
+      if (*spec.particle >= count)
         throw InputError(scene::childPath(scene::indexPath("probe", i), "particle"),
-                         "must be less than the number of particles, " + std::to_string(particles.physicalCount()));
+                         "must be less than the number of particles, " + std::to_string(count));
       probe.particle = *spec.particle;
     } else {
-      const Vec<D> x = Eigen::Map<const Vec<D>>(spec.position->data());
-      Real best = std::numeric_limits<Real>::infinity();
-      for (Index p = 0; p < particles.physicalCount(); ++p) {
-        const Real distance = (particles.position(p) - x).squaredNorm();
-        if (distance < best) {
-          best = distance;
-          probe.particle = p;
-        }
-      }
+      probe.particle = nearest(*spec.position);
     }
     out.push_back(probe);
   }
   return out;
+}
+
+template <int D>
+std::vector<Probe> resolveOnLattice(const std::vector<ProbeSpec>& probes, const GeometrySpec& geometry) {
+  const Vec<D> lower = Eigen::Map<const Vec<D>>(geometry.lower.data());
+  const Vec<D> upper = Eigen::Map<const Vec<D>>(geometry.upper.data());
+  return resolveWith(probes, static_cast<Index>(geometry.particleCount()), [&](const std::vector<Real>& position) {
+    return nearestLatticeNode<D>(lower, upper, geometry.spacing, Eigen::Map<const Vec<D>>(position.data()));
+  });
+}
+
+}  // namespace
+
+template <int D>
+std::vector<Probe> resolveProbes(const std::vector<ProbeSpec>& probes, const ParticleSet<D>& particles) {
+  return resolveWith(probes, particles.physicalCount(), [&](const std::vector<Real>& position) {
+    const Vec<D> x = Eigen::Map<const Vec<D>>(position.data());
+    Index nearest = 0;
+    Real best = std::numeric_limits<Real>::infinity();
+    for (Index p = 0; p < particles.physicalCount(); ++p) {
+      const Real distance = (particles.position(p) - x).squaredNorm();
+      if (distance < best) {
+        best = distance;
+        nearest = p;
+      }
+    }
+    return nearest;
+  });
+}
+
+std::vector<Probe> resolveProbesOnLattice(const std::vector<ProbeSpec>& probes, const GeometrySpec& geometry) {
+  if (geometry.ghostLayers > 0 && geometry.ghostFaces != 0)
+    throw InputError("geometry.ghost_layers", "probes placed on the lattice alone need a lattice without ghosts");
+  switch (geometry.dimension) {
+    case 1:
+      return resolveOnLattice<1>(probes, geometry);
+    case 2:
+      return resolveOnLattice<2>(probes, geometry);
+    default:
+      return resolveOnLattice<3>(probes, geometry);
+  }
 }
 
 template std::vector<Probe> resolveProbes<1>(const std::vector<ProbeSpec>&, const ParticleSet<1>&);

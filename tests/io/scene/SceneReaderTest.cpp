@@ -313,6 +313,11 @@ TEST(SceneReader, BlockRickerExampleBuildsItsParticles) {
   EXPECT_EQ(probes[0].particle, 10 + 10 * 21 + 10 * 441);  // (0.5, 0.5, 0.5)
   EXPECT_EQ(probes[1].particle, 10 + 10 * 21 + 16 * 441);  // (0.5, 0.5, 0.8)
   EXPECT_EQ(probes[1].component, 2);
+  // Placed on the lattice alone (what a rank of a split run does), the same particles.
+  const std::vector<Probe> onLattice = resolveProbesOnLattice(s.probes, s.geometry);
+  ASSERT_EQ(onLattice.size(), 2u);
+  EXPECT_EQ(onLattice[0].particle, probes[0].particle);
+  EXPECT_EQ(onLattice[1].particle, probes[1].particle);
   // c_p = sqrt((lambda + 2 mu) / rho) = sqrt(3); dt <= cfl dx / c_p and divides end_time.
   const Real stable = s.geometry.spacing / std::sqrt(s.material.material().pWaveModulus() / s.material.density);
   EXPECT_EQ(s.integrator.stepsFor(stable), 104);
