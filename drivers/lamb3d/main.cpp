@@ -645,9 +645,7 @@ int main(int argc, char** argv) {
     const Plan plan = readPlan(reader);
     reader.checkAllKeysRead();
 #ifdef MFWAVE_WITH_MPI
-    // On several ranks each writes its own share of every checkpoint and rank 0 one manifest.
-    const CheckpointStoreMaker storeMaker =
-        MpiSession::size() > 1 ? CheckpointStoreMaker(makeRankCheckpointStore) : CheckpointStoreMaker();
+    const CheckpointStoreMaker storeMaker = rankAwareCheckpointStoreMaker();  // per rank on several ranks
 #else
     const CheckpointStoreMaker storeMaker;
 #endif

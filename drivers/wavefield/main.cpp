@@ -283,9 +283,7 @@ int main(int argc, char** argv) {
          "the finite-difference wave on lattice stencils, 94 bytes measured"});
     if (!why.empty()) reader.fail("geometry.spacing", why);
 #ifdef MFWAVE_WITH_MPI
-    // On several ranks each writes its own share of every checkpoint and rank 0 one manifest.
-    const CheckpointStoreMaker storeMaker =
-        MpiSession::size() > 1 ? CheckpointStoreMaker(makeRankCheckpointStore) : CheckpointStoreMaker();
+    const CheckpointStoreMaker storeMaker = rankAwareCheckpointStoreMaker();  // per rank on several ranks
 #else
     const CheckpointStoreMaker storeMaker;
 #endif

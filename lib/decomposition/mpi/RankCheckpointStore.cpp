@@ -1,5 +1,7 @@
 #include "decomposition/mpi/RankCheckpointStore.hpp"
 
+#include "decomposition/mpi/MpiSession.hpp"
+
 #include "core/Error.hpp"
 #include "io/checkpoint/CheckpointFolder.hpp"
 #include "io/checkpoint/CheckpointManifest.hpp"
@@ -198,6 +200,11 @@ std::shared_ptr<CheckpointStore> makeRankCheckpointStore(const std::string& fold
                                                          const CheckpointSettings& settings,
                                                          const std::string& sceneText) {
   return std::make_shared<RankCheckpointStore>(folder, sceneDigest, settings, sceneText, MPI_COMM_WORLD);
+}
+
+RankAwareStoreMaker rankAwareCheckpointStoreMaker() {
+  // MpiSession::size(): 1 when no launcher started MPI (a plain run of an MPI build).
+  return MpiSession::size() > 1 ? RankAwareStoreMaker(makeRankCheckpointStore) : RankAwareStoreMaker();
 }
 
 RankZeroAloneLoop::RankZeroAloneLoop() {

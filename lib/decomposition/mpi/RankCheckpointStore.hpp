@@ -24,6 +24,7 @@
 
 #include <mpi.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -79,6 +80,12 @@ class RankCheckpointStore : public CheckpointStore {
 std::shared_ptr<CheckpointStore> makeRankCheckpointStore(const std::string& folder, const std::string& sceneDigest,
                                                          const CheckpointSettings& settings,
                                                          const std::string& sceneText);
+
+// What a driver passes prepareOutputFolder as its store maker: makeRankCheckpointStore when this
+// process is one of several MPI ranks, empty (the serial folder store) otherwise.
+using RankAwareStoreMaker = std::function<std::shared_ptr<CheckpointStore>(
+    const std::string&, const std::string&, const CheckpointSettings&, const std::string&)>;
+RankAwareStoreMaker rankAwareCheckpointStoreMaker();
 
 // Around a time loop that runs on rank 0 alone, on every rank (constructed before the loop, on the
 // ranks that skip it too). Does nothing unless a RankCheckpointStore is installed.
