@@ -67,13 +67,13 @@ LocalStencils<D, C>::LocalStencils(const LatticeStencils<D, C>& stencils, const 
 }
 
 template <int D, int C>
-void LocalStencils<D, C>::multiply(const Real* x, Real* y, const std::vector<char>* direct) const {
+void LocalStencils<D, C>::multiply(const Real* x, Real* y, const std::vector<char>* direct, OwnedLines lines) const {
   forEachProduct(
       x,
       [y](Index k, Index, const Real* product, Index stride) {
         for (int c = 0; c < C; ++c) y[C * k + c] = product[c * stride];
       },
-      [direct](Index type) { return direct && (*direct)[static_cast<std::size_t>(type)]; });
+      [direct](Index type) { return direct && (*direct)[static_cast<std::size_t>(type)]; }, lines);
 }
 
 template class LocalStencils<1>;

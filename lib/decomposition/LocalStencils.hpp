@@ -40,7 +40,9 @@ class LocalStencils {
   // per node of the local box, in its order). OpenMP-parallel over lines along x. `direct`, when
   // given, marks the row types whose middle of line is computed row by row, as the serial
   // LatticeStencils::forEachProduct does for its `direct` types (the dashpot rows of a fused solve).
-  void multiply(const Real* x, Real* y, const std::vector<char>* direct = nullptr) const;
+  // `lines` as forEachProduct's (below): the rows of the other lines are left as they are in y.
+  void multiply(const Real* x, Real* y, const std::vector<char>* direct = nullptr,
+                OwnedLines lines = OwnedLines::All) const;
   // The products one by one, as LatticeStencils::forEachProduct gives the serial ones: f(k, type,
   // product, stride) for every owned node k (the owned box's order) with its row applied to x,
   // component c at product[c * stride]; a line's middle goes row by row when direct(type) holds.

@@ -14,12 +14,11 @@ RankStencilProduct<D, C>::RankStencilProduct(const LatticeStencils<D, C>& stenci
 
 template <int D, int C>
 void RankStencilProduct<D, C>::multiply(const Real* x, Real* y, const std::vector<char>* direct) {
-  forEachProduct(
-      x,
-      [y](Index k, Index, const Real* product, Index stride) {
-        for (int c = 0; c < C; ++c) y[C * k + c] = product[c * stride];
-      },
-      [direct](Index type) { return direct && (*direct)[static_cast<std::size_t>(type)]; });
+  // As forEachProduct: the rows that need no halo while it is in flight, then the others.
+  startExchange(x);
+  rows_->multiply(local_.data(), y, direct, OwnedLines::WithoutHalo);
+  exchange_->finish(local_.data());
+  rows_->multiply(local_.data(), y, direct, OwnedLines::WithHalo);
 }
 
 template <int D, int C>
