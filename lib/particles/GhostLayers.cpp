@@ -13,9 +13,13 @@
 
 namespace mfwave {
 
+namespace {
+
+// The checks, then the extended index range per axis ([first, last], with extra layers only on
+// chosen sides) and the ghost count.
 template <int D>
-Index addGhostLayers(ParticleSet<D>& set, const Vec<D>& lower, const Vec<D>& upper, Real dx,
-                     int layers, std::uint8_t faces) {
+Index extendedRange(const Vec<D>& lower, const Vec<D>& upper, Real dx, int layers, std::uint8_t faces,
+                    std::array<Index, D>& n, std::array<Index, D>& first, std::array<Index, D>& last) {
   if (layers < 0) {
     throw InputError("ghost_layers", "must be zero or more, got " + std::to_string(layers));
   }
@@ -23,11 +27,7 @@ Index addGhostLayers(ParticleSet<D>& set, const Vec<D>& lower, const Vec<D>& upp
     throw InputError("ghost_faces", "mask " + std::to_string(faces) + " names faces that a " +
                                         std::to_string(D) + "-D box does not have");
   }
-  const std::array<Index, D> n = latticeIntervals<D>(lower, upper, dx);
-
-  // Extended index range per axis: [first, last], with extra layers only on chosen sides.
-  std::array<Index, D> first{};
-  std::array<Index, D> last{};
+  n = latticeIntervals<D>(lower, upper, dx);
   Index extendedCount = 1;
   Index boxCount = 1;
   for (int a = 0; a < D; ++a) {
@@ -37,7 +37,24 @@ Index addGhostLayers(ParticleSet<D>& set, const Vec<D>& lower, const Vec<D>& upp
     extendedCount *= last[s] - first[s] + 1;
     boxCount *= n[s] + 1;
   }
-  const Index ghosts = extendedCount - boxCount;
+  return extendedCount - boxCount;
+}
+
+}  // namespace
+
+template <int D>
+Index ghostLayerCount(const Vec<D>& lower, const Vec<D>& upper, Real dx, int layers, std::uint8_t faces) {
+  std::array<Index, D> n{}, first{}, last{};
+  return extendedRange<D>(lower, upper, dx, layers, faces, n, first, last);
+}
+
+template <int D>
+Index addGhostLayers(ParticleSet<D>& set, const Vec<D>& lower, const Vec<D>& upper, Real dx,
+                     int layers, std::uint8_t faces) {
+  std::array<Index, D> n{}, first{}, last{};
+  const Index ghosts = extendedRange<D>(lower, upper, dx, layers, faces, n, first, last);
+  Index extendedCount = 1;
+  for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s) extendedCount *= last[s] - first[s] + 1;
   if (ghosts == 0) return 0;
 
   set.reserve(set.size() + ghosts);
@@ -62,6 +79,9 @@ Index addGhostLayers(ParticleSet<D>& set, const Vec<D>& lower, const Vec<D>& upp
   return ghosts;
 }
 
+template Index ghostLayerCount<1>(const Vec1&, const Vec1&, Real, int, std::uint8_t);
+template Index ghostLayerCount<2>(const Vec2&, const Vec2&, Real, int, std::uint8_t);
+template Index ghostLayerCount<3>(const Vec3&, const Vec3&, Real, int, std::uint8_t);
 template Index addGhostLayers<1>(ParticleSet<1>&, const Vec1&, const Vec1&, Real, int, std::uint8_t);
 template Index addGhostLayers<2>(ParticleSet<2>&, const Vec2&, const Vec2&, Real, int, std::uint8_t);
 template Index addGhostLayers<3>(ParticleSet<3>&, const Vec3&, const Vec3&, Real, int, std::uint8_t);

@@ -27,4 +27,9 @@ template <int D>
 Index addGhostLayers(ParticleSet<D>& set, const Vec<D>& lower, const Vec<D>& upper, Real dx,
                      int layers, std::uint8_t faces);
 
+// How many ghosts addGhostLayers adds for the same arguments (and the same checks), without
+// building them: what a rank of a split run reports for a lattice it does not hold whole.
+template <int D>
+Index ghostLayerCount(const Vec<D>& lower, const Vec<D>& upper, Real dx, int layers, std::uint8_t faces);
+
 }  // namespace mfwave

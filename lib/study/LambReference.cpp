@@ -64,18 +64,28 @@ LambSquareLoad lambReference(const Scene& scene) {
 }
 
 template <int D>
+ProbeSite<D> probeSite(const ParticleSet<D>& particles, Index particle) {
+  return {particles.position(particle), particles.faceMask[static_cast<std::size_t>(particle)]};
+}
+
+template <int D>
 std::optional<LambReceiver> lambReceiver(const Scene& scene, const ParticleSet<D>& particles, const Probe& probe) {
+  return lambReceiver<D>(scene, probeSite<D>(particles, probe.particle), probe);
+}
+
+template <int D>
+std::optional<LambReceiver> lambReceiver(const Scene& scene, const ProbeSite<D>& site, const Probe& probe) {
   if (scene.loads.empty()) return std::nullopt;
   const LoadSpec& load = scene.loads[0];
   const int axis = load.face / 2;
   if (probe.component != axis) return std::nullopt;
-  const Vec<D> x = particles.position(probe.particle);
+  const Vec<D>& x = site.position;
   LambReceiver receiver;
   for (int k = 0; k + 1 < D; ++k) {
     const auto a = static_cast<std::size_t>((axis + 1 + k) % D);
     receiver.offset[static_cast<std::size_t>(k)] = x[static_cast<Index>(a)] - load.centre[a];
   }
-  const bool onFace = (particles.faceMask[static_cast<std::size_t>(probe.particle)] & faceBit(load.face)) != 0;
+  const bool onFace = (site.faceMask & faceBit(load.face)) != 0;
   if (onFace) return receiver;
   receiver.depth = std::abs(x[axis] - load.centre[static_cast<std::size_t>(axis)]);
   if (D == 2) return receiver;
@@ -87,8 +97,12 @@ std::optional<LambReceiver> lambReceiver(const Scene& scene, const ParticleSet<D
   return receiver;
 }
 
+template ProbeSite<2> probeSite<2>(const ParticleSet<2>&, Index);
+template ProbeSite<3> probeSite<3>(const ParticleSet<3>&, Index);
 template std::optional<LambReceiver> lambReceiver<2>(const Scene&, const ParticleSet<2>&, const Probe&);
 template std::optional<LambReceiver> lambReceiver<3>(const Scene&, const ParticleSet<3>&, const Probe&);
+template std::optional<LambReceiver> lambReceiver<2>(const Scene&, const ProbeSite<2>&, const Probe&);
+template std::optional<LambReceiver> lambReceiver<3>(const Scene&, const ProbeSite<3>&, const Probe&);
 
 LambExactResponse::LambExactResponse(const Scene& scene) {
   LambLoad load = lambLoad(scene);

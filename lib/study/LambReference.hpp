@@ -16,6 +16,7 @@
 #include "particles/ParticleSet.hpp"
 
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <optional>
@@ -45,6 +46,19 @@ struct LambReceiver {
 // computed); nothing otherwise.
 template <int D>
 std::optional<LambReceiver> lambReceiver(const Scene& scene, const ParticleSet<D>& particles, const Probe& probe);
+
+// Where a probe reads: its particle's position and face tags (from the particle set, or from the
+// lattice alone on a rank that does not hold the probe's particle).
+template <int D>
+struct ProbeSite {
+  Vec<D> position = Vec<D>::Zero();
+  std::uint8_t faceMask = 0;
+};
+template <int D>
+ProbeSite<D> probeSite(const ParticleSet<D>& particles, Index particle);
+// The same for the probe's particle given as its site.
+template <int D>
+std::optional<LambReceiver> lambReceiver(const Scene& scene, const ProbeSite<D>& site, const Probe& probe);
 
 // The exact response of a Lamb scene at its receivers.
 class LambExactResponse {

@@ -55,6 +55,7 @@ TEST(GhostLayers, TwoLayersOnAllFacesFillTheGrownBlock) {
   ParticleSet<3> set = makeBlock(kLower, kUpper, kDx);
   const Index added = addGhostLayers<3>(set, kLower, kUpper, kDx, 2, allFaces(3));
   EXPECT_EQ(added, 19 * 19 * 19 - 15 * 15 * 15);
+  EXPECT_EQ(ghostLayerCount<3>(kLower, kUpper, kDx, 2, allFaces(3)), added);  // counted without building
   ASSERT_EQ(set.size(), 19 * 19 * 19);
   EXPECT_EQ(set.physicalCount(), 3375);
   EXPECT_EQ(set.ghostCount(), added);
@@ -105,6 +106,10 @@ TEST(GhostLayers, EdgeBetweenTwoChosenFacesIsCompleteOthersAreNot) {
   ParticleSet<3> set = makeBlock(kLower, kUpper, kDx);
   addGhostLayers<3>(set, kLower, kUpper, kDx, 2, faceBit(BoxFace::MinusX) | faceBit(BoxFace::MinusY));
   EXPECT_EQ(set.ghostCount(), 17 * 17 * 15 - 15 * 15 * 15);
+  EXPECT_EQ(ghostLayerCount<3>(kLower, kUpper, kDx, 2, faceBit(BoxFace::MinusX) | faceBit(BoxFace::MinusY)),
+            set.ghostCount());
+  EXPECT_EQ(ghostLayerCount<3>(kLower, kUpper, kDx, 0, allFaces(3)), 0);
+  EXPECT_THROW(ghostLayerCount<3>(kLower, kUpper, kDx, -1, allFaces(3)), InputError);
   const std::set<Offset> ball = fullBall(2);
   const Index edgeMiddle = 7 * 15 * 15;  // (0, 0, 3.5): on the -x/-y edge
   ASSERT_EQ(set.position(edgeMiddle), Vec3(0, 0, 3.5));

@@ -53,8 +53,10 @@ CASES = [
      [(signal.SIGKILL, 0), (signal.SIGTERM, 1)]),
     # The very weak SPH on the 2-D Lamb problem: the energy ledger with its filter loss, transmitting
     # faces (implicit dashpots), probes with deconvolution, VTK frames of the first case.
+    # The kill goes to loop 1 (published_0.25, 561 steps in about 40 ms): loop 3 (281 steps in 5 ms)
+    # could end before the signal arrived on a loaded machine.
     ("lamb2d", "lamb2d", "lamb2d.toml", ["--set", "study.spacings=[0.5, 0.25]", "--set", "integrator.end_time=40"], 100,
-     [(signal.SIGTERM, 0), (signal.SIGKILL, 3)]),
+     [(signal.SIGTERM, 0), (signal.SIGKILL, 1)]),
 ]
 
 NOTES_OF_A_RESTART = ("time loop ", "checkpoint skipped")

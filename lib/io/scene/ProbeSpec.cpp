@@ -101,8 +101,6 @@ std::vector<Probe> resolveProbes(const std::vector<ProbeSpec>& probes, const Par
 }
 
 std::vector<Probe> resolveProbesOnLattice(const std::vector<ProbeSpec>& probes, const GeometrySpec& geometry) {
-  if (geometry.ghostLayers > 0 && geometry.ghostFaces != 0)
-    throw InputError("geometry.ghost_layers", "probes placed on the lattice alone need a lattice without ghosts");
   switch (geometry.dimension) {
     case 1:
       return resolveOnLattice<1>(probes, geometry);

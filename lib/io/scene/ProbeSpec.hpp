@@ -28,9 +28,9 @@ std::vector<ProbeSpec> readProbes(SceneReader& reader, const GeometrySpec& geome
 template <int D>
 std::vector<Probe> resolveProbes(const std::vector<ProbeSpec>& probes, const ParticleSet<D>& particles);
 
-// The same on the box lattice of `geometry` (no ghosts) without its particles: a position becomes
-// the nearest lattice node (nearestLatticeNode, the node resolveProbes finds among makeLattice's
-// particles), so a rank of a split run places probes at no cost per node.
+// The same on the box lattice of `geometry` without its particles: a position becomes the nearest
+// lattice node (nearestLatticeNode, the node resolveProbes finds among makeLattice's particles,
+// which come before any ghosts), so a rank of a split run places probes at no cost per node.
 std::vector<Probe> resolveProbesOnLattice(const std::vector<ProbeSpec>& probes, const GeometrySpec& geometry);
 
 }  // namespace mfwave

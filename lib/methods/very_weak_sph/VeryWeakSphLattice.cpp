@@ -85,15 +85,18 @@ bool needsPatchFace(const VeryWeakSphProblemSettings<D>& settings, int face) {
 }  // namespace
 
 template <int D>
+std::array<Index, D> latticeNodesOf(const VeryWeakSphProblemSettings<D>& settings) {
+  std::array<Index, D> nodes = latticeIntervals<D>(settings.lower, settings.upper, settings.spacing);
+  for (Index& n : nodes) ++n;
+  return nodes;
+}
+
+template <int D>
 std::array<Index, D> checkedLatticeNodes(const ParticleSet<D>& particles, const VeryWeakSphProblemSettings<D>& settings) {
   const Real dx = settings.spacing;
-  const std::array<Index, D> intervals = latticeIntervals<D>(settings.lower, settings.upper, dx);
-  std::array<Index, D> nodes{};
+  const std::array<Index, D> nodes = latticeNodesOf<D>(settings);
   Index count = 1;
-  for (int a = 0; a < D; ++a) {
-    nodes[static_cast<std::size_t>(a)] = intervals[static_cast<std::size_t>(a)] + 1;
-    count *= nodes[static_cast<std::size_t>(a)];
-  }
+  for (Index n : nodes) count *= n;
   if (particles.physicalCount() != count)
     throw InputError("method.operator", "the lattice storage needs the particles of the box lattice (" +
                                             std::to_string(count) + " nodes), got " +
@@ -181,6 +184,9 @@ VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& 
                                           "); use method.operator = \"sparse\"");
 }
 
+template std::array<Index, 1> latticeNodesOf<1>(const VeryWeakSphProblemSettings<1>&);
+template std::array<Index, 2> latticeNodesOf<2>(const VeryWeakSphProblemSettings<2>&);
+template std::array<Index, 3> latticeNodesOf<3>(const VeryWeakSphProblemSettings<3>&);
 template std::array<Index, 1> checkedLatticeNodes<1>(const ParticleSet<1>&, const VeryWeakSphProblemSettings<1>&);
 template std::array<Index, 2> checkedLatticeNodes<2>(const ParticleSet<2>&, const VeryWeakSphProblemSettings<2>&);
 template std::array<Index, 3> checkedLatticeNodes<3>(const ParticleSet<3>&, const VeryWeakSphProblemSettings<3>&);

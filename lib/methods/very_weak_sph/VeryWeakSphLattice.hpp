@@ -33,6 +33,11 @@ struct VeryWeakSphStencils {
   Real mismatch = 0;  // against the check assembly (0 when the compact box is the whole box)
 };
 
+// The nodes per axis of the lattice of settings.lower, settings.upper, settings.spacing. Throws what
+// latticeIntervals throws.
+template <int D>
+std::array<Index, D> latticeNodesOf(const VeryWeakSphProblemSettings<D>& settings);
+
 // The nodes per axis of the lattice of settings.lower, settings.upper, settings.spacing, after
 // checking that the physical particles are that lattice in makeLattice's order (x fastest). Throws
 // InputError("method.operator") naming the first particle that is not.

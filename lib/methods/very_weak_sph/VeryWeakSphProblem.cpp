@@ -3,6 +3,7 @@
 #include "core/Error.hpp"
 #include "kernels/KernelFactory.hpp"
 #include "methods/very_weak_sph/Deconvolution.hpp"
+#include "methods/very_weak_sph/LatticePatchLoad.hpp"
 #include "methods/very_weak_sph/PatchLoad.hpp"
 #include "methods/very_weak_sph/VeryWeakSphLattice.hpp"
 #include "neighbours/CellList.hpp"
@@ -45,10 +46,6 @@ VeryWeakSph<D> assemblyFor(const ParticleSet<D>& particles, const NeighbourList&
   return assembleVeryWeakSph<D>(particles, neighbours, kernel, settings.options);
 }
 
-void appendNonzeros(const Vector& force, const TimeFunction* history, std::vector<SparseLoad>& loads) {
-  loads.push_back(nonzeroLoad(force, history));
-}
-
 }  // namespace
 
 template <int D>
@@ -83,7 +80,7 @@ VeryWeakSphProblem<D>::VeryWeakSphProblem(const ParticleSet<D>& particles,
       method_(assemblyFor<D>(particles, neighbours_, *kernel_, settings)) {
   prescribeFaces(particles, settings);
   if (onLattice(settings)) {
-    buildLattice(particles, settings);
+    buildLattice(checkedLatticeNodes<D>(particles, settings), settings);
     return;
   }
   const bool galerkin = settings.options.variant == VeryWeakSphVariant::Galerkin;
@@ -137,6 +134,18 @@ VeryWeakSphProblem<D>::VeryWeakSphProblem(const ParticleSet<D>& particles,
   if (settings.deconvolution) deconvolution_ = deconvolutionMatrix<D>(particles, neighbours_, *kernel_, data.volume);
 }
 
+template <int D>
+VeryWeakSphProblem<D>::VeryWeakSphProblem(const VeryWeakSphProblemSettings<D>& settings)
+    : kernel_(checkedKernel(settings)),
+      method_{VeryWeakSphData<D>{}, LinearSecondOrderSystem(SparseMatrix(), SparseMatrix(), SparseMatrix())} {
+  if (!onLattice(settings))
+    throw InputError("method.operator", "a problem set up without its particles needs the lattice storage");
+  if (!settings.prescribed.empty())
+    throw InputError("boundaries", "prescribed displacements are set up from the particles' face tags; this "
+                                   "problem has no particles");
+  buildLattice(latticeNodesOf<D>(settings), settings);
+}
+
 // Prescribed displacements (eq. (30)), face by face, particle by particle, component by component.
 template <int D>
 void VeryWeakSphProblem<D>::prescribeFaces(const ParticleSet<D>& particles,
@@ -153,10 +162,9 @@ void VeryWeakSphProblem<D>::prescribeFaces(const ParticleSet<D>& particles,
 }
 
 template <int D>
-void VeryWeakSphProblem<D>::buildLattice(const ParticleSet<D>& particles,
+void VeryWeakSphProblem<D>::buildLattice(const std::array<Index, D>& nodes,
                                          const VeryWeakSphProblemSettings<D>& settings) {
   const VeryWeakSphVariant variant = settings.options.variant;
-  const std::array<Index, D> nodes = checkedLatticeNodes<D>(particles, settings);
   VeryWeakSphStencils<D> stencils = veryWeakSphStencils<D>(settings, nodes);
   latticeDepth_ = stencils.stiffness.types().depth();
   latticeMismatch_ = stencils.mismatch;
@@ -164,6 +172,7 @@ void VeryWeakSphProblem<D>::buildLattice(const ParticleSet<D>& particles,
   // loads (eq. (19)): whole faces from their per-type forces, then patches, as nonzeros
   std::vector<SparseLoad> loads;
   const LatticeRowTypes<D>& types = stencils.stiffness.types();
+  const Index nodeCount = types.nodeCount();
   for (std::size_t i = 0; i < settings.faceTractions.size(); ++i) {
     const std::vector<Real>& perType = stencils.faceLoads[i];
     SparseLoad load{{}, {}, settings.faceTractions[i].history};
@@ -178,22 +187,11 @@ void VeryWeakSphProblem<D>::buildLattice(const ParticleSet<D>& particles,
     }
     loads.push_back(std::move(load));
   }
+  // patches, from their neighbourhoods alone (LatticePatchLoad.hpp)
   for (const PatchTraction<D>& patch : settings.patches) {
-    if (variant == VeryWeakSphVariant::Galerkin) {  // the exact int_patch W_a t
-      const std::vector<Real> weights = patchTentWeights<D>(particles, patch.face, patch.centre, patch.halfWidths,
-                                                            settings.spacing, settings.lower, settings.upper);
-      appendNonzeros(patchNodalForce<D>(weights, settings.spacing, patch.traction), patch.history, loads);
-      continue;
-    }
-    // the kernel variants: T t with t = weight_b traction on the face's facets, as G (weight_b traction)
-    const std::vector<Real> weights = patchLoadWeights<D>(particles, patch.face, patch.centre, patch.halfWidths,
-                                                          settings.spacing, settings.lower, settings.upper);
-    Vector nodal = Vector::Zero(D * particles.physicalCount());
-    for (Index b = 0; b < particles.physicalCount(); ++b)
-      if (weights[static_cast<std::size_t>(b)] != 0) nodal.template segment<D>(D * b) = weights[static_cast<std::size_t>(b)] * patch.traction;
-    Vector force;
-    stencils.patchFaces[static_cast<std::size_t>(patch.face)].multiply(nodal, force);
-    appendNonzeros(force, patch.history, loads);
+    const bool kernelLoad = variant != VeryWeakSphVariant::Galerkin && patch.face >= 0 && patch.face < 2 * D;
+    const LatticeStencils<D>* face = kernelLoad ? &stencils.patchFaces[static_cast<std::size_t>(patch.face)] : nullptr;
+    loads.push_back(latticePatchLoad<D>(settings, patch, nodes, face));
   }
   for (const SparseLoad& load : loads)
     loadBytes_ += load.dofs.size() * (sizeof(Index) + sizeof(Real));
@@ -207,7 +205,7 @@ void VeryWeakSphProblem<D>::buildLattice(const ParticleSet<D>& particles,
     smoothingStencils_ = s;
     smoothingBytes_ = s->bytes();
     smoothing_ = std::make_unique<ConservativeSmoothing>([s](const Vector& in, Vector& out) { s->multiply(in, out); },
-                                                         particles.physicalCount(), D, settings.smoothingRate,
+                                                         nodeCount, D, settings.smoothingRate,
                                                          settings.smoothingOrder);
   }
 }

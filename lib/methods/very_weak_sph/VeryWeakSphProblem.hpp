@@ -19,6 +19,7 @@
 #include "neighbours/NeighbourList.hpp"
 #include "particles/ParticleSet.hpp"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -102,6 +103,11 @@ class VeryWeakSphProblem {
   // Assembles everything the settings ask for. The particle set must outlive the problem. Throws
   // what checkVeryWeakSphCombination and assembleVeryWeakSph throw.
   VeryWeakSphProblem(const ParticleSet<D>& particles, const VeryWeakSphProblemSettings<D>& settings);
+  // The lattice storage set up from the lattice's description alone, without its particles (what
+  // a rank of a split run builds, issue 22): the stencils, loads and filter the lattice's particles
+  // give, entry for entry. Throws InputError("method.operator") unless settings.storage is Lattice,
+  // InputError("boundaries") for prescribed faces (read off the particles' face tags).
+  explicit VeryWeakSphProblem(const VeryWeakSphProblemSettings<D>& settings);
 
   // The system to step: the sparse one, or the lattice one with settings.storage = Lattice.
   LinearOperatorSystem& system() { return lattice_ ? static_cast<LinearOperatorSystem&>(*lattice_) : method_.system; }
@@ -157,7 +163,7 @@ class VeryWeakSphProblem {
 
   void prescribeFaces(const ParticleSet<D>& particles, const VeryWeakSphProblemSettings<D>& settings);
   // The lattice storage: stencils from compact assemblies, loads as nonzeros.
-  void buildLattice(const ParticleSet<D>& particles, const VeryWeakSphProblemSettings<D>& settings);
+  void buildLattice(const std::array<Index, D>& nodes, const VeryWeakSphProblemSettings<D>& settings);
 
   std::unique_ptr<Kernel> kernel_;
   NeighbourList neighbours_;

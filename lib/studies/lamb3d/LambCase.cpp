@@ -47,25 +47,11 @@ CaseResult runCaseIn(const StudySettings& study, const CaseSettings& settings, c
   record.name = settings.name;
   const Stopwatch assemblyClock;
 
-  // particles, then the whole very weak SPH set-up of the scene: neighbours, the operator (eqs.
-  // 21-22), mass, dashpots (eqs. 31-32), loads (eq. 19), prescribed faces (eq. 30), smoothing
-  // (eq. 33) and deconvolution (eq. 35)
-  const ParticleSet<D> particles = buildParticles<D>(settings.geometry);
-  record.particles = particles.physicalCount();
-  result.ghosts = particles.size() - particles.physicalCount();
+  // the very weak SPH set-up of the scene, and the energy ledger's options, which also stops growth
+  // after the loads (LinearEnergyLedger)
   const VeryWeakSphSpec& spec = settings.method;
-  VeryWeakSphProblem<D> problem(
-      particles, veryWeakSphProblemSettings<D>(scene, settings.geometry, spec, !settings.freeFaces));
-  LinearOperatorSystem& system = problem.system();
-  result.smoothingLength = problem.kernel().smoothingLength();
-  result.meanNeighbours = problem.meanStencilSize();
-  result.operatorNonZeros = problem.storedStiffnessEntries();
-  result.operatorMiB = problem.operatorMiB();
-
-  // time step: a fraction of the operator's stable central-difference step (exit 2 above the limit)
-  const Real dt = chooseLambTimeStep(system, scene, "the assembled operator", result);
-
-  // the energy ledger, which also stops growth after the loads (LinearEnergyLedger)
+  const VeryWeakSphProblemSettings<D> problemSettings =
+      veryWeakSphProblemSettings<D>(scene, settings.geometry, spec, !settings.freeFaces);
   const Scene caseScene = [&] {
     Scene s = scene;
     if (settings.freeFaces) s.boundaries.clear();
@@ -77,12 +63,13 @@ CaseResult runCaseIn(const StudySettings& study, const CaseSettings& settings, c
       lambLedgerOptions(caseScene, settings.geometry, D, spec.options.material, movingFaces,
                         veryWeakSphGrowthCause(spec.options.variant));
 #ifdef MFWAVE_WITH_MPI
-  // Under mpirun the case steps on the ranks when it can; one that cannot runs on rank 0 alone.
+  // Under mpirun the case sets up and steps on the ranks when it can; one that cannot runs on rank
+  // 0 alone.
   std::optional<RankZeroAloneLoop> aloneOnRankZero;
   if (MpiSession::size() > 1) {
-    const std::string why = whyNotOnRanks<D>(problem, scene);
+    const std::string why = whyNotOnRanks<D>(problemSettings, scene);
     if (why.empty())
-      return runOnRanks<D>(study, settings, folder, progress, particles, problem, dt, ledgerOptions, std::move(result),
+      return runOnRanks<D>(study, settings, folder, progress, problemSettings, ledgerOptions, std::move(result),
                            assemblyClock);
     // Its time loop is numbered on every rank and checkpointed by rank 0 without the others.
     aloneOnRankZero.emplace();
@@ -90,6 +77,23 @@ CaseResult runCaseIn(const StudySettings& study, const CaseSettings& settings, c
     result.notes.push_back(settings.name + ": ran on rank 0 alone: " + why);
   }
 #endif
+
+  // particles, then the whole very weak SPH set-up: neighbours, the operator (eqs. 21-22), mass,
+  // dashpots (eqs. 31-32), loads (eq. 19), prescribed faces (eq. 30), smoothing (eq. 33) and
+  // deconvolution (eq. 35)
+  const ParticleSet<D> particles = buildParticles<D>(settings.geometry);
+  record.particles = particles.physicalCount();
+  result.ghosts = particles.size() - particles.physicalCount();
+  VeryWeakSphProblem<D> problem(particles, problemSettings);
+  LinearOperatorSystem& system = problem.system();
+  result.smoothingLength = problem.kernel().smoothingLength();
+  result.meanNeighbours = problem.meanStencilSize();
+  result.operatorNonZeros = problem.storedStiffnessEntries();
+  result.operatorMiB = problem.operatorMiB();
+
+  // time step: a fraction of the operator's stable central-difference step (exit 2 above the limit)
+  const Real dt = chooseLambTimeStep(system, scene, "the assembled operator", result);
+
   LinearEnergyLedger ledger(system, ledgerOptions);
 
   // integrator: central differences with the smoothing (eq. 33) as its velocity filter and eq. (30)

@@ -14,6 +14,15 @@ template <int D>
 void scoreLambProbes(const StudySettings& study, const CaseSettings& settings, const ParticleSet<D>& particles,
                      const ReportedProbes& recorded, const Kernel* floorKernel, const std::string& folder,
                      CaseResult& result) {
+  std::vector<ProbeSite<D>> sites;
+  for (const Probe& p : recorded.probes()) sites.push_back(probeSite<D>(particles, p.particle));
+  scoreLambProbes<D>(study, settings, sites, recorded, floorKernel, folder, result);
+}
+
+template <int D>
+void scoreLambProbes(const StudySettings& study, const CaseSettings& settings, const std::vector<ProbeSite<D>>& sites,
+                     const ReportedProbes& recorded, const Kernel* floorKernel, const std::string& folder,
+                     CaseResult& result) {
   const Scene& scene = study.scene;
   CaseRecord& record = result.record;
   const std::vector<Probe>& probes = recorded.probes();
@@ -29,7 +38,7 @@ void scoreLambProbes(const StudySettings& study, const CaseSettings& settings, c
     r.name = probes[i].name;
     const bool velocity = probes[i].quantity == ProbeQuantity::Velocity;
     if (exact) {
-      if (const auto receiver = lambReceiver<D>(scene, particles, probes[i])) {
+      if (const auto receiver = lambReceiver<D>(scene, sites[i], probes[i])) {
         receivers[i] = *receiver;
         exactSeries[i] = exact->series(*receiver, recorded.times(), velocity, study.errorWindow);
         r.hasExact = true;
@@ -100,6 +109,10 @@ void scoreLambProbes(const StudySettings& study, const CaseSettings& settings, c
 template void scoreLambProbes<2>(const StudySettings&, const CaseSettings&, const ParticleSet<2>&,
                                  const ReportedProbes&, const Kernel*, const std::string&, CaseResult&);
 template void scoreLambProbes<3>(const StudySettings&, const CaseSettings&, const ParticleSet<3>&,
+                                 const ReportedProbes&, const Kernel*, const std::string&, CaseResult&);
+template void scoreLambProbes<2>(const StudySettings&, const CaseSettings&, const std::vector<ProbeSite<2>>&,
+                                 const ReportedProbes&, const Kernel*, const std::string&, CaseResult&);
+template void scoreLambProbes<3>(const StudySettings&, const CaseSettings&, const std::vector<ProbeSite<3>>&,
                                  const ReportedProbes&, const Kernel*, const std::string&, CaseResult&);
 
 }  // namespace mfwave::lamb3d

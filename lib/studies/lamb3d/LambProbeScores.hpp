@@ -10,8 +10,10 @@
 #include "kernels/Kernel.hpp"
 #include "observers/ReportedProbes.hpp"
 #include "particles/ParticleSet.hpp"
+#include "study/LambReference.hpp"
 
 #include <string>
+#include <vector>
 
 namespace mfwave::lamb3d {
 
@@ -25,6 +27,11 @@ namespace mfwave::lamb3d {
 // none. `particles` are the ones the probes were resolved on.
 template <int D>
 void scoreLambProbes(const StudySettings& study, const CaseSettings& settings, const ParticleSet<D>& particles,
+                     const ReportedProbes& recorded, const Kernel* floorKernel, const std::string& folder,
+                     CaseResult& result);
+// The same with each probe's site (position and face tags) given, one per recorded probe in order.
+template <int D>
+void scoreLambProbes(const StudySettings& study, const CaseSettings& settings, const std::vector<ProbeSite<D>>& sites,
                      const ReportedProbes& recorded, const Kernel* floorKernel, const std::string& folder,
                      CaseResult& result);
 

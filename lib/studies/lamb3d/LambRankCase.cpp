@@ -8,10 +8,15 @@
 #include "decomposition/mpi/RankAgreement.hpp"
 #include "decomposition/mpi/RankStencilProduct.hpp"
 #include "decomposition/mpi/RankProbes.hpp"
+#include "integrators/IntegratorFactory.hpp"
 #include "io/run/ProgressReporter.hpp"
+#include "io/scene/ProbeSpec.hpp"
 #include "io/vtk/ParallelVtkFrameWriter.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
+#include "particles/GhostLayers.hpp"
+#include "particles/Lattice.hpp"
+#include "study/LambReference.hpp"
 #include "study/VeryWeakSphRun.hpp"
 
 #include <iomanip>
@@ -22,25 +27,41 @@
 namespace mfwave::lamb3d {
 
 template <int D>
-std::string whyNotOnRanks(VeryWeakSphProblem<D>& problem, const Scene& scene) {
-  const LatticeSecondOrderSystem<D>* lattice = problem.latticeSystem();
-  if (!lattice) return "its operator is an assembled matrix, not lattice stencils";
-  if (lattice->hasForce() && !lattice->sparseLoads()) return "its loads are not nonzero entries";
-  if (problem.smoothing() && !problem.smoothingStencils()) return "its smoothing filter is an assembled matrix";
-  if (!problem.prescribedDofs().empty()) return "it prescribes displacements";
-  if (scene.integrator.kind != IntegratorKind::CentralDifference) return "its integrator is not central_difference";
+std::string whyNotOnRanks(const VeryWeakSphProblemSettings<D>& settings, const Scene& scene) {
+  if (settings.storage != OperatorStorage::Lattice) return "its operator is an assembled matrix, not lattice stencils";
+  if (!settings.prescribed.empty()) return "it prescribes displacements";
+  if (scene.integrator.kind == IntegratorKind::Newmark) return "newmark solves with the assembled matrices";
   return {};
 }
 
 template <int D>
 CaseResult runOnRanks(const StudySettings& study, const CaseSettings& settings, const std::string& folder,
-                      bool progress, const ParticleSet<D>& particles, VeryWeakSphProblem<D>& problem, Real dt,
-                      const LinearEnergyLedgerOptions& ledgerOptions, CaseResult result,
-                      const Stopwatch& setupClock) {
+                      bool progress, const VeryWeakSphProblemSettings<D>& problemSettings,
+                      const LinearEnergyLedgerOptions& ledgerOptions, CaseResult result, const Stopwatch& setupClock) {
   const Scene& scene = study.scene;
-  LatticeShare<D> share(*problem.latticeSystem(), MPI_COMM_WORLD);
+  const GeometrySpec& geometry = settings.geometry;
+  const Vec<D>& lower = problemSettings.lower;
+  const Vec<D>& upper = problemSettings.upper;
+  const Real dx = problemSettings.spacing;
+
+  // The problem from the lattice's description, as the serial case builds it from the particles
+  // (eqs. (19), (21)-(22), (31)-(33), (35)), and this rank's share of its system.
+  VeryWeakSphProblem<D> problem(problemSettings);
+  const LatticeSecondOrderSystem<D>& whole = *problem.latticeSystem();
+  const std::array<Index, D>& nodes = whole.stiffness().types().nodes();
+  const Index nodeCount = whole.stiffness().types().nodeCount();
+  result.record.particles = nodeCount;
+  result.ghosts = ghostLayerCount<D>(lower, upper, dx, problemSettings.ghostLayers, problemSettings.ghostFaces);
+  result.smoothingLength = problem.kernel().smoothingLength();
+  result.meanNeighbours = problem.meanStencilSize();
+  result.operatorNonZeros = problem.storedStiffnessEntries();
+  result.operatorMiB = problem.operatorMiB();
+  LatticeShare<D> share(whole, MPI_COMM_WORLD);
   DistributedLatticeSystem<D>& system = share.system();
   const bool first = share.rank() == 0;
+
+  // The serial step, from the power iteration over the shares (bit for bit the serial estimate).
+  const Real dt = chooseLambTimeStep(system, scene, "the assembled operator", result);
 
   // The serial case's integrator, ledger and filter (eq. (33), its product on this rank's share), on
   // this rank's share of the system.
@@ -56,12 +77,30 @@ CaseResult runOnRanks(const StudySettings& study, const CaseSettings& settings, 
         },
         system.size() / D, D, problem.smoothing()->rate(), problem.smoothing()->order());
   }
-  const std::unique_ptr<CentralDifference> integrator = smoothedCentralDifference(smoothing.get(), &ledger);
-  integrator->initialise(system, 0, system.restrict(problem.initialDisplacement()), Vector::Zero(system.size()), dt);
+  // Any other integrator as the serial case makes it (ARKODE on the system's MPI vectors, norms
+  // summed in lattice order); checkVeryWeakSphScene refused the filter for them.
+  const std::unique_ptr<SecondOrderIntegrator> integrator =
+      scene.integrator.kind == IntegratorKind::CentralDifference
+          ? smoothedCentralDifference(smoothing.get(), &ledger)
+          : makeSecondOrderIntegrator(scene.integrator.name, scene.integrator.options);
+  // At rest: no face is prescribed on the ranks (whyNotOnRanks).
+  integrator->initialise(system, 0, Vector::Zero(system.size()), Vector::Zero(system.size()), dt);
 
-  // Probes: each read by the rank owning its particle (a particle's number is its lattice node's),
-  // the deconvolved value (eq. (35)) from its row's neighbours wherever they live.
-  const std::vector<Probe> probes = resolveProbes(scene.probes, particles);
+  // Probes: each placed on its lattice node and read by the rank owning it (a particle's number is
+  // its lattice node's), the deconvolved value (eq. (35)) from its row's neighbours wherever they
+  // live; each probe's site (position, face tags) is its node's particle alone.
+  const std::vector<Probe> probes = resolveProbesOnLattice(scene.probes, geometry);
+  std::vector<ProbeSite<D>> sites;
+  for (const Probe& p : probes) {
+    std::array<Index, D> node{}, next{};
+    Index rest = p.particle;
+    for (std::size_t a = 0; a < static_cast<std::size_t>(D); ++a) {
+      node[a] = rest % nodes[a];
+      rest /= nodes[a];
+      next[a] = node[a] + 1;
+    }
+    sites.push_back(probeSite<D>(makeLattice<D>(lower, upper, dx, node, next), 0));
+  }
   std::vector<Index> probeParticles;
   for (const Probe& p : probes) probeParticles.push_back(p.particle);
   const ParticleMatrix deconvolutionRows = problem.deconvolutionRows(probeParticles);
@@ -70,10 +109,16 @@ CaseResult runOnRanks(const StudySettings& study, const CaseSettings& settings, 
   result.record.setupSeconds = setupClock.seconds();
 
   StabilityMonitor monitor(scene.stability.options(D, ledgerOptions.quietAfter));
-  ProgressReporter reporter(scene.integrator.endTime, particles.physicalCount(), progress && first);
+  ProgressReporter reporter(scene.integrator.endTime, nodeCount, progress && first);
+  // The frames: this rank's block of particles, in its state's order.
+  std::optional<ParticleSet<D>> block;
   std::optional<ParallelVtkFrameWriter<D>> frames;
-  if (settings.writeFrames && scene.output.vtk)
-    frames.emplace(particles, share.ownedNodes(), folder, settings.name, D, share.rank(), share.ranks());
+  if (settings.writeFrames && scene.output.vtk) {
+    block.emplace(makeLattice<D>(lower, upper, dx, system.owned().lo, system.owned().hi));
+    std::vector<Index> mine(static_cast<std::size_t>(block->size()));
+    for (std::size_t k = 0; k < mine.size(); ++k) mine[k] = static_cast<Index>(k);
+    frames.emplace(*block, std::move(mine), folder, settings.name, D, share.rank(), share.ranks());
+  }
   TimeLoop loop;
   loop.agreeAcrossRanks(maximumOverRanks(MPI_COMM_WORLD));  // stops and wall-clock checkpoints at one step
   loop.add(monitor);
@@ -85,7 +130,7 @@ CaseResult runOnRanks(const StudySettings& study, const CaseSettings& settings, 
   // Every piece of the last frame is written before rank 0 reports the series.
   MPI_Barrier(MPI_COMM_WORLD);
 
-  if (first) scoreLambProbes<D>(study, settings, particles, recorder, &problem.kernel(), folder, result);
+  if (first) scoreLambProbes<D>(study, settings, sites, recorder, &problem.kernel(), folder, result);
   const std::array<int, D>& grid = share.decomposition().grid();
   std::ostringstream note;
   note << settings.name << ": stepped on " << share.ranks() << " ranks, blocks ";
@@ -104,10 +149,10 @@ CaseResult runOnRanks(const StudySettings& study, const CaseSettings& settings, 
 }
 
 #define MFWAVE_LAMB_RANK_CASE(D)                                                                               \
-  template std::string whyNotOnRanks<D>(VeryWeakSphProblem<D>&, const Scene&);                                 \
+  template std::string whyNotOnRanks<D>(const VeryWeakSphProblemSettings<D>&, const Scene&);                   \
   template CaseResult runOnRanks<D>(const StudySettings&, const CaseSettings&, const std::string&, bool,       \
-                                    const ParticleSet<D>&, VeryWeakSphProblem<D>&, Real,                      \
-                                    const LinearEnergyLedgerOptions&, CaseResult, const Stopwatch&);
+                                    const VeryWeakSphProblemSettings<D>&, const LinearEnergyLedgerOptions&,   \
+                                    CaseResult, const Stopwatch&);
 MFWAVE_LAMB_RANK_CASE(2)
 MFWAVE_LAMB_RANK_CASE(3)
 #undef MFWAVE_LAMB_RANK_CASE

@@ -141,6 +141,37 @@ void expectSameSystem(const Box<D>& box, VeryWeakSphProblemSettings<D> settings,
     lattice.smoothing()->apply(0.05, filteredB);
     EXPECT_LE(relative(filteredB, filteredA), 1e-12) << "smoothing";
   }
+
+  // Set up from the lattice's description alone (a rank of a split run): the same system bit for bit.
+  if (!settings.prescribed.empty()) {
+    EXPECT_THROW(VeryWeakSphProblem<D>{settings}, InputError) << "prescribed faces need the particles";
+    return;
+  }
+  VeryWeakSphProblem<D> bare(settings);
+  LinearOperatorSystem& c = bare.system();
+  ASSERT_EQ(c.size(), b.size());
+  for (Real t : {0.3, 1.2}) {
+    Vector accelerationB(b.size()), accelerationC(c.size()), fB, fC;
+    b.acceleration(t, u, v, accelerationB);
+    c.acceleration(t, u, v, accelerationC);
+    EXPECT_EQ(accelerationC, accelerationB) << "acceleration without particles at t = " << t;
+    b.force(t, fB);
+    c.force(t, fC);
+    EXPECT_EQ(fC, fB) << "f without particles at t = " << t;
+  }
+  EXPECT_EQ(bare.operatorMiB(), lattice.operatorMiB());
+  EXPECT_EQ(bare.meanStencilSize(), lattice.meanStencilSize());
+  if (lattice.smoothing()) {
+    Vector filteredB = v, filteredC = v;
+    lattice.smoothing()->apply(0.05, filteredB);
+    bare.smoothing()->apply(0.05, filteredC);
+    EXPECT_EQ(filteredC, filteredB) << "smoothing without particles";
+  }
+  if (lattice.deconvolves()) {
+    const std::vector<Index> at{0, c.size() / D - 1};
+    const ParticleMatrix difference = bare.deconvolutionRows(at) - lattice.deconvolutionRows(at);
+    EXPECT_EQ(difference.norm(), 0) << "deconvolution without particles";
+  }
 }
 
 template <int D>
@@ -195,6 +226,12 @@ void expectEveryBoundaryKind(VeryWeakSphVariant variant) {
     for (int a = 0; a + 1 < D; ++a) half[a] = 0.6;
     t[D - 1] = 1;
     patch.patches.push_back({top, centre, half, t, &ramp});
+    // one over a corner of the face, clipped by two of its edges, and one off the lattice's nodes
+    Vec<D> corner = box.lower, skew = centre;
+    corner[D - 1] = box.upper[D - 1];
+    for (int a = 0; a + 1 < D; ++a) skew[a] += 0.37 * box.dx;
+    patch.patches.push_back({top, corner, half, 0.5 * t, &ramp});
+    patch.patches.push_back({top, skew, 0.7 * half, Vec<D>::Constant(0.2), &ramp});
     if (D == 1) patch.patches.clear();  // a 1-D face is a point: whole-face tractions cover it
     patch.transmittingFaces = faceBit(BoxFace::MinusX);
     expectSameSystem<D>(box, patch, "a surface patch");
@@ -248,6 +285,10 @@ TEST(VeryWeakSphLattice, RefusesParticlesOffItsLatticeAndHasNoMatrices) {
   g.storage = OperatorStorage::Lattice;
   VeryWeakSphProblem<2> problem(particlesOn<2>(box), g);
   EXPECT_THROW(problem.sparseSystem(), InputError);
+  // without particles, only the lattice storage
+  VeryWeakSphProblemSettings<2> sparse = settingsOn<2>(box, VeryWeakSphVariant::Galerkin);
+  sparse.storage = OperatorStorage::Sparse;
+  EXPECT_THROW(VeryWeakSphProblem<2>{sparse}, InputError);
 }
 
 }  // namespace
