@@ -9,10 +9,16 @@
 // side x side x (side ranks), side^3 per rank. Central difference, one thread per rank; after two
 // warm-up steps, `steps` steps are timed (the slowest rank). On one rank the serial
 // LatticeSecondOrderSystem runs the same steps too, for the cost of the distributed system itself.
-// Rank 0 prints a Markdown table (docs/scaling.md shows it).
+// Then the load balance near absorbing faces: a side^3 block with dashpots on five faces (lamb3d's:
+// all but +z) cut across z only, so one rank holds the -z dashpots and the other the free face,
+// balanced once with equal row costs and once with latticeRowCosts (what LatticeShare uses); the
+// decomposition's predicted imbalance is printed beside the measured step.
+// Rank 0 prints Markdown tables (docs/scaling.md shows them).
 #include "../GalerkinBlock.hpp"
 #include "MpiArguments.hpp"
 #include "decomposition/mpi/DistributedLatticeSystem.hpp"
+#include "decomposition/mpi/LatticeShare.hpp"
+#include "particles/BoxFace.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "methods/very_weak_sph/VeryWeakSphProblem.hpp"
 #include "particles/Lattice.hpp"
@@ -74,6 +80,33 @@ void row(const char* mode, const std::array<Index, 3>& nodes, int steps, int ran
   }
 }
 
+// The absorbing block cut across z, its blocks balanced by `costs` (empty: equal).
+void absorbingRow(const char* balance, bool rowCosts, Index n, int steps, int rank, int ranks) {
+  const std::uint8_t faces = static_cast<std::uint8_t>(allFaces(3) & ~faceBit(BoxFace::PlusZ));
+  const VeryWeakSphProblemSettings<3> s = bench::galerkinBlock({n, n, n}, kSpacing, faces);
+  const VeryWeakSphProblem<3> problem(s);  // from the lattice's description
+  const LatticeSecondOrderSystem<3>& serial = *problem.latticeSystem();
+  const Index total = serial.types().nodeCount();
+  Vector u0(3 * total);
+  for (Index i = 0; i < u0.size(); ++i) u0[i] = 1e-3 * std::sin(0.37 * static_cast<Real>(i));
+  const std::vector<Real> costs = rowCosts ? latticeRowCosts<3>(serial) : std::vector<Real>{};
+  const BlockDecomposition<3> decomposition(serial.types(), ranks, costs, {false, false, true});
+  DistributedLatticeSystem<3> distributed(serial, decomposition, rank, MPI_COMM_WORLD);
+  const double seconds = timeSteps(distributed, distributed.restrict(u0), steps);
+  Index owned = distributed.owned().count();
+  std::vector<long> counts(static_cast<std::size_t>(ranks));
+  long mine = static_cast<long>(owned);
+  MPI_Gather(&mine, 1, MPI_LONG, counts.data(), 1, MPI_LONG, 0, MPI_COMM_WORLD);
+  if (rank == 0) {
+    std::string split;
+    for (long c : counts) split += (split.empty() ? "" : " / ") + std::to_string(c);
+    std::printf("| %s | %ld^3 | %d | %s | %.3f | %.2f |\n", balance, static_cast<long>(n), ranks, split.c_str(),
+                rowCosts ? decomposition.imbalance() : BlockDecomposition<3>(serial.types(), ranks, latticeRowCosts<3>(serial),
+                                                                             {false, false, true}).imbalance(),
+                seconds * 1e3);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -89,6 +122,13 @@ int main(int argc, char** argv) {
   const Index n = side;
   row("strong", {n, n, n}, static_cast<int>(steps), rank, ranks);
   row("weak", {n, n, n * ranks}, static_cast<int>(steps), rank, ranks);
+  if (rank == 0) {
+    std::printf("\nDashpots on five faces (lamb3d's), blocks cut across z; imbalance: max / mean row cost by latticeRowCosts\n");
+    std::printf("| balanced by | lattice | ranks | nodes per rank | predicted imbalance | step [ms] |\n");
+    std::printf("|---|---|---|---|---|---|\n");
+  }
+  absorbingRow("equal row costs", false, n, static_cast<int>(steps), rank, ranks);
+  absorbingRow("latticeRowCosts", true, n, static_cast<int>(steps), rank, ranks);
   MPI_Finalize();
   return 0;
 }

@@ -16,6 +16,11 @@
 
 namespace mfwave {
 
+// The cost of a row of each type that the blocks balance: its stencil's entries plus its dashpots'
+// (docs/scaling.md compares it with measured step times near absorbing faces).
+template <int D, int C = D>
+std::vector<Real> latticeRowCosts(const LatticeSecondOrderSystem<D, C>& serial);
+
 // C unknowns per node, as the serial system's.
 template <int D, int C = D>
 class LatticeShare {
