@@ -59,7 +59,7 @@ void VeryWeakSphProbes::observe(const StateView& s) {
     const Probe& p = probes()[i];
     const Vector& field = p.quantity == ProbeQuantity::Velocity ? s.velocity : s.displacement;
     const Real raw = field[components_ * p.particle + p.component];
-    add(i, raw, deconvolution_ ? deconvolveAt(*deconvolution_, p.particle, field, components_, p.component) : raw);
+    add(i, raw, deconvolution_ ? deconvolveAt(*deconvolution_, static_cast<Index>(i), field, components_, p.component) : raw);
   }
 }
 

@@ -39,7 +39,8 @@ std::unique_ptr<CentralDifference> smoothedCentralDifference(ConservativeSmoothi
 // series and their CSV are ReportedProbes'.
 class VeryWeakSphProbes : public ReportedProbes {
  public:
-  // `components`: unknowns per particle; `deconvolution` may be null and must outlive the recorder.
+  // `components`: unknowns per particle; `deconvolution` holds row i for probe i (deconvolutionRows
+  // of the probes' particles), may be null and must outlive the recorder.
   VeryWeakSphProbes(std::vector<Probe> probes, int components, const ParticleMatrix* deconvolution);
 
   void observe(const StateView& s) override;

@@ -117,7 +117,9 @@ TEST(VeryWeakSphProbes, ReportTheStateOrItsDeconvolutionOncePerTime) {
   const Index probeParticle = 12;
   const std::vector<Probe> probes{{"a", probeParticle, 1, ProbeQuantity::Velocity},
                                   {"b", probeParticle, 0, ProbeQuantity::Displacement}};
-  VeryWeakSphProbes sharp(probes, 2, problem.deconvolution());
+  const ParticleMatrix rows = problem.deconvolutionRows({probeParticle, probeParticle});
+  ASSERT_EQ(rows.rows(), 2);
+  VeryWeakSphProbes sharp(probes, 2, &rows);
   VeryWeakSphProbes plain(probes, 2, nullptr);
   const Vector u = 0.5 * startVelocity(particles), v = startVelocity(particles);
   const StateView s{1, 0.25, u, v};
@@ -129,6 +131,7 @@ TEST(VeryWeakSphProbes, ReportTheStateOrItsDeconvolutionOncePerTime) {
   EXPECT_EQ(sharp.raw(1)[0], u[2 * probeParticle]);
   EXPECT_EQ(plain.reported(0)[0], plain.raw(0)[0]);
   EXPECT_EQ(sharp.reported(0)[0], deconvolveAt(*problem.deconvolution(), probeParticle, v, 2, 1));
+  EXPECT_EQ(sharp.reported(1)[0], deconvolveAt(*problem.deconvolution(), probeParticle, u, 2, 0));
   EXPECT_NE(sharp.reported(0)[0], sharp.raw(0)[0]);
 
   const std::string path = ::testing::TempDir() + "/probes-" + std::to_string(::getpid()) + ".csv";

@@ -22,11 +22,13 @@ RankProbes::RankProbes(std::vector<Probe> probes, const LocalParticle& localPart
       throw Error("probe \"" + all[i].name + "\" is owned by " + std::to_string(owners[i]) +
                   " ranks; it must be owned by exactly one");
   if (rows) {
-    for (const Probe& p : all) {
-      if (p.particle < 0 || p.particle >= rows->rows())
-        throw Error("probe \"" + p.name + "\": particle " + std::to_string(p.particle) + " has no deconvolution row");
+    if (rows->rows() != static_cast<Index>(all.size()))
+      throw Error("deconvolution rows: " + std::to_string(rows->rows()) + " for " + std::to_string(all.size()) +
+                  " probes; need one per probe");
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      const Probe& p = all[i];
       rowStart_.push_back(reads_.size());
-      for (Rows::InnerIterator it(*rows, static_cast<int>(p.particle)); it; ++it) {
+      for (Rows::InnerIterator it(*rows, static_cast<int>(i)); it; ++it) {
         reads_.push_back({localParticle(it.col()), p.component, p.quantity == ProbeQuantity::Velocity});
         weights_.push_back(it.value());
       }

@@ -25,7 +25,7 @@ class RankProbes : public ReportedProbes {
   // A particle's place in this rank's state (dof = place * components + component), -1 when
   // another rank owns it.
   using LocalParticle = std::function<Index(Index particle)>;
-  // Rows by particle (global columns), as deconvolutionRows gives them.
+  // Row i for probe i (global columns), as deconvolutionRows of the probes' particles gives them.
   using Rows = Eigen::SparseMatrix<Real, Eigen::RowMajor, int>;
 
   // `rows` may be null (reported = raw) and must outlive the recorder. Collective: throws Error on

@@ -214,20 +214,22 @@ template <int D>
 ParticleMatrix VeryWeakSphProblem<D>::deconvolutionRows(const std::vector<Index>& particles) const {
   const Index n = system().size() / D;
   std::vector<Eigen::Triplet<Real, int>> entries;
-  for (Index p : particles) {
+  for (std::size_t k = 0; k < particles.size(); ++k) {
+    const Index p = particles[k];
+    const auto row = static_cast<int>(k);
     if (p < 0 || p >= n) throw InputError("particle", "particle " + std::to_string(p) + " is not a physical particle");
     if (deconvolution_) {
       for (ParticleMatrix::InnerIterator it(*deconvolution_, p); it; ++it)
-        entries.emplace_back(static_cast<int>(p), static_cast<int>(it.col()), it.value());
+        entries.emplace_back(row, static_cast<int>(it.col()), it.value());
     } else if (deconvolutionStencils_) {  // the same operator on every component: one diagonal entry per block
       const LatticeStencils<D>& s = *deconvolutionStencils_;
       const Index type = s.types().typeOf(s.types().node(p));
       for (Index e = s.begin(type); e < s.end(type); ++e)
-        entries.emplace_back(static_cast<int>(p), static_cast<int>(s.column(e, p)), s.block(e)[0]);
+        entries.emplace_back(row, static_cast<int>(s.column(e, p)), s.block(e)[0]);
     }
   }
-  ParticleMatrix rows(n, n);
-  rows.setFromTriplets(entries.begin(), entries.end(), [](Real, Real b) { return b; });
+  ParticleMatrix rows(static_cast<Index>(particles.size()), n);
+  rows.setFromTriplets(entries.begin(), entries.end());
   return rows;
 }
 

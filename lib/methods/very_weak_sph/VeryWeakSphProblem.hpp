@@ -146,8 +146,8 @@ class VeryWeakSphProblem {
   const LatticeStencils<D>* smoothingStencils() const { return smoothingStencils_.get(); }
   // Eq. (35) when settings.deconvolution with the sparse storage, else null.
   const ParticleMatrix* deconvolution() const { return deconvolution_ ? &*deconvolution_ : nullptr; }
-  // Whether eq. (35) is on (either storage), and its rows at `particles` (an N x N matrix with only
-  // those rows: what probes read; empty rows when it is off).
+  // Whether eq. (35) is on (either storage), and its rows at `particles`: a P x N matrix whose row k
+  // is particles[k]'s (what probes read, nothing whole-lattice sized; empty rows when it is off).
   bool deconvolves() const { return deconvolution_.has_value() || deconvolutionStencils_ != nullptr; }
   ParticleMatrix deconvolutionRows(const std::vector<Index>& particles) const;
 
