@@ -50,15 +50,20 @@ elif open(masters[0]).read().count("<Piece ") != ranks:
 print(f"compared {len(fa)} figures, {len(rows)} probe rows (peak {peak:.3g}); {len(masters)} .pvtp frames")
 sys.exit(0 if ok else 1)
 PY
-# Bad input on every rank: exit 2, the message once (rank 0's; the others wait, then are aborted).
+# Bad input on every rank: exit 2, the message once (rank 0's; the others wait, then are aborted);
+# not quiet, so the shipped scene's line must appear once too (the launcher's first process only).
 set +e
 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
-  "$mpiexec" -np "$ranks" --oversubscribe "$driver" --quiet --out "$work/bad" --set integrator.cfl=-1 "$@" \
+  "$mpiexec" -np "$ranks" --oversubscribe "$driver" --out "$work/bad" --set integrator.cfl=-1 "$@" \
   > "$work/bad.log" 2>&1
 code=$?
 set -e
 said=$(grep -c "error: .*integrator.cfl" "$work/bad.log" || true)
 if [ "$code" -ne 2 ] || [ "$said" -ne 1 ]; then
   echo "FAIL: bad input on $ranks ranks exited $code and said so $said times (want 2 and once)"; cat "$work/bad.log"; fail=1
+fi
+shipped=$(grep -c "no --scene given" "$work/bad.log" || true)
+if [ "$shipped" -ne 1 ]; then
+  echo "FAIL: the shipped scene's line appears $shipped times on $ranks ranks (want once)"; cat "$work/bad.log"; fail=1
 fi
 exit $fail

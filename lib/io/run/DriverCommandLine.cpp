@@ -6,10 +6,22 @@
 #include <omp.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
 namespace mfwave {
+
+namespace {
+
+// True unless a launcher (mpirun: Open MPI, PMI or PMIx) started this process as a rank other than 0.
+bool firstProcessOfLauncher() {
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
+    if (const char* rank = std::getenv(name)) return std::string(rank) == "0";
+  return true;
+}
+
+}  // namespace
 
 std::string versionString(const std::string& program) {
   return program + " (mfwave " + mfwaveVersion() + ", git " + mfwaveGitRevision() + ")";
@@ -72,7 +84,9 @@ std::optional<int> DriverCommandLine::parse(int argc, char** argv) {
                    describeShippedSearch(relative) +
                    "give --scene FILE, or set MFWAVE_DATA_DIR to the folder holding data/scenes");
     options_.scenePath = *shipped;
-    if (!options_.quiet) std::cout << program_ << ": no --scene given: the shipped scene " << *shipped << '\n';
+    // Said once under mpirun: by the launcher's first process (MPI has not started yet).
+    if (!options_.quiet && firstProcessOfLauncher())
+      std::cout << program_ << ": no --scene given: the shipped scene " << *shipped << '\n';
   }
   if (!checkpointEvery_.empty()) {
     const bool seconds = checkpointEvery_.back() == 's';
