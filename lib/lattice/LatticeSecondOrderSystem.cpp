@@ -1,6 +1,7 @@
 #include "lattice/LatticeSecondOrderSystem.hpp"
 
 #include "lattice/DashpotSurfaceSolve.hpp"
+#include "lattice/PrescribedNodeSolve.hpp"
 
 #include "core/Error.hpp"
 #include "solvers/FactorisedMatrix.hpp"
@@ -24,63 +25,24 @@ template <int D, int C>
 class LatticeCentredDamping : public CentredDampingSolve {
  public:
   LatticeCentredDamping(const LatticeSecondOrderSystem<D, C>& system, Real dt, const std::vector<Index>& prescribedDofs)
-      : system_(system), halfStep_(0.5 * dt), inverse_(system.inverseBlocks(0.5 * dt)) {
-    const Index n = system.size();
-    for (std::size_t i = 0; i < prescribedDofs.size(); ++i) {
-      const Index dof = prescribedDofs[i];
-      if (dof < 0 || dof >= n)
-        throw InputError("prescribed_displacement", "dof " + std::to_string(dof) + " is outside the system's " +
-                                                        std::to_string(n) + " unknowns");
-      Prescribed& p = particles_[dof / C];
-      p.index[dof % C] = static_cast<Index>(i);
-    }
-  }
+      : system_(system), halfStep_(0.5 * dt), inverse_(system.inverseBlocks(0.5 * dt)),
+        prescribed_(prescribedDofs, system.size()) {}
 
   void acceleration(Real t, const Vector& u, const Vector& vHalf, const Vector& prescribedAcceleration,
                     Vector& a) override {
     system_.force(t, a);
     system_.fusedSolve(inverse_, u.data(), vHalf.data(), a.data());
-    for (const auto& [particle, prescribed] : particles_) {
-      const Index type = system_.types().typeOf(system_.types().node(particle));
-      Block<C> mass, damping;
-      system_.mass().typeSum(type, mass.data());
-      system_.damping().typeSum(type, damping.data());
-      const Block<C> matrix = mass + halfStep_ * damping;
-      Eigen::Matrix<Real, C, 1> solution = Eigen::Map<const Eigen::Matrix<Real, C, 1>>(a.data() + C * particle);
-      const Eigen::Matrix<Real, C, 1> rhs = matrix * solution;  // the row's right-hand side, recovered
-      std::vector<int> free;
-      for (int c = 0; c < C; ++c) {
-        if (prescribed.index[c] >= 0) solution[c] = prescribedAcceleration[prescribed.index[c]];
-        else free.push_back(c);
-      }
-      if (!free.empty()) {
-        const auto m = static_cast<Index>(free.size());
-        Eigen::MatrixXd reduced(m, m);
-        Eigen::VectorXd right(m);
-        for (Index i = 0; i < m; ++i) {
-          right[i] = rhs[free[static_cast<std::size_t>(i)]];
-          for (int c = 0; c < C; ++c)
-            if (prescribed.index[c] >= 0) right[i] -= matrix(free[static_cast<std::size_t>(i)], c) * solution[c];
-          for (Index j = 0; j < m; ++j)
-            reduced(i, j) = matrix(free[static_cast<std::size_t>(i)], free[static_cast<std::size_t>(j)]);
-        }
-        const Eigen::VectorXd x = reduced.partialPivLu().solve(right);
-        for (Index i = 0; i < m; ++i) solution[free[static_cast<std::size_t>(i)]] = x[i];
-      }
-      Eigen::Map<Eigen::Matrix<Real, C, 1>>(a.data() + C * particle) = solution;
-    }
+    const LatticeRowTypes<D>& types = system_.types();
+    prescribed_.apply(system_.mass(), system_.damping(), halfStep_,
+                      [&types](Index node) { return types.typeOf(types.node(node)); }, prescribedAcceleration,
+                      a.data());
   }
 
  private:
-  struct Prescribed {
-    Prescribed() { index.fill(-1); }
-    std::array<Index, C> index;  // position in the prescribed list, -1 for a free component
-  };
-
   const LatticeSecondOrderSystem<D, C>& system_;
   Real halfStep_;
   std::vector<Real> inverse_;
-  std::map<Index, Prescribed> particles_;
+  PrescribedNodeSolve<D, C> prescribed_;
 };
 
 // Eq. (32) with dashpots that couple particles (DashpotSurfaceSolve): M^-1 (f - K u - C v) at every

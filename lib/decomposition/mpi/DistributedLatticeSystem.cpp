@@ -3,6 +3,7 @@
 #include "core/Error.hpp"
 #include "decomposition/mpi/LineSums.hpp"
 #include "lattice/DashpotSurfaceSolve.hpp"
+#include "lattice/PrescribedNodeSolve.hpp"
 #include "integrators/ArkodeMpiVectors.hpp"
 
 #include <algorithm>
@@ -13,21 +14,41 @@ namespace mfwave {
 namespace {
 
 // Ding-Long-Wu eq. (32) on one rank's nodes: the per-type inverse blocks of M + dt/2 C, applied by
-// DistributedLatticeSystem::solve (the serial LatticeCentredDamping without prescribed dofs).
+// DistributedLatticeSystem::solve, then the rank's prescribed nodes (eq. (30), PrescribedNodeSolve)
+// as the serial LatticeCentredDamping does them.
 template <int D, int C>
 class DistributedCentredDamping : public CentredDampingSolve {
  public:
-  DistributedCentredDamping(const DistributedLatticeSystem<D, C>& system, std::vector<Real> inverse)
-      : system_(system), inverse_(std::move(inverse)) {}
+  DistributedCentredDamping(const DistributedLatticeSystem<D, C>& system, const LatticeSecondOrderSystem<D, C>& serial,
+                            Real dt, const std::vector<Index>& prescribedDofs)
+      : system_(system), serial_(serial), halfStep_(0.5 * dt), inverse_(serial.inverseBlocks(0.5 * dt)),
+        prescribed_(prescribedDofs, system.size()) {}
 
-  void acceleration(Real t, const Vector& u, const Vector& vHalf, const Vector&, Vector& a) override {
+  void acceleration(Real t, const Vector& u, const Vector& vHalf, const Vector& prescribedAcceleration,
+                    Vector& a) override {
     a.resize(system_.size());
     system_.solve(inverse_, t, u.data(), vHalf.data(), a.data());
+    if (prescribed_.empty()) return;
+    const Box<D>& owned = system_.owned();
+    const LatticeRowTypes<D>& types = serial_.types();
+    prescribed_.apply(serial_.mass(), serial_.damping(), halfStep_,
+                      [&](Index local) {  // the type of the owned node numbered `local`
+                        std::array<Index, D> node = owned.lo;
+                        for (int axis = 0; axis < D; ++axis) {
+                          node[static_cast<std::size_t>(axis)] += local % owned.extent(axis);
+                          local /= owned.extent(axis);
+                        }
+                        return types.typeOf(node);
+                      },
+                      prescribedAcceleration, a.data());
   }
 
  private:
   const DistributedLatticeSystem<D, C>& system_;
+  const LatticeSecondOrderSystem<D, C>& serial_;
+  Real halfStep_;
   std::vector<Real> inverse_;
+  PrescribedNodeSolve<D, C> prescribed_;
 };
 
 // Eq. (32) with dashpots that couple nodes: every rank holds the same factorisation of the dashpot
@@ -298,11 +319,12 @@ void DistributedLatticeSystem<D, C>::fillByGlobalIndex(Vector& x, const std::fun
 template <int D, int C>
 std::unique_ptr<CentredDampingSolve> DistributedLatticeSystem<D, C>::centredDamping(
     Real dt, const std::vector<Index>& prescribedDofs) const {
-  if (!prescribedDofs.empty())
+  if (damping_ && !prescribedDofs.empty())
     throw InputError("prescribed_displacement",
-                     "the distributed lattice system does not take prescribed displacements yet (docs/scaling.md)");
+                     "the distributed lattice system does not take prescribed displacements beside dashpots that "
+                     "couple nodes yet (docs/scaling.md)");
   if (damping_) return std::make_unique<DistributedCoupledCentredDamping<D, C>>(*this, serial_, dt, communicator_);
-  return std::make_unique<DistributedCentredDamping<D, C>>(*this, serial_.inverseBlocks(0.5 * dt));
+  return std::make_unique<DistributedCentredDamping<D, C>>(*this, serial_, dt, prescribedDofs);
 }
 
 template <int D, int C>

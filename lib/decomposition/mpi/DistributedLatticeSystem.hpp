@@ -13,7 +13,8 @@
 // Covered: dashpots on each node's own dofs (block-diagonal C, the Galerkin very weak SPH's
 // transmitting faces) and dashpots that couple nodes (the consistent variant's: C v through its own
 // halo, the surface block of eq. (32) solved whole on every rank), loads given as nonzero entries
-// (SparseLoads.hpp). Not yet: prescribed displacements (docs/scaling.md).
+// (SparseLoads.hpp), prescribed displacements (eq. (30)) where M + dt/2 C is block diagonal. Not
+// yet: prescribed displacements beside dashpots that couple nodes (docs/scaling.md).
 
 #include "decomposition/mpi/RankStencilProduct.hpp"
 #include "lattice/LatticeSecondOrderSystem.hpp"
@@ -62,8 +63,9 @@ class DistributedLatticeSystem : public LinearOperatorSystem {
   // The largest over the ranks; each owned value from its lattice dof's number (node * C + c).
   Real maximum(Real value) const override;
   void fillByGlobalIndex(Vector& x, const std::function<Real(Index)>& value) const override;
-  // Eq. (32) with (M + dt/2 C)^-1 per row type. Throws InputError("prescribed_displacement") for
-  // prescribed dofs.
+  // Eq. (32) with (M + dt/2 C)^-1 per row type, prescribed dofs (this rank's, in its numbering)
+  // imposed node by node as the serial system does. Throws InputError("prescribed_displacement")
+  // for prescribed dofs beside dashpots that couple nodes.
   std::unique_ptr<CentredDampingSolve> centredDamping(Real dt, const std::vector<Index>& prescribedDofs) const override;
 
   const Box<D>& owned() const { return stiffness_->owned(); }

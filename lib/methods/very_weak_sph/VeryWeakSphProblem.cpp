@@ -78,7 +78,9 @@ VeryWeakSphProblem<D>::VeryWeakSphProblem(const ParticleSet<D>& particles,
     : kernel_(checkedKernel(settings)),
       neighbours_(neighboursFor<D>(particles, *kernel_, settings)),
       method_(assemblyFor<D>(particles, neighbours_, *kernel_, settings)) {
-  prescribeFaces(particles, settings);
+  prescribeFaces(
+      particles.physicalCount(), [&particles](Index a) { return particles.faceMask[static_cast<std::size_t>(a)]; },
+      settings);
   if (onLattice(settings)) {
     buildLattice(checkedLatticeNodes<D>(particles, settings), settings);
     return;
@@ -140,19 +142,33 @@ VeryWeakSphProblem<D>::VeryWeakSphProblem(const VeryWeakSphProblemSettings<D>& s
       method_{VeryWeakSphData<D>{}, LinearSecondOrderSystem(SparseMatrix(), SparseMatrix(), SparseMatrix())} {
   if (!onLattice(settings))
     throw InputError("method.operator", "a problem set up without its particles needs the lattice storage");
-  if (!settings.prescribed.empty())
-    throw InputError("boundaries", "prescribed displacements are set up from the particles' face tags; this "
-                                   "problem has no particles");
-  buildLattice(latticeNodesOf<D>(settings), settings);
+  const std::array<Index, D> nodes = latticeNodesOf<D>(settings);
+  // The face tags makeLattice gives node a: its lower or upper end along each axis.
+  const LatticeRowTypes<D> lattice(nodes, 1);
+  prescribeFaces(
+      lattice.nodeCount(),
+      [&](Index a) {
+        const std::array<Index, D> node = lattice.node(a);
+        std::uint8_t mask = 0;
+        for (int axis = 0; axis < D; ++axis) {
+          const auto s = static_cast<std::size_t>(axis);
+          if (node[s] == 0) mask |= faceBit(2 * axis);
+          if (node[s] == nodes[s] - 1) mask |= faceBit(2 * axis + 1);
+        }
+        return mask;
+      },
+      settings);
+  buildLattice(nodes, settings);
 }
 
-// Prescribed displacements (eq. (30)), face by face, particle by particle, component by component.
+// Prescribed displacements (eq. (30)), face by face, particle by particle, component by component;
+// `faceMask(a)` is particle a's faceBit mask.
 template <int D>
-void VeryWeakSphProblem<D>::prescribeFaces(const ParticleSet<D>& particles,
+void VeryWeakSphProblem<D>::prescribeFaces(Index count, const std::function<std::uint8_t(Index)>& faceMask,
                                            const VeryWeakSphProblemSettings<D>& settings) {
   for (const PrescribedFaces<D>& faces : settings.prescribed)
-    for (Index a = 0; a < particles.physicalCount(); ++a) {
-      if ((particles.faceMask[static_cast<std::size_t>(a)] & faces.faces) == 0) continue;
+    for (Index a = 0; a < count; ++a) {
+      if ((faceMask(a) & faces.faces) == 0) continue;
       for (int c = 0; c < D; ++c) {
         prescribedDofs_.push_back(D * a + c);
         prescribedValue_.push_back(faces.value[c]);

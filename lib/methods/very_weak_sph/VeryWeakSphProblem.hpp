@@ -21,6 +21,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -105,8 +106,8 @@ class VeryWeakSphProblem {
   VeryWeakSphProblem(const ParticleSet<D>& particles, const VeryWeakSphProblemSettings<D>& settings);
   // The lattice storage set up from the lattice's description alone, without its particles (what
   // a rank of a split run builds, issue 22): the stencils, loads and filter the lattice's particles
-  // give, entry for entry. Throws InputError("method.operator") unless settings.storage is Lattice,
-  // InputError("boundaries") for prescribed faces (read off the particles' face tags).
+  // give, entry for entry (prescribed faces from the lattice's face tags). Throws
+  // InputError("method.operator") unless settings.storage is Lattice.
   explicit VeryWeakSphProblem(const VeryWeakSphProblemSettings<D>& settings);
 
   // The system to step: the sparse one, or the lattice one with settings.storage = Lattice.
@@ -161,7 +162,8 @@ class VeryWeakSphProblem {
     const TimeFunction* history;
   };
 
-  void prescribeFaces(const ParticleSet<D>& particles, const VeryWeakSphProblemSettings<D>& settings);
+  void prescribeFaces(Index count, const std::function<std::uint8_t(Index)>& faceMask,
+                      const VeryWeakSphProblemSettings<D>& settings);
   // The lattice storage: stencils from compact assemblies, loads as nonzeros.
   void buildLattice(const std::array<Index, D>& nodes, const VeryWeakSphProblemSettings<D>& settings);
 

@@ -29,7 +29,10 @@ namespace mfwave::lamb3d {
 template <int D>
 std::string whyNotOnRanks(const VeryWeakSphProblemSettings<D>& settings, const Scene& scene) {
   if (settings.storage != OperatorStorage::Lattice) return "its operator is an assembled matrix, not lattice stencils";
-  if (!settings.prescribed.empty()) return "it prescribes displacements";
+  // The kernel variants' dashpots may couple particles, beside which the ranks take no prescribed dofs.
+  if (!settings.prescribed.empty() && settings.transmittingFaces != 0 &&
+      settings.options.variant != VeryWeakSphVariant::Galerkin)
+    return "it prescribes displacements beside dashpots of a kernel variant";
   if (scene.integrator.kind == IntegratorKind::Newmark) return "newmark solves with the assembled matrices";
   return {};
 }
@@ -79,12 +82,35 @@ CaseResult runOnRanks(const StudySettings& study, const CaseSettings& settings, 
   }
   // Any other integrator as the serial case makes it (ARKODE on the system's MPI vectors, norms
   // summed in lattice order); checkVeryWeakSphScene refused the filter for them.
-  const std::unique_ptr<SecondOrderIntegrator> integrator =
-      scene.integrator.kind == IntegratorKind::CentralDifference
-          ? smoothedCentralDifference(smoothing.get(), &ledger)
-          : makeSecondOrderIntegrator(scene.integrator.name, scene.integrator.options);
-  // At rest: no face is prescribed on the ranks (whyNotOnRanks).
-  integrator->initialise(system, 0, Vector::Zero(system.size()), Vector::Zero(system.size()), dt);
+  // Prescribed faces (eq. (30), central differences only: checkVeryWeakSphScene): this rank's dofs
+  // of the serial list, in its numbering, held at the serial values.
+  const std::vector<Index>& serialDofs = problem.prescribedDofs();
+  std::vector<Index> prescribed, serialPlace;
+  for (std::size_t k = 0; k < serialDofs.size(); ++k) {
+    const Index local = share.localNode(serialDofs[k] / D);
+    if (local < 0) continue;
+    prescribed.push_back(D * local + serialDofs[k] % D);
+    serialPlace.push_back(static_cast<Index>(k));
+  }
+  auto prescribedValues = [&problem, &serialPlace, all = Vector(static_cast<Index>(serialDofs.size()))](
+                              Real t, Vector& values) mutable {
+    problem.prescribedValues(t, all);
+    for (std::size_t k = 0; k < serialPlace.size(); ++k) values[static_cast<Index>(k)] = all[serialPlace[k]];
+  };
+  std::unique_ptr<SecondOrderIntegrator> integrator;
+  if (scene.integrator.kind == IntegratorKind::CentralDifference) {
+    std::unique_ptr<CentralDifference> central = smoothedCentralDifference(smoothing.get(), &ledger);
+    if (!serialDofs.empty()) central->setPrescribedDisplacement(prescribed, prescribedValues);
+    integrator = std::move(central);
+  } else {
+    integrator = makeSecondOrderIntegrator(scene.integrator.name, scene.integrator.options);
+  }
+  // At rest, with the prescribed dofs at their values at t = 0 (eq. (30) holds from the start).
+  Vector u0 = Vector::Zero(system.size());
+  Vector g0(static_cast<Index>(prescribed.size()));
+  prescribedValues(0, g0);
+  for (std::size_t k = 0; k < prescribed.size(); ++k) u0[prescribed[k]] = g0[static_cast<Index>(k)];
+  integrator->initialise(system, 0, u0, Vector::Zero(system.size()), dt);
 
   // Probes: each placed on its lattice node and read by the rank owning it (a particle's number is
   // its lattice node's), the deconvolved value (eq. (35)) from its row's neighbours wherever they

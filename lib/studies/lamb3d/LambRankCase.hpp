@@ -22,7 +22,8 @@
 namespace mfwave::lamb3d {
 
 // Why a problem of `settings` cannot be stepped on the ranks (a serial-only feature it uses), or
-// empty when it can: the lattice storage, no prescribed faces, an explicit integrator. Its
+// empty when it can: the lattice storage, an explicit integrator, no prescribed faces beside a
+// kernel variant's dashpots (which may couple particles). Its
 // checkpoints are written per rank (decomposition/mpi/RankCheckpointStore, which the driver
 // installs).
 template <int D>

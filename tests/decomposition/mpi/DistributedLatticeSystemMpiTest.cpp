@@ -15,7 +15,9 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 using namespace mfwave;
 using test::LatticeCase;
@@ -134,27 +136,93 @@ TEST(DistributedLatticeSystemMpiTest, ALatticeShareCutsXOnlyWhenItMust) {
   }
 }
 
-// What the distributed system does not take yet is refused by name.
-TEST(DistributedLatticeSystemMpiTest, ALoadFunctionAndPrescribedDofsAreRefusedByName) {
+namespace {
+
+// Prescribed displacements (eq. (30)) on a rank's share: the serial run holds every dof of the
+// -x face and of one interior node at g(t) (one component of the interior node only, so its free
+// components are solved again from its block); each rank holds its own dofs of that list, in its
+// numbering, at the same values. With own-dof dashpots on the faces too.
+template <int D>
+void expectPrescribedDofsKeepTheSerialBits(const std::array<Index, D>& nodes, bool loaded) {
+  LatticeCase<D> lattice(nodes, loaded);
+  LatticeSecondOrderSystem<D>& serial = *lattice.serial;
+  DistributedLatticeSystem<D>& distributed = *lattice.distributed;
+  std::vector<Index> dofs;
+  for (Index p = 0; p < serial.types().nodeCount(); ++p)
+    if (serial.types().node(p)[0] == 0)
+      for (int c = 0; c < D; ++c) dofs.push_back(D * p + c);
+  Box<D> all;
+  all.hi = nodes;
+  std::array<Index, D> middle{};
+  for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s) middle[s] = nodes[s] / 2;
+  dofs.push_back(D * all.localIndex(middle) + (D - 1));
+  auto g = [](Real t, Index k) { return 0.02 * std::sin(3 * t + 0.1 * static_cast<Real>(k)); };
+  const Real dt = 0.1;
+  const int steps = 60;
+  Vector u0 = lattice.u0;
+  for (std::size_t k = 0; k < dofs.size(); ++k) u0[dofs[k]] = g(0, static_cast<Index>(k));
+  CentralDifference serialRun;
+  serialRun.setPrescribedDisplacement(dofs, [&](Real t, Vector& values) {
+    for (Index k = 0; k < values.size(); ++k) values[k] = g(t, k);
+  });
+  serialRun.initialise(serial, 0, u0, lattice.v0, dt);
+  for (int n = 0; n < steps; ++n) serialRun.step();
+
+  std::vector<Index> mine, which;  // this rank's dofs, and their places in the serial list
+  for (std::size_t k = 0; k < dofs.size(); ++k) {
+    const Index local = distributed.localNode(dofs[k] / D);
+    if (local < 0) continue;
+    mine.push_back(D * local + dofs[k] % D);
+    which.push_back(static_cast<Index>(k));
+  }
+  CentralDifference run;
+  run.setPrescribedDisplacement(mine, [&](Real t, Vector& values) {
+    for (Index k = 0; k < values.size(); ++k) values[k] = g(t, which[static_cast<std::size_t>(k)]);
+  });
+  run.initialise(distributed, 0, distributed.restrict(u0), distributed.restrict(lattice.v0), dt);
+  for (int n = 0; n < steps; ++n) run.step();
+  const long different = test::differencesOverRanks(distributed, run.state().displacement,
+                                                     serialRun.state().displacement) +
+                         test::differencesOverRanks(distributed, run.state().velocity, serialRun.state().velocity);
+  EXPECT_EQ(different, 0) << D << "-D on " << worldSize() << " ranks";
+  // The prescribed dofs moved as g says, and the free components of the interior node did too.
+  const Index last = dofs.back();
+  EXPECT_EQ(serialRun.state().displacement[last], g(steps * dt, static_cast<Index>(dofs.size() - 1)));
+  EXPECT_NE(serialRun.state().displacement[last - 1], lattice.u0[last - 1]);
+}
+
+}  // namespace
+
+TEST(DistributedLatticeSystemMpiTest, PrescribedDofsOnTheRanksKeepTheSerialBits) {
+  expectPrescribedDofsKeepTheSerialBits<3>({26, 15, 12}, false);
+  expectPrescribedDofsKeepTheSerialBits<3>({26, 15, 12}, true);
+  expectPrescribedDofsKeepTheSerialBits<2>({41, 23}, true);
+}
+
+// What the distributed system does not take yet is refused by name: a load given as a function,
+// and prescribed dofs beside dashpots that couple nodes.
+TEST(DistributedLatticeSystemMpiTest, ALoadFunctionAndPrescribedDofsBesideCoupledDashpotsAreRefusedByName) {
   const LatticeRowTypes<2> types({12, 9}, 1);
   const Index n = 2 * types.compactNodes()[0] * types.compactNodes()[1];
   SparseMatrix identity(n, n);
   identity.setIdentity();
   const BlockDecomposition<2> decomposition(types, worldSize(), {}, {false, true});
-  auto refusal = [&](const LatticeSecondOrderSystem<2>& serial) -> std::string {
-    try {
-      DistributedLatticeSystem<2> distributed(serial, decomposition, worldRank(), MPI_COMM_WORLD);
-      distributed.centredDamping(0.1, {0});
-    } catch (const InputError& e) {
-      return e.key();
-    }
-    return "";
-  };
-  EXPECT_EQ(refusal(LatticeSecondOrderSystem<2>(LatticeStencils<2>(types, identity), LatticeStencils<2>(),
-                                                LatticeStencils<2>(types, identity),
-                                                [](Real, Eigen::Ref<Vector> f) { f[0] += 1; })),
-            "loads");
-  EXPECT_EQ(refusal(LatticeSecondOrderSystem<2>(LatticeStencils<2>(types, identity), LatticeStencils<2>(),
-                                                LatticeStencils<2>(types, identity))),
-            "prescribed_displacement");
+  std::string key;
+  try {
+    const LatticeSecondOrderSystem<2> serial(LatticeStencils<2>(types, identity), LatticeStencils<2>(),
+                                             LatticeStencils<2>(types, identity),
+                                             [](Real, Eigen::Ref<Vector> f) { f[0] += 1; });
+    DistributedLatticeSystem<2> distributed(serial, decomposition, worldRank(), MPI_COMM_WORLD);
+  } catch (const InputError& e) {
+    key = e.key();
+  }
+  EXPECT_EQ(key, "loads");
+  LatticeCase<2> coupled({41, 23}, true, true);
+  key.clear();
+  try {
+    coupled.distributed->centredDamping(0.1, {0});
+  } catch (const InputError& e) {
+    key = e.key();
+  }
+  EXPECT_EQ(key, "prescribed_displacement");
 }
