@@ -25,7 +25,10 @@
 // Viscosity and artificial stress keep the plain gradient.
 
 #include "methods/updated_lagrangian_sph/ArtificialViscosity.hpp"
+#include "methods/updated_lagrangian_sph/PairSums.hpp"
 #include "methods/updated_lagrangian_sph/ParticleView.hpp"
+
+#include <vector>
 
 namespace mfwave {
 
@@ -48,11 +51,16 @@ struct ForceOutputs {
   Real* largestMu = nullptr;              // count: max |mu_ij| over i's pairs, for the time step
 };
 
+// sums: scratch, one per particle (resized). Each unordered pair is evaluated once (PairSweep.hpp).
 template <int D>
-void forceRates(const ParticleView<D>& view, const ForceInputs<D>& inputs, const ForceOutputs<D>& outputs);
+void forceRates(const ParticleView<D>& view, const ForceInputs<D>& inputs, const ForceOutputs<D>& outputs,
+                std::vector<PairSums<D>>& sums);
 
-extern template void forceRates<1>(const ParticleView<1>&, const ForceInputs<1>&, const ForceOutputs<1>&);
-extern template void forceRates<2>(const ParticleView<2>&, const ForceInputs<2>&, const ForceOutputs<2>&);
-extern template void forceRates<3>(const ParticleView<3>&, const ForceInputs<3>&, const ForceOutputs<3>&);
+extern template void forceRates<1>(const ParticleView<1>&, const ForceInputs<1>&, const ForceOutputs<1>&,
+                                   std::vector<PairSums<1>>&);
+extern template void forceRates<2>(const ParticleView<2>&, const ForceInputs<2>&, const ForceOutputs<2>&,
+                                   std::vector<PairSums<2>>&);
+extern template void forceRates<3>(const ParticleView<3>&, const ForceInputs<3>&, const ForceOutputs<3>&,
+                                   std::vector<PairSums<3>>&);
 
 }  // namespace mfwave
