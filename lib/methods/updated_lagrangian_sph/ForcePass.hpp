@@ -1,7 +1,7 @@
 #pragma once
 // The force pass: everything the momentum rate dp/dt = (dv/dt, de/dt, ledger) needs, in one pass
 // over the pairs of the view's pair table (grad W and W from there, not from the kernel). The
-// per-pair terms are in ForceTerms.hpp; rhs sums them in the same sweep as the velocity gradient
+// per-pair terms are in PairSweep.hpp; rhs sums them in the same sweep as the velocity gradient
 // (FusedPass.hpp). With A_i = sigma_i / rho_i^2 (sigma = s - p I, Li eq. 28), P_i = p_i / rho_i^2,
 // v_ij = v_i - v_j and the pair tensor M_ij = A_i + A_j - Pi_ij I + f_ij^n (R_i + R_j):
 //   dv_i/dt = sum_j m_j M_ij grad_i W_ij (+ body force and loads, added by the caller)   Li eq. (30)

@@ -24,16 +24,17 @@ void kernelGradientCorrection(const ParticleView<D>& view, Mat<D>* correction) {
   const Index* indices = view.neighbours->indices.data();
   const std::uint8_t* inside = view.pairs->inside.data();
   const Real* factor = view.pairs->gradientFactor.data();
-  pair_sweep::forEachRowInBlocks(*view.neighbours, n, [&](Index i) MFWAVE_INLINE_LAMBDA {
+  pair_sweep::forEachRowInBlocks(*view.pairs, n, [&](Index i) MFWAVE_INLINE_LAMBDA {
     const Vec<D> xi = view.position(i);
     const Real Vi = view.volume[i];
     const Index end = view.neighbours->offsets[static_cast<std::size_t>(i) + 1];
     Mat<D> moment = correction[i];
-    for (Index k = pair_sweep::firstAbove(*view.neighbours, i); k < end; ++k) {
-      if (inside[k] == 0) continue;
+    for (Index k = view.pairs->first[static_cast<std::size_t>(i)], e = view.pairs->offsets[static_cast<std::size_t>(i)];
+         k < end; ++k, ++e) {
+      if (inside[e] == 0) continue;
       const Index j = indices[k];
       const Vec<D> r = xi - view.position(j);
-      const Vec<D> gradW = factor[k] * r;
+      const Vec<D> gradW = factor[e] * r;
       moment.noalias() -= (view.volume[j] * r) * gradW.transpose();
       correction[j].noalias() -= (Vi * r) * gradW.transpose();
     }

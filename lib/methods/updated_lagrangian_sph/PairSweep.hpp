@@ -8,18 +8,20 @@
 //
 // The order of the sums does not depend on the number of threads. The rows are cut into blocks of
 // B consecutive indices, B = max(reach, 64), where reach is the largest j - i of a listed pair (a
-// property of the lists, not of the threads). Block b holds the pairs i < j with i in block b, so it
-// writes only rows of blocks b and b + 1. The even blocks run first (in parallel: their rows do not
-// meet), then the odd blocks; within a block the rows run in increasing i and each row's pairs in
-// list order. Every row thus receives its terms in one fixed order: on 1 and on 2 threads the rates
-// are the same bits. They differ from the former gather (each row summing all its pairs) by
-// round-off only. The energy rate is summed per pair in the contracted form
+// property of the lists, not of the threads; PairTable::blockSize, found once per list rebuild).
+// Block b holds the pairs i < j with i in block b, so it writes only rows of blocks b and b + 1. The
+// even blocks run first (in parallel: their rows do not meet), then the odd blocks; within a block
+// the rows run in increasing i and each row's pairs in list order. Every row thus receives its
+// terms in one fixed order: on 1 and on 2 threads the rates are the same bits. They differ from the
+// former gather (each row summing all its pairs) by round-off only. The energy rate is summed per pair in the contracted form
 //   -(s_i / rho_i^2) : m_j v_ij (C_i grad W)^T = m_j v_ji . (A_i C_i grad W) (+ P_i v_ji . grad W),
 // which needs the per-pair products A_i grad W that the force forms anyway.
 //
 // Scratch: one PairSums per particle (13 values in 2-D, 20 in 3-D; 104 and 160 bytes), owned by
-// the system and reused. Particles numbered without spatial order (a large reach) still give the
-// right rates, but fewer blocks to share between threads.
+// the system and reused. The pair table holds the pairs j > i only (PairTable.hpp). Particles
+// numbered without spatial order (a large reach) still give the same rates, but fewer blocks to
+// share between threads (one block, one thread, when reach >= n / 2). The lists must be symmetric
+// (j in row i exactly when i in row j), as radius searches give.
 
 #include "methods/updated_lagrangian_sph/AlwaysInline.hpp"
 #include "methods/updated_lagrangian_sph/ForcePass.hpp"
@@ -37,22 +39,11 @@ namespace mfwave {
 
 namespace pair_sweep {
 
-// The block size B (see above): at least the largest j - i of a listed pair (rows are sorted).
-inline Index blockSize(const NeighbourList& list, Index n) {
-  constexpr Index smallest = 64;
-  Index reach = 0;
-  const Index* offsets = list.offsets.data();
-  const Index* indices = list.indices.data();
-  for (Index i = 0; i < n; ++i)
-    if (offsets[i + 1] > offsets[i]) reach = std::max(reach, indices[offsets[i + 1] - 1] - i);
-  return std::max(reach, smallest);
-}
-
 // Calls row(i) for every particle, block by block (see above): the even blocks, in parallel, then
 // the odd blocks. row(i) may write rows i..i + reach.
 template <class Row>
-void forEachRowInBlocks(const NeighbourList& list, Index n, const Row& row) {
-  const Index size = blockSize(list, n);
+void forEachRowInBlocks(const PairTable& table, Index n, const Row& row) {
+  const Index size = table.blockSize;
   const Index blocks = (n + size - 1) / size;
 #pragma omp parallel if (n > kParallelParticles)
   for (Index phase = 0; phase < 2; ++phase) {
@@ -63,14 +54,6 @@ void forEachRowInBlocks(const NeighbourList& list, Index n, const Row& row) {
       for (Index i = b * size; i < last; ++i) row(i);
     }
   }
-}
-
-// The first entry of row i with j > i (the rows are sorted).
-inline Index firstAbove(const NeighbourList& list, Index i) {
-  const Index* indices = list.indices.data();
-  const Index* begin = indices + list.offsets[static_cast<std::size_t>(i)];
-  const Index* end = indices + list.offsets[static_cast<std::size_t>(i) + 1];
-  return static_cast<Index>(std::upper_bound(begin, end, i) - indices);
 }
 
 template <int D, bool Kinematics, bool Force>
@@ -91,7 +74,8 @@ struct Sweep {
     const Real* m = view.m;
     const Real* V = view.volume;
     const Index end = view.neighbours->offsets[static_cast<std::size_t>(i) + 1];
-    const Index begin = firstAbove(*view.neighbours, i);
+    const Index begin = view.pairs->first[static_cast<std::size_t>(i)];
+    const Index entry = view.pairs->offsets[static_cast<std::size_t>(i)];
     const Vec<D> xi = view.position(i);
     const Vec<D> vi = view.velocity(i);
     const Real mi = m[i];
@@ -108,11 +92,11 @@ struct Sweep {
     const bool forceCorrected = Force && inputs->correctedStressOverRho2 != nullptr;
 
     PairSums<D> own = sums[i];
-    for (Index k = begin; k < end; ++k) {
-      if (inside[k] == 0) continue;  // listed through the skin but outside the support
+    for (Index k = begin, e = entry; k < end; ++k, ++e) {
+      if (inside[e] == 0) continue;  // listed through the skin but outside the support
       const Index j = indices[k];
       const Vec<D> r = xi - view.position(j);
-      const Vec<D> g = factor[k] * r;  // grad_i W_ij; grad_j W_ji = -g
+      const Vec<D> g = factor[e] * r;  // grad_i W_ij; grad_j W_ji = -g
       const Vec<D> vji = view.velocity(j) - vi;
       const Real mj = m[j];
       PairSums<D>& other = sums[j];
@@ -133,7 +117,7 @@ struct Sweep {
           other.densityRate -= mi * d;
         }
         if (xsph) {
-          const Real w = smoothingWeight[k];
+          const Real w = smoothingWeight[e];
           own.smoothing += (mj * w) * vji;
           other.smoothing -= (mi * w) * vji;
         }
@@ -157,7 +141,7 @@ struct Sweep {
         Vec<D> force = ai + aj;
         force -= pi * g;
         if (stressWeight != nullptr) {
-          const Vec<D> extra = stressWeight[k] * ((R[i] + R[j]) * g);
+          const Vec<D> extra = stressWeight[e] * ((R[i] + R[j]) * g);
           force += extra;
           const Real work = -vji.dot(extra);  // v_ij . extra
           own.artificialWork += mj * work;
@@ -195,7 +179,7 @@ void sumPairs(const ParticleView<D>& view, bool xsph, const ForceInputs<D>* inpu
 #pragma omp parallel for if (n > kParallelParticles) schedule(static)
   for (Index i = 0; i < n; ++i) data[i] = PairSums<D>();
   const Sweep<D, Kinematics, Force> sweep{view, xsph, inputs, data};
-  forEachRowInBlocks(*view.neighbours, n, [&](Index i) MFWAVE_INLINE_LAMBDA { sweep.row(i); });
+  forEachRowInBlocks(*view.pairs, n, [&](Index i) MFWAVE_INLINE_LAMBDA { sweep.row(i); });
 }
 
 template <int D>

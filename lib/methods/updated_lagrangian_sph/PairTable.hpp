@@ -1,10 +1,10 @@
 #pragma once
 // The kernel terms of one evaluation's pairs, computed once and read by every pair pass (the
-// kernel-gradient correction, the velocity-gradient pass and the force pass). Entries run parallel
-// to the skinned neighbour lists (entry e of row i is the pair i, j = list.indices[e]). The passes
-// evaluate each unordered pair once, from the row of the smaller index (PairSweep.hpp), so only the
-// entries with j > i are filled; an entry is used when |x_i - x_j| < R (the lists also hold pairs up
-// to (1 + skin) R), and then holds
+// kernel-gradient correction, the velocity-gradient pass and the force pass). The passes evaluate
+// each unordered pair once, from the row of the smaller index (PairSweep.hpp), so the table holds
+// the pairs j > i only: row i's entries offsets[i] .. offsets[i + 1] run parallel to the tail
+// list.indices[first[i] ..] of its sorted neighbour row. An entry is used when |x_i - x_j| < R (the
+// lists also hold pairs up to (1 + skin) R), and then holds
 //   F_ij = (dW/dr)(r_ij) / r_ij, so that grad_i W_ij = F_ij (x_i - x_j),
 //   with XSPH the weight 2 W_ij / (rho_i + rho_j) (m_j times it is the XSPH weight of Monaghan 1989),
 //   with the artificial stress f_ij^n = (W_ij / W(dp))^n (ArtificialStress.hpp).
@@ -12,7 +12,7 @@
 // computes. Each entry is written by its row alone, with the same value on any number of threads.
 // The kernel is evaluated through its inline profile (kernels/KernelProfiles.hpp), with the same
 // expressions as the virtual kernel. The storage is reused between evaluations (9 to 25 bytes per
-// listed pair; the entries with j <= i are left unset).
+// listed unordered pair, and 16 bytes per particle).
 
 #include "core/Types.hpp"
 #include "kernels/Kernel.hpp"
@@ -24,7 +24,12 @@
 namespace mfwave {
 
 struct PairTable {
-  std::vector<std::uint8_t> inside;   // 1: the entry (j > i) is a pair inside the support
+  std::vector<Index> first;           // per row: the list position of its first neighbour j > i
+  std::vector<Index> offsets;         // per row + 1: where its entries start in the arrays below
+  // The block size of the pair sweeps (PairSweep.hpp): max(64, the largest listed j - i).
+  Index blockSize = 64;
+  bool rowsValid = false;  // false: the lists were rebuilt since first, offsets and blockSize were found
+  std::vector<std::uint8_t> inside;   // 1: the entry is a pair inside the support
   std::vector<Real> gradientFactor;   // F_ij
   std::vector<Real> smoothingWeight;  // 2 W_ij / (rho_i + rho_j); empty without XSPH
   std::vector<Real> stressWeight;     // f_ij^n; empty without the artificial stress
@@ -38,8 +43,8 @@ struct PairTableSettings {
   Real artificialStressExponent = 4;
 };
 
-// Fills the entries j > i of `table` for positions x (count * D, particle-major) over `list` (its
-// rows sorted).
+// Fills `table` for positions x (count * D, particle-major) over `list` (its rows sorted). Call
+// with table.rowsValid = false after every rebuild of the lists.
 template <int D>
 void buildPairTable(const Kernel& kernel, const NeighbourList& list, const Real* x, Index count,
                     const PairTableSettings& settings, PairTable& table);

@@ -119,7 +119,7 @@ struct UpdatedLagrangianSph<D>::Impl {
 
   // The view of y with neighbour lists made valid for its positions and current densities.
   ParticleView<D> view(const Real* y) {
-    neighbours.refresh(y + system.layout_.positionOffset(), system.layout_.particles);
+    if (neighbours.refresh(y + system.layout_.positionOffset(), system.layout_.particles)) pairs.rowsValid = false;
     ParticleView<D> v = constView(y);
     if (system.options_.density == DensityUpdate::Summation) {
       summationDensity(v, summedDensity.data());  // Li eq. (17); the state's rho entries are not used
@@ -490,6 +490,7 @@ void UpdatedLagrangianSph<D>::restoreState(const StateArchive& archive) {
     throw InputError("--restart", "the checkpoint's updated-Lagrangian SPH has " + std::to_string(largestMu.size()) +
                                       " particles, this run " + std::to_string(n));
   impl_->neighbours.restoreState(archive.section("skin"));
+  impl_->pairs.rowsValid = false;
   if (impl_->neighbours.list().rowCount() != layout_.particles)
     throw InputError("--restart", "the checkpoint's neighbour lists are not of this run's particles");
   impl_->largestMu = largestMu;
