@@ -1,7 +1,7 @@
 #pragma once
 // The force pass: everything the momentum rate dp/dt = (dv/dt, de/dt, ledger) needs, in one pass
 // over the pairs of the view's pair table (grad W and W from there, not from the kernel). The
-// per-pair terms are in ForceTerms.hpp; rhs sums them in the same sweep as the velocity gradient
+// per-pair terms are in PairSweep.hpp; rhs sums them in the same sweep as the velocity gradient
 // (FusedPass.hpp). With A_i = sigma_i / rho_i^2 (sigma = s - p I, Li eq. 28), P_i = p_i / rho_i^2,
 // v_ij = v_i - v_j and the pair tensor M_ij = A_i + A_j - Pi_ij I + f_ij^n (R_i + R_j):
 //   dv_i/dt = sum_j m_j M_ij grad_i W_ij (+ body force and loads, added by the caller)   Li eq. (30)
@@ -25,7 +25,10 @@
 // Viscosity and artificial stress keep the plain gradient.
 
 #include "methods/updated_lagrangian_sph/ArtificialViscosity.hpp"
+#include "methods/updated_lagrangian_sph/PairSums.hpp"
 #include "methods/updated_lagrangian_sph/ParticleView.hpp"
+
+#include <vector>
 
 namespace mfwave {
 
@@ -48,11 +51,16 @@ struct ForceOutputs {
   Real* largestMu = nullptr;              // count: max |mu_ij| over i's pairs, for the time step
 };
 
+// sums: scratch, one per particle (resized). Each unordered pair is evaluated once (PairSweep.hpp).
 template <int D>
-void forceRates(const ParticleView<D>& view, const ForceInputs<D>& inputs, const ForceOutputs<D>& outputs);
+void forceRates(const ParticleView<D>& view, const ForceInputs<D>& inputs, const ForceOutputs<D>& outputs,
+                std::vector<PairSums<D>>& sums);
 
-extern template void forceRates<1>(const ParticleView<1>&, const ForceInputs<1>&, const ForceOutputs<1>&);
-extern template void forceRates<2>(const ParticleView<2>&, const ForceInputs<2>&, const ForceOutputs<2>&);
-extern template void forceRates<3>(const ParticleView<3>&, const ForceInputs<3>&, const ForceOutputs<3>&);
+extern template void forceRates<1>(const ParticleView<1>&, const ForceInputs<1>&, const ForceOutputs<1>&,
+                                   std::vector<PairSums<1>>&);
+extern template void forceRates<2>(const ParticleView<2>&, const ForceInputs<2>&, const ForceOutputs<2>&,
+                                   std::vector<PairSums<2>>&);
+extern template void forceRates<3>(const ParticleView<3>&, const ForceInputs<3>&, const ForceOutputs<3>&,
+                                   std::vector<PairSums<3>>&);
 
 }  // namespace mfwave

@@ -3,8 +3,8 @@
 // deviatoric stresses straight from the state vector y (particle-major), the current densities
 // (from y, or the summation densities of this evaluation), the masses and, for the rate passes,
 // the pair table of this evaluation (PairTable.hpp: the pairs inside the support with grad W and W,
-// computed once and read by every pass). The pair passes take this instead of the system, so each
-// pass is a plain function of its inputs.
+// computed once and read by every pass; each pass visits every unordered pair once, PairSweep.hpp).
+// The pair passes take this instead of the system, so each pass is a plain function of its inputs.
 
 #include "core/Types.hpp"
 #include "kernels/Kernel.hpp"
@@ -38,23 +38,6 @@ struct ParticleView {
   // grad_i W_ij as particle i's rows use it: corrected when the view carries corrections.
   Vec<D> correctedGradient(Index i, const Vec<D>& gradW) const {
     return correction != nullptr ? Vec<D>(correction[i] * gradW) : gradW;
-  }
-  // Calls pair(k, j, r, gradW) for every pair of row i inside the support, in list order (the same
-  // order in every pass): k the pair table's entry, j the neighbour, r = x_i - x_j and
-  // gradW = grad_i W_ij = F_ij r from the table. The loop every rate pass runs.
-  template <class Pair>
-  MFWAVE_ALWAYS_INLINE void forEachPair(Index i, Pair&& pair) const {
-    const Vec<D> xi = position(i);
-    const Index* indices = neighbours->indices.data();
-    const std::uint8_t* inside = pairs->inside.data();
-    const Real* factor = pairs->gradientFactor.data();
-    const Index last = neighbours->offsets[static_cast<std::size_t>(i) + 1];
-    for (Index k = neighbours->offsets[static_cast<std::size_t>(i)]; k < last; ++k) {
-      if (inside[k] == 0) continue;  // i itself, or listed through the skin but outside the support
-      const Index j = indices[k];
-      const Vec<D> r = xi - position(j);
-      pair(k, j, r, Vec<D>(factor[k] * r));
-    }
   }
 };
 

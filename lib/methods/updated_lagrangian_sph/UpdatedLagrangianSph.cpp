@@ -119,7 +119,7 @@ struct UpdatedLagrangianSph<D>::Impl {
 
   // The view of y with neighbour lists made valid for its positions and current densities.
   ParticleView<D> view(const Real* y) {
-    if (neighbours.refresh(y + system.layout_.positionOffset(), system.layout_.particles)) pairs.mirrorValid = false;
+    if (neighbours.refresh(y + system.layout_.positionOffset(), system.layout_.particles)) pairs.rowsValid = false;
     ParticleView<D> v = constView(y);
     if (system.options_.density == DensityUpdate::Summation) {
       summationDensity(v, summedDensity.data());  // Li eq. (17); the state's rho entries are not used
@@ -185,22 +185,22 @@ struct UpdatedLagrangianSph<D>::Impl {
     return settings;
   }
 
-  void configurationRate(Real t, const ParticleView<D>& v, Real* qdot) const {
-    kinematicsRates(v, kinematicsSettings(), system.layout_, qdot);
+  void configurationRate(Real t, const ParticleView<D>& v, Real* qdot) {
+    kinematicsRates(v, kinematicsSettings(), system.layout_, qdot, pairSums);
     finishConfigurationRate(t, v, qdot);
   }
 
   // pdot points at the momentum part (layout.velocityOffset() is its entry 0).
   void momentumRate(Real t, const ParticleView<D>& v, const Real* y, Real* pdot) {
     prepareStresses(v, y + system.layout_.energyOffset());
-    forceRates(v, forceInputs(), forceOutputs());
+    forceRates(v, forceInputs(), forceOutputs(), pairSums);
     finishMomentumRate(t, v, pdot);
   }
 
   // Both parts at one state, the two pair passes in one sweep (FusedPass.hpp).
   void rate(Real t, const ParticleView<D>& v, const Real* y, Real* ydot) {
     prepareStresses(v, y + system.layout_.energyOffset());
-    fusedRates(v, kinematicsSettings(), system.layout_, ydot, forceInputs(), forceOutputs());
+    fusedRates(v, kinematicsSettings(), system.layout_, ydot, forceInputs(), forceOutputs(), pairSums);
     finishConfigurationRate(t, v, ydot);
     finishMomentumRate(t, v, ydot + system.layout_.configurationSize());
   }
@@ -344,6 +344,7 @@ struct UpdatedLagrangianSph<D>::Impl {
   std::vector<Real> pressureOverRho2;
   std::vector<Real> soundSpeed;
   std::vector<Real> pairAcceleration;
+  std::vector<PairSums<D>> pairSums;  // the rate passes' per-particle pair sums (PairSweep.hpp)
   std::vector<Real> energyRate;
   std::vector<Real> viscousPower;
   std::vector<Real> artificialStressPower;
@@ -489,7 +490,7 @@ void UpdatedLagrangianSph<D>::restoreState(const StateArchive& archive) {
     throw InputError("--restart", "the checkpoint's updated-Lagrangian SPH has " + std::to_string(largestMu.size()) +
                                       " particles, this run " + std::to_string(n));
   impl_->neighbours.restoreState(archive.section("skin"));
-  impl_->pairs.mirrorValid = false;
+  impl_->pairs.rowsValid = false;
   if (impl_->neighbours.list().rowCount() != layout_.particles)
     throw InputError("--restart", "the checkpoint's neighbour lists are not of this run's particles");
   impl_->largestMu = largestMu;
