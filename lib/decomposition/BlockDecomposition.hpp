@@ -15,7 +15,7 @@
 // Ranks are numbered over the grid x fastest, as the lattice's nodes are.
 
 #include "core/Types.hpp"
-#include "decomposition/Box.hpp"
+#include "lattice/Box.hpp"
 #include "lattice/LatticeRowTypes.hpp"
 
 #include <array>

@@ -9,7 +9,7 @@
 // `components` values per node; messages are packed in the order of their box's nodes.
 
 #include "decomposition/BlockDecomposition.hpp"
-#include "decomposition/Box.hpp"
+#include "lattice/Box.hpp"
 
 #include <array>
 #include <vector>

@@ -9,15 +9,6 @@
 namespace mfwave {
 
 template <int D, int C>
-std::array<Index, D> stencilReach(const LatticeStencils<D, C>& stencils) {
-  std::array<Index, D> reach{};
-  for (Index e = 0; e < stencils.entryCount(); ++e)
-    for (std::size_t s = 0; s < static_cast<std::size_t>(D); ++s)
-      reach[s] = std::max(reach[s], std::abs(stencils.offset(e)[s]));
-  return reach;
-}
-
-template <int D, int C>
 LocalStencils<D, C>::LocalStencils(const LatticeStencils<D, C>& stencils, const Box<D>& owned, const Box<D>& local)
     : stencils_(&stencils), owned_(owned), local_(local) {
   const LatticeRowTypes<D>& types = stencils.types();
@@ -81,10 +72,5 @@ template class LocalStencils<2>;
 template class LocalStencils<3>;
 template class LocalStencils<2, 1>;
 template class LocalStencils<3, 1>;
-template std::array<Index, 1> stencilReach<1>(const LatticeStencils<1>&);
-template std::array<Index, 2> stencilReach<2>(const LatticeStencils<2>&);
-template std::array<Index, 3> stencilReach<3>(const LatticeStencils<3>&);
-template std::array<Index, 2> stencilReach<2>(const LatticeStencils<2, 1>&);
-template std::array<Index, 3> stencilReach<3>(const LatticeStencils<3, 1>&);
 
 }  // namespace mfwave

@@ -7,7 +7,8 @@
 // owned row is bitwise the serial one, on any number of ranks and threads.
 
 #include "core/Types.hpp"
-#include "decomposition/Box.hpp"
+#include "lattice/Box.hpp"
+#include "lattice/StencilReach.hpp"
 #include "lattice/LatticeStencils.hpp"
 
 #include <algorithm>
@@ -16,10 +17,6 @@
 #include <vector>
 
 namespace mfwave {
-
-// The largest |offset| along each axis over the stencils' entries: the halo depth their rows read.
-template <int D, int C>
-std::array<Index, D> stencilReach(const LatticeStencils<D, C>& stencils);
 
 // C components per node, as the stencils' (LatticeStencils<D, C>).
 // Which owned lines a product visits: all, those whose rows read owned nodes only (computed while
@@ -127,10 +124,5 @@ extern template class LocalStencils<2>;
 extern template class LocalStencils<3>;
 extern template class LocalStencils<2, 1>;
 extern template class LocalStencils<3, 1>;
-extern template std::array<Index, 1> stencilReach<1>(const LatticeStencils<1>&);
-extern template std::array<Index, 2> stencilReach<2>(const LatticeStencils<2>&);
-extern template std::array<Index, 3> stencilReach<3>(const LatticeStencils<3>&);
-extern template std::array<Index, 2> stencilReach<2>(const LatticeStencils<2, 1>&);
-extern template std::array<Index, 3> stencilReach<3>(const LatticeStencils<3, 1>&);
 
 }  // namespace mfwave

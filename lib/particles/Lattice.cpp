@@ -96,17 +96,14 @@ ParticleSet<D> makeLattice(const Vec<D>& lower, const Vec<D>& upper, Real dx, co
   std::array<Index, D> node = first;  // lattice index per axis, x fastest
   for (Index p = 0; p < count; ++p) {
     Vec<D> x;
-    std::uint8_t faces = 0;
     Index id = 0;
     for (int a = D - 1; a >= 0; --a) {
       const auto s = static_cast<std::size_t>(a);
       const Index i = node[s];
       x[a] = nodeCoordinate<D>(lower, upper, n[s], a, i);
-      if (i == 0) faces |= faceBit(2 * a);
-      if (i == n[s]) faces |= faceBit(2 * a + 1);
       id = id * (n[s] + 1) + i;
     }
-    set.add(x, nodeVolume, ParticleKind::Physical, faces, id);
+    set.add(x, nodeVolume, ParticleKind::Physical, latticeFaceMask<D>(n, node), id);
     for (int a = 0; a < D; ++a) {  // advance the odometer
       auto& i = node[static_cast<std::size_t>(a)];
       if (++i < end[static_cast<std::size_t>(a)]) break;

@@ -6,9 +6,11 @@
 // silently move the boundary.
 
 #include "core/Types.hpp"
+#include "particles/BoxFace.hpp"
 #include "particles/ParticleSet.hpp"
 
 #include <array>
+#include <cstdint>
 
 namespace mfwave {
 
@@ -31,6 +33,19 @@ ParticleSet<D> makeLattice(const Vec<D>& lower, const Vec<D>& upper, Real dx);
 template <int D>
 ParticleSet<D> makeLattice(const Vec<D>& lower, const Vec<D>& upper, Real dx, const std::array<Index, D>& first,
                            const std::array<Index, D>& end);
+
+// The faces (faceBit mask) node `node` of a lattice with `intervals` per axis lies on: the lower
+// face of an axis at index 0, the upper at index intervals. makeLattice tags its particles so.
+template <int D>
+std::uint8_t latticeFaceMask(const std::array<Index, D>& intervals, const std::array<Index, D>& node) {
+  std::uint8_t faces = 0;
+  for (int a = 0; a < D; ++a) {
+    const auto s = static_cast<std::size_t>(a);
+    if (node[s] == 0) faces |= faceBit(2 * a);
+    if (node[s] == intervals[s]) faces |= faceBit(2 * a + 1);
+  }
+  return faces;
+}
 
 // The number (x fastest) of the lattice node nearest x, found per axis by the nodes' coordinates;
 // on a tie the lower node, as a search over makeLattice's particles in their order finds it. Costs

@@ -32,15 +32,8 @@ class DistributedCentredDamping : public CentredDampingSolve {
     const Box<D>& owned = system_.owned();
     const LatticeRowTypes<D>& types = serial_.types();
     prescribed_.apply(serial_.mass(), serial_.damping(), halfStep_,
-                      [&](Index local) {  // the type of the owned node numbered `local`
-                        std::array<Index, D> node = owned.lo;
-                        for (int axis = 0; axis < D; ++axis) {
-                          node[static_cast<std::size_t>(axis)] += local % owned.extent(axis);
-                          local /= owned.extent(axis);
-                        }
-                        return types.typeOf(node);
-                      },
-                      prescribedAcceleration, a.data());
+                      [&](Index local) { return types.typeOf(owned.node(local)); }, prescribedAcceleration,
+                      a.data());
   }
 
  private:

@@ -8,6 +8,7 @@
 #include "methods/very_weak_sph/VeryWeakSphLattice.hpp"
 #include "neighbours/CellList.hpp"
 #include "particles/BoxFace.hpp"
+#include "particles/Lattice.hpp"
 
 #include <utility>
 
@@ -143,21 +144,12 @@ VeryWeakSphProblem<D>::VeryWeakSphProblem(const VeryWeakSphProblemSettings<D>& s
   if (!onLattice(settings))
     throw InputError("method.operator", "a problem set up without its particles needs the lattice storage");
   const std::array<Index, D> nodes = latticeNodesOf<D>(settings);
-  // The face tags makeLattice gives node a: its lower or upper end along each axis.
+  std::array<Index, D> intervals = nodes;
+  for (Index& n : intervals) --n;
+  // The face tags makeLattice gives node a.
   const LatticeRowTypes<D> lattice(nodes, 1);
   prescribeFaces(
-      lattice.nodeCount(),
-      [&](Index a) {
-        const std::array<Index, D> node = lattice.node(a);
-        std::uint8_t mask = 0;
-        for (int axis = 0; axis < D; ++axis) {
-          const auto s = static_cast<std::size_t>(axis);
-          if (node[s] == 0) mask |= faceBit(2 * axis);
-          if (node[s] == nodes[s] - 1) mask |= faceBit(2 * axis + 1);
-        }
-        return mask;
-      },
-      settings);
+      lattice.nodeCount(), [&](Index a) { return latticeFaceMask<D>(intervals, lattice.node(a)); }, settings);
   buildLattice(nodes, settings);
 }
 

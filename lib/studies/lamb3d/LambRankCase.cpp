@@ -51,7 +51,6 @@ CaseResult runOnRanks(const StudySettings& study, const CaseSettings& settings, 
   // (eqs. (19), (21)-(22), (31)-(33), (35)), and this rank's share of its system.
   VeryWeakSphProblem<D> problem(problemSettings);
   const LatticeSecondOrderSystem<D>& whole = *problem.latticeSystem();
-  const std::array<Index, D>& nodes = whole.stiffness().types().nodes();
   const Index nodeCount = whole.stiffness().types().nodeCount();
   result.record.particles = nodeCount;
   result.ghosts = ghostLayerCount<D>(lower, upper, dx, problemSettings.ghostLayers, problemSettings.ghostFaces);
@@ -118,13 +117,9 @@ CaseResult runOnRanks(const StudySettings& study, const CaseSettings& settings, 
   const std::vector<Probe> probes = resolveProbesOnLattice(scene.probes, geometry);
   std::vector<ProbeSite<D>> sites;
   for (const Probe& p : probes) {
-    std::array<Index, D> node{}, next{};
-    Index rest = p.particle;
-    for (std::size_t a = 0; a < static_cast<std::size_t>(D); ++a) {
-      node[a] = rest % nodes[a];
-      rest /= nodes[a];
-      next[a] = node[a] + 1;
-    }
+    const std::array<Index, D> node = whole.types().node(p.particle);
+    std::array<Index, D> next = node;
+    for (Index& n : next) ++n;
     sites.push_back(probeSite<D>(makeLattice<D>(lower, upper, dx, node, next), 0));
   }
   std::vector<Index> probeParticles;

@@ -1,8 +1,8 @@
 #pragma once
-// A box of lattice nodes, [lo, hi) per axis, and the few operations a domain decomposition needs:
-// its size, the intersection of two boxes, growth by a stencil's reach clipped to the lattice, and a
-// walk over its nodes in the lattice's own order (x fastest, LatticeRowTypes.hpp), which is the
-// order every halo message is packed and unpacked in.
+// A box of lattice nodes, [lo, hi) per axis, and the few operations a domain decomposition (or any
+// work on part of a lattice) needs: its size, the intersection of two boxes, growth by a stencil's
+// reach (stencilReach) clipped to the lattice, and a walk over its nodes in the lattice's own order
+// (x fastest, LatticeRowTypes.hpp), which is the order every halo message is packed and unpacked in.
 
 #include "core/Types.hpp"
 
@@ -40,6 +40,15 @@ struct Box {
     Index index = 0;
     for (int a = D - 1; a >= 0; --a) index = index * extent(a) + (node[static_cast<std::size_t>(a)] - lo[static_cast<std::size_t>(a)]);
     return index;
+  }
+  // The node numbered `index` in the box's own x-fastest numbering (localIndex's inverse).
+  std::array<Index, D> node(Index index) const {
+    std::array<Index, D> n = lo;
+    for (int a = 0; a < D; ++a) {
+      n[static_cast<std::size_t>(a)] += index % extent(a);
+      index /= extent(a);
+    }
+    return n;
   }
   bool operator==(const Box& other) const { return lo == other.lo && hi == other.hi; }
   bool operator!=(const Box& other) const { return !(*this == other); }

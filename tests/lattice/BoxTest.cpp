@@ -1,4 +1,4 @@
-#include "decomposition/Box.hpp"
+#include "lattice/Box.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@ TEST(BoxTest, WalksItsNodesXFastestInItsOwnNumbering) {
   Index k = 0;
   box.forEachNode([&](const std::array<Index, 3>& node) {
     EXPECT_EQ(box.localIndex(node), k);
+    EXPECT_EQ(box.node(k), node);  // the numbering's inverse
     EXPECT_TRUE(box.contains(node));
     ++k;
   });
