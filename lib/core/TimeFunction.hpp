@@ -36,6 +36,8 @@ class TimeFunction {
 
   Real operator()(Real t) const;
   Kind kind() const { return kind_; }
+  // The factory's arguments, in its order (ricker: peak frequency, delay, amplitude).
+  const std::vector<Real>& parameters() const { return p_; }
   // The breakpoints of a piecewise-linear function (ramp, triangle, tabulated; constant held
   // from its first breakpoint on): f is values[0] before times[0], linear between breakpoints and
   // values.back() after the last. False for a constant and a Ricker wavelet (not piecewise linear

@@ -42,6 +42,9 @@ DriverCommandLine::DriverCommandLine(std::string program, std::string descriptio
   app_.add_option("--out", options_.outputFolder, "output folder (default: the scene's output.folder)");
   app_.add_option("--threads", options_.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
   app_.add_flag("--quiet", options_.quiet, "no progress display; print only the summary");
+  app_.add_flag("--check", options_.checkOnly,
+                "read and validate the scene and the study's plan, then stop: nothing is run or written (exit 0 "
+                "when valid, 2 naming the key when not)");
   app_.add_option("--checkpoint-every", checkpointEvery_,
                   "write a checkpoint every N steps (e.g. 500) or every T wall-clock seconds (e.g. 600s) into the "
                   "output folder; overrides output.checkpoint_every / output.checkpoint_seconds");

@@ -1,7 +1,8 @@
 #pragma once
 // The command line every driver and analysis tool shares:
 //   --scene FILE, --set key.path=value (repeated), --out DIR, --threads N, --quiet, --help, --version,
-//   --checkpoint-every N | Ts, --restart DIR.
+//   --checkpoint-every N | Ts, --restart DIR, --check (validate only: prepareOutputFolder stops the
+//   program there, io/run/SceneDriver.hpp).
 // A driver may add its own options to app() before parse(). --help lists the options and, in its
 // footer, the scene keys the driver reads. A driver whose scene is required runs its shipped scene,
 // data/scenes/<program>.toml (or the one setDefaultScene names), when none is given: found beside
@@ -21,6 +22,7 @@ struct DriverOptions {
   std::string outputFolder;            // --out (empty: the scene's output.folder)
   int threads = 0;                     // --threads (0: OpenMP's default)
   bool quiet = false;                  // --quiet: no progress, only the summary
+  bool checkOnly = false;              // --check: validate the scene and the plan, run and write nothing
   // --checkpoint-every: a checkpoint every N steps ("500") or every T wall-clock seconds ("600s");
   // 0 for either when not given (then the scene's output.checkpoint_every / _seconds hold).
   long checkpointSteps = 0;

@@ -32,6 +32,11 @@ int runDriver(const std::string& program, const std::function<int()>& body, int 
       return 128 + interruptionSignal();
     }
     return status;
+  } catch (const CheckCompleted&) {
+    if (rank == 0)
+      std::cout << program << ": the scene is valid (every key read, the plan accepted; --check: nothing run or "
+                              "written)\n";
+    return 0;
   } catch (const InputError& e) {
     if (rank > 0) std::this_thread::sleep_for(std::chrono::seconds(1));
     std::cerr << who << ": error: " << e.what() << '\n';

@@ -1,5 +1,7 @@
 #include "io/run/SceneDriver.hpp"
 
+#include "io/run/RunDriver.hpp"
+
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "io/checkpoint/FolderCheckpointStore.hpp"
@@ -60,6 +62,7 @@ SceneReader loadDriverScene(const DriverOptions& options, const SceneSchema& sch
 
 std::string prepareOutputFolder(const DriverOptions& options, const std::string& sceneFolder,
                                 const SceneReader& reader, const CheckpointStoreMaker& makeStore) {
+  if (options.checkOnly) throw CheckCompleted{};
   // A restart writes into the folder it goes on from, unless told otherwise.
   const std::string folder = !options.outputFolder.empty()  ? options.outputFolder
                              : !options.restartFolder.empty() ? options.restartFolder

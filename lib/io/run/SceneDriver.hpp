@@ -29,6 +29,9 @@ SceneReader loadDriverScene(const DriverOptions& options, const SceneSchema& sch
 // from one (--restart: refused with exit 2 when the folder holds no whole checkpoint of this scene).
 // The store is a FolderCheckpointStore unless `makeStore` is given: a driver under mpirun passes
 // one that writes per rank (decomposition/mpi/RankCheckpointStore), so that io links no MPI.
+// With --check (options.checkOnly) it stops the program instead, before making anything: every
+// driver calls it once its scene and plan are read and checkAllKeysRead has passed, so reaching it
+// means the scene is valid. It throws CheckCompleted, which runDriver turns into exit 0.
 using CheckpointStoreMaker = std::function<std::shared_ptr<CheckpointStore>(
     const std::string& folder, const std::string& sceneDigest, const CheckpointSettings& settings,
     const std::string& sceneText)>;

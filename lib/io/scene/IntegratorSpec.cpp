@@ -9,24 +9,6 @@
 
 namespace mfwave {
 
-Real IntegratorSpec::timeStepFor(Real stableStep) const {
-  return endTime / static_cast<Real>(stepsFor(stableStep));
-}
-
-long IntegratorSpec::stepsFor(Real stableStep) const {
-  const Real steps = timeStep ? std::round(endTime / *timeStep) : std::ceil(endTime / (cfl * stableStep) - 1e-9);
-  const std::string problem = tooManySteps(steps, scene::formatNumber(endTime) + " s at a step of " +
-                                                      scene::formatNumber(timeStep ? *timeStep : cfl * stableStep) + " s");
-  if (!problem.empty()) throw InputError(timeStep ? "integrator.time_step" : "integrator.end_time", problem);
-  return std::max(1L, static_cast<long>(steps));
-}
-
-std::string tooManySteps(Real steps, const std::string& what) {
-  if (steps <= IntegratorSpec::kMaxSteps) return "";
-  return what + " is " + scene::formatNumber(steps) + " steps; more than " +
-         scene::formatNumber(IntegratorSpec::kMaxSteps) + " is refused";
-}
-
 IntegratorSpec readIntegrator(SceneReader& reader) {
   reader.table("integrator", true);
   IntegratorSpec s;

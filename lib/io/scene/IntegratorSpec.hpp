@@ -10,6 +10,7 @@
 
 #include "integrators/IntegratorFactory.hpp"
 #include "integrators/IntegratorKind.hpp"
+#include "integrators/TimeStep.hpp"
 #include "io/scene/SceneReader.hpp"
 #include "io/scene/SceneSchema.hpp"
 
@@ -26,21 +27,16 @@ struct IntegratorSpec {
   Real cfl = 0.5;                // used when timeStep is not given (1 by default for first-order)
   IntegratorOptions options;     // newmark beta/gamma, ARKODE table/adaptive/tolerances (options.arkode)
 
-  // The most steps a run may take (1e12: days at 10^7 steps/s); stepsFor refuses more, naming
+  // The step rule this section gives (integrators/TimeStep: the step's one home).
+  TimeStepRule stepRule() const { return {endTime, timeStep, cfl}; }
+  // chooseTimeStep(stepRule(), stableStep): timeStep, or the largest step <= cfl * stableStep that
+  // divides endTime into whole steps; more than TimeStepRule::kMaxSteps steps are refused, naming
   // integrator.end_time (or time_step), exit 2.
-  static constexpr Real kMaxSteps = 1e12;
-  // The step to run with: timeStep, or the largest step <= cfl * stableStep that divides
-  // endTime into whole steps.
-  Real timeStepFor(Real stableStep) const;
-  long stepsFor(Real stableStep) const;  // endTime / timeStepFor(stableStep), rounded
+  Real timeStepFor(Real stableStep) const { return chooseTimeStep(stepRule(), stableStep).dt; }
+  long stepsFor(Real stableStep) const { return chooseTimeStep(stepRule(), stableStep).steps; }
 };
 
 IntegratorSpec readIntegrator(SceneReader& reader);
-
-// The one check of a run's length: empty when `steps` is at most IntegratorSpec::kMaxSteps, else the
-// problem to report against the caller's key, "<what> is <steps> steps; more than 1e12 is refused"
-// (a typo such as end_time = 1e300, not a run; it would overflow the step counter).
-std::string tooManySteps(Real steps, const std::string& what);
 
 // For drivers of first-order systems: integrator.name takes firstOrderIntegratorNames() (default
 // "leapfrog") and integrator.cfl defaults to 1. Call before loading the scene.

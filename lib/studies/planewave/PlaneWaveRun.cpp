@@ -7,6 +7,7 @@
 #include "core/Stopwatch.hpp"
 #include "integrators/IntegratorFactory.hpp"
 #include "integrators/StabilityLimit.hpp"
+#include "integrators/TimeStep.hpp"
 #include "io/scene/IntegratorSpec.hpp"
 #include "observers/TimeLoop.hpp"
 #include "methods/spectral_element/SpectralElementElasticity.hpp"
@@ -52,17 +53,22 @@ PlaneWave<D> exactWave(const Settings& s) {
 }
 
 // Fills the record's end time, steps and dt: s.periods of the wave at s.cfl of `stableStep`,
-// shortened to land on the end.
+// shortened to land on the end (chooseTimeStep, the step's one home).
 template <int D>
 void planSteps(const Settings& s, const PlaneWave<D>& wave, CaseRecord& record) {
   record.simulatedTime = s.periods * wave.period();
-  const Real steps = std::ceil(record.simulatedTime / (s.cfl * record.stableTimeStep) - 1e-9);
-  std::ostringstream what;
-  what << s.periods << " periods at cfl " << s.cfl;
-  const std::string tooMany = tooManySteps(steps, what.str());
-  if (!tooMany.empty()) throw InputError("study.periods", tooMany);
-  record.steps = static_cast<long>(steps);
-  record.timeStep = record.simulatedTime / static_cast<Real>(record.steps);
+  TimeStepRule rule;
+  rule.endTime = record.simulatedTime;
+  rule.cfl = s.cfl;
+  try {
+    const TimeStepChoice choice = chooseTimeStep(rule, record.stableTimeStep);
+    record.steps = choice.steps;
+    record.timeStep = choice.dt;
+  } catch (const InputError& e) {
+    std::ostringstream what;
+    what << s.periods << " periods at cfl " << s.cfl << ": " << e.what();
+    throw InputError("study.periods", what.str());
+  }
 }
 
 // Stops a growing field at once: anything non-finite or a thousand times the initial amplitude

@@ -1,0 +1,69 @@
+#pragma once
+// One entry of the method catalogue: everything the rest of the code needs to know about a
+// discretisation without knowing its kernel, written once (MethodCatalogue.cpp registers them).
+//
+//   name          the one name of the method in scenes (method.name), tools, the sweep and docs
+//   variants      the values of its variant key (method.variant), if it has variants
+//   supports      the scene features it can represent: dimensions, geometry shapes, boundary and
+//                 load types, integrators. A scene that asks for anything else is refused before
+//                 any work (SceneSupport.hpp), naming the key and the methods that do support it.
+//   addOptions    registers its [method] keys (typed, with defaults and docs) in a schema
+//   stepRule      how its stable step is found, in words (the step itself: integrators/TimeStep)
+//   interiorRow   how the plan finds its stable step and dispersion: the lattice tools' interior
+//                 row of the method (spectra/LatticeMethods) or a closed form
+//   cost          measured memory per particle and rate, per dimension, for the plan's estimates
+//   programs      the study programs that run it (mfwave run hands a scene to one of them)
+
+#include "io/scene/BoundarySpec.hpp"
+#include "io/scene/LoadSpec.hpp"
+#include "io/scene/SceneSchema.hpp"
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace mfwave {
+
+struct MethodSupport {
+  std::vector<int> dimensions;
+  std::vector<std::string> shapes;  // geometry.shape: "line", "rectangle", "block"
+  std::vector<BoundaryType> boundaries;
+  std::vector<LoadType> loads;
+  std::vector<std::string> integrators;  // integrator.name
+  bool firstOrder = false;               // integrator.name takes the first-order names (UL-SPH)
+};
+
+// Measured cost of a whole run, one core, per dimension (index D - 1); 0 where not measured. The
+// plan predicts peak memory = baseMiB + bytesPerParticle * particles and wall time =
+// setupSecondsPerParticle * particles + particles * steps / particleStepsPerSecond.
+struct MethodCost {
+  double baseMiB = 40;  // the process before any particle (libraries, the exact reference)
+  std::array<double, 3> bytesPerParticle{};
+  std::array<double, 3> particleStepsPerSecond{};
+  std::array<double, 3> setupSecondsPerParticle{};
+  // Memory that grows faster than the particles (a sparse LU's fill): peak += fillMiB * (N / fillNodes)^fillExponent.
+  double fillMiB = 0, fillNodes = 1, fillExponent = 1;
+  std::string measured;  // where the figures come from (scene, spacings, date)
+};
+
+// How the plan reaches the method's spectrum.
+enum class InteriorRow {
+  Lattice,         // the lattice tools' interior row (latticeMethodStencil) of latticeName
+  SpectralElement  // GLL elements: the central difference's own phase error and a closed-form step
+};
+
+struct MethodEntry {
+  std::string name;
+  std::string title;     // one line: "Very weak form SPH (Ding, Long, Wu)"
+  std::string summary;   // a few lines for `mfwave methods`
+  std::vector<std::string> variants;  // method.variant values, the default first (empty: none)
+  MethodSupport supports;
+  std::function<void(SceneSchema&)> addOptions;
+  std::string stepRule;
+  InteriorRow interiorRow = InteriorRow::Lattice;
+  MethodCost cost;
+  std::vector<std::string> programs;
+};
+
+}  // namespace mfwave

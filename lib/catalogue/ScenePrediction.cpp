@@ -1,0 +1,263 @@
+#include "catalogue/ScenePrediction.hpp"
+
+#include "analysis/LatticeMethods.hpp"
+#include "catalogue/MethodCatalogue.hpp"
+#include "catalogue/RowSpectrum.hpp"
+#include "catalogue/SceneSupport.hpp"
+#include "catalogue/SourceFrequency.hpp"
+#include "core/Error.hpp"
+#include "integrators/TimeStep.hpp"
+#include "io/scene/Format.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace mfwave {
+namespace {
+
+// The spectral elements' stable step as a Courant number c_p dt / dx at the mean node spacing dx,
+// for the central difference limit 2 / omega_max (GLL nodes crowd at element edges, so it falls with
+// N); measured on the Lamb scenes' Gershgorin steps (LambSpectralElementCase), 2-D and 3-D.
+Real spectralElementCourant(int order, int dimension) {
+  static const Real planeStrain[] = {0, 0.71, 0.62, 0.56, 0.52, 0.50, 0.48, 0.47, 0.46};
+  static const Real solid[] = {0, 0.58, 0.51, 0.46, 0.43, 0.41, 0.40, 0.39, 0.38};
+  const int n = std::clamp(order, 1, 8);
+  return dimension == 3 ? solid[n] : planeStrain[n];
+}
+
+// The interior row's name in the lattice tools (analysis/LatticeMethods) and its settings.
+std::string latticeRowName(const MethodChoice& c) {
+  const std::string& name = c.method->name;
+  if (name == "finite_difference") return "finite_difference";
+  if (name == "very_weak_sph") return "vwsph_" + c.variant;
+  if (name == "reproducing_kernel") return "rkcm";
+  if (name == "radial_basis") return "rbcm";
+  if (name == "updated_lagrangian_sph") return c.gradientCorrection ? "ulsph_corrected" : "ulsph";
+  return "ulsph_corrected";  // total_lagrangian_sph: the corrected kernel gradients, linearised at rest
+}
+
+LatticeMethodSettings latticeSettings(const MethodChoice& c, const Material& material) {
+  LatticeMethodSettings s;
+  s.material = material;
+  s.kernel = c.kernel;
+  s.smoothingLengthRatio = c.smoothingLengthRatio;
+  s.rkOrder = c.order;
+  s.rkSupportRatio = c.supportRatio;
+  s.rbShapeRatio = c.shapeRatio;
+  return s;
+}
+
+Index ghostParticles(const GeometrySpec& g) {
+  if (g.ghostLayers <= 0 || g.ghostFaces == 0) return 0;
+  Index grown = 1;
+  for (int a = 0; a < g.dimension; ++a) {
+    Index n = g.intervals[static_cast<std::size_t>(a)] + 1;
+    if (g.ghostFaces & (1u << (2 * a))) n += g.ghostLayers;
+    if (g.ghostFaces & (1u << (2 * a + 1))) n += g.ghostLayers;
+    grown *= n;
+  }
+  return grown - g.particleCount();
+}
+
+struct RowFigures {
+  Real omegaMax = 0;
+  bool growing = false;
+  RowPhaseError phase;
+};
+
+template <int D>
+RowFigures latticeRowFigures(const MethodChoice& c, const Material& material, Real dx, Real frequency,
+                             const IntegratorSpec& integrator, Real* stableStepOut, TimeStepChoice* stepOut) {
+  const MethodLatticeStencil<D> row =
+      latticeMethodStencil<D>(latticeRowName(c), latticeSettings(c, material), dx, "method.name");
+  const RowSpectrum spectrum = rowSpectrum<D>(row, dx);
+  RowFigures f;
+  f.omegaMax = spectrum.omegaMax;
+  f.growing = spectrum.growing;
+  *stableStepOut = centralDifferenceStableStep(spectrum.omegaMax);
+  *stepOut = chooseTimeStep(integrator.stepRule(), *stableStepOut);
+  if (frequency > 0) f.phase = rowPhaseError<D>(row, material, dx, frequency, stepOut->dt, integrator.kind);
+  return f;
+}
+
+const MethodChoice defaultChoice(const MethodEntry& m, int dimension) {
+  MethodChoice c;
+  c.method = &m;
+  if (!m.variants.empty()) c.variant = m.variants.front();
+  if (m.name == "very_weak_sph") c.smoothingLengthRatio = 1.0;
+  if (m.name == "updated_lagrangian_sph" || m.name == "total_lagrangian_sph") c.smoothingLengthRatio = 1.3;
+  if (m.name == "spectral_element") c.order = 4;
+  if (m.name == "reproducing_kernel") c.supportRatio = dimension == 3 ? 2.2 : 2.5;
+  if (m.name == "total_lagrangian_sph") c.gradientCorrection = true;
+  return c;
+}
+
+}  // namespace
+
+std::string MethodChoice::label() const {
+  std::ostringstream s;
+  s << method->name;
+  if (!variant.empty()) s << " (" << variant << ")";
+  else if (method->name == "reproducing_kernel") s << " (m = " << order << ", a/h = " << supportRatio << ")";
+  else if (method->name == "spectral_element") s << " (N = " << order << ")";
+  else if (method->name == "updated_lagrangian_sph" && gradientCorrection) s << " (corrected gradients)";
+  return s.str();
+}
+
+MethodChoice readMethodChoice(SceneReader& reader, const MethodEntry& m, int dimension) {
+  MethodChoice c = defaultChoice(m, dimension);
+  const SceneSchema& schema = reader.schema();
+  const auto registered = [&schema](const char* key) { return schema.find(key) != nullptr; };
+  if (m.name == "very_weak_sph") {
+    c.variant = reader.string("method.variant");
+    c.kernel = reader.string("method.kernel");
+    c.smoothingLengthRatio = reader.number("method.smoothing_length_ratio");
+  } else if (m.name == "updated_lagrangian_sph") {
+    c.kernel = reader.string("method.kernel");
+    c.smoothingLengthRatio = reader.number("method.smoothing_length_ratio");
+    c.gradientCorrection = reader.boolean("method.kernel_gradient_correction");
+    c.courant = reader.number("method.courant");
+  } else if (m.name == "reproducing_kernel") {
+    if (registered("method.order")) c.order = static_cast<int>(reader.integer("method.order"));
+    if (registered("method.support_ratio") && reader.has("method.support_ratio"))
+      c.supportRatio = reader.number("method.support_ratio");
+  } else if (m.name == "radial_basis") {
+    c.shapeRatio = reader.number("method.shape_ratio");
+  } else if (m.name == "spectral_element") {
+    c.order = static_cast<int>(reader.integer("method.order"));
+  }
+  return c;
+}
+
+Prediction predictScene(const Scene& scene, const MethodChoice& c, Real spacing) {
+  const MethodEntry& m = *c.method;
+  const GeometrySpec g = spacing > 0 && std::abs(spacing - scene.geometry.spacing) > 1e-12 * spacing
+                             ? scene.geometry.withLattice(scene.geometry.lower, scene.geometry.upper, spacing)
+                             : scene.geometry;
+  const int d = g.dimension;
+  const Material material = scene.material.material();
+  Prediction p;
+  p.method = c.label();
+  p.spacing = g.spacing;
+  p.particles = g.particleCount();
+  const bool ghosts = m.name == "very_weak_sph" && c.variant != "galerkin";
+  if (ghosts) p.particles += ghostParticles(g);
+
+  const SourceFrequency source = sceneSourceFrequency(scene);
+  p.hasSource = source.found;
+  p.frequency = source.frequency;
+  p.frequencySource = source.found ? source.source + " (" + source.rule + ")" : "";
+
+  const std::size_t di = static_cast<std::size_t>(d - 1);
+  const MethodCost& cost = m.cost;
+  const double n = static_cast<double>(p.particles);
+  p.memoryBytes = (cost.baseMiB + cost.fillMiB * std::pow(n / cost.fillNodes, cost.fillExponent)) * 1048576.0 +
+                  cost.bytesPerParticle[di] * n;
+  if (cost.particleStepsPerSecond[di] <= 0)
+    p.notes.push_back(m.name + " has no measured rate in " + std::to_string(d) + "-D: the wall time is unknown");
+
+  TimeStepChoice step;
+  if (m.interiorRow == InteriorRow::SpectralElement) {
+    p.stableStep = spectralElementCourant(c.order, d) * g.spacing / material.pWaveSpeed();
+    step = chooseTimeStep(scene.integrator.stepRule(), p.stableStep);
+    if (p.hasSource) {
+      // The elements' own dispersion error falls as (k h)^(2N): what is left at the resolutions a
+      // run uses is the central difference's (which-method.md).
+      const Real omega = 2 * kPi * p.frequency;
+      p.phaseError = std::abs(discreteFrequency(omega, step.dt, scene.integrator.kind) / omega - 1);
+      p.spatialPhaseError = 0;
+      p.pointsPerWavelength = material.sWaveSpeed() / p.frequency / g.spacing;
+      p.phaseWave = "S (the elements' own dispersion neglected)";
+    }
+  } else if (m.name == "updated_lagrangian_sph") {
+    // The method's own step criteria at rest: courant h / c (no viscous or force limit at rest),
+    // which integrator.cfl multiplies.
+    p.stableStep = c.courant * c.smoothingLengthRatio * g.spacing / material.pWaveSpeed();
+    step = chooseTimeStep(scene.integrator.stepRule(), p.stableStep);
+    if (p.hasSource) {
+      Real unused = 0;
+      TimeStepChoice unusedStep;
+      RowFigures f;
+      IntegratorSpec leapfrog = scene.integrator;
+      leapfrog.kind = IntegratorKind::Leapfrog;
+      if (d == 1) f = latticeRowFigures<1>(c, material, g.spacing, p.frequency, leapfrog, &unused, &unusedStep);
+      if (d == 2) f = latticeRowFigures<2>(c, material, g.spacing, p.frequency, leapfrog, &unused, &unusedStep);
+      if (d == 3) f = latticeRowFigures<3>(c, material, g.spacing, p.frequency, leapfrog, &unused, &unusedStep);
+      p.growing = f.growing;
+      const Real omega = 2 * kPi * p.frequency;
+      const Real spatial = f.phase.spatial;
+      // Its own step, not the row's: the time error at step.dt on the row's frequency.
+      p.phaseError = std::abs(discreteFrequency(omega * (1 + spatial), step.dt, IntegratorKind::Leapfrog) / omega - 1);
+      p.spatialPhaseError = spatial;
+      p.pointsPerWavelength = f.phase.pointsPerWavelength;
+      p.phaseWave = f.phase.wave + " (the row linearised about rest)";
+    }
+  } else {
+    RowFigures f;
+    const Real nu = p.hasSource ? p.frequency : 0;
+    if (d == 1) f = latticeRowFigures<1>(c, material, g.spacing, nu, scene.integrator, &p.stableStep, &step);
+    if (d == 2) f = latticeRowFigures<2>(c, material, g.spacing, nu, scene.integrator, &p.stableStep, &step);
+    if (d == 3) f = latticeRowFigures<3>(c, material, g.spacing, nu, scene.integrator, &p.stableStep, &step);
+    p.growing = f.growing;
+    if (p.hasSource) {
+      p.phaseError = f.phase.total;
+      p.spatialPhaseError = f.phase.spatial;
+      p.pointsPerWavelength = f.phase.pointsPerWavelength;
+      p.phaseWave = f.phase.wave;
+    }
+    p.notes.push_back("stable step from the interior row; boundary rows may lower it (the run's power iteration "
+                      "decides)");
+  }
+  if (!p.hasSource) {
+    p.phaseError = std::numeric_limits<Real>::quiet_NaN();
+    p.notes.push_back("no time-dependent source: no dominant frequency, no phase error predicted");
+  }
+  if (p.growing) p.notes.push_back("the interior row has growing modes (omega^2 < 0): the run will be refused or grow");
+  p.timeStep = step.dt;
+  p.steps = step.steps;
+  const double rate = cost.particleStepsPerSecond[di];
+  p.setupSeconds = cost.setupSecondsPerParticle[di] * n;
+  p.wallSeconds = rate > 0 ? p.setupSeconds + n * static_cast<double>(p.steps) / rate
+                           : std::numeric_limits<double>::quiet_NaN();
+  return p;
+}
+
+TargetAnswer cheapestForTarget(const Scene& scene, Real target, double memoryLimitBytes) {
+  TargetAnswer answer;
+  for (const MethodEntry& m : methodCatalogue()) {
+    if (!unsupportedFeatures(scene, m).empty()) continue;
+    std::vector<MethodChoice> choices;
+    if (m.variants.empty()) choices.push_back(defaultChoice(m, scene.geometry.dimension));
+    for (const std::string& v : m.variants) {
+      if (v == "published") continue;  // does not converge (docs/studies/lamb3d.md)
+      MethodChoice c = defaultChoice(m, scene.geometry.dimension);
+      c.variant = v;
+      choices.push_back(c);
+    }
+    for (const MethodChoice& c : choices)
+      for (int j = -2; j <= 5; ++j) {
+        const Real dx = scene.geometry.spacing * std::pow(2.0, -j);
+        Prediction p;
+        try {
+          p = predictScene(scene, c, dx);
+        } catch (const InputError&) {
+          continue;  // the spacing does not divide the box, or the row cannot be built there
+        }
+        if (p.growing || !(p.memoryBytes <= memoryLimitBytes) || !std::isfinite(p.wallSeconds)) continue;
+        answer.candidates.push_back(p);
+      }
+  }
+  std::sort(answer.candidates.begin(), answer.candidates.end(),
+            [](const Prediction& a, const Prediction& b) { return a.wallSeconds < b.wallSeconds; });
+  for (const Prediction& p : answer.candidates)
+    if (p.phaseError <= target) {
+      answer.found = true;
+      answer.best = p;
+      break;
+    }
+  return answer;
+}
+
+}  // namespace mfwave

@@ -1,0 +1,30 @@
+#pragma once
+// Whether a method can represent what a scene asks for, decided from the catalogue before any
+// work: the dimension, the geometry's shape, every boundary type, every load type and the
+// integrator. A scene that asks a method for something it does not support is refused with an
+// InputError naming the scene key (scene.dimension, geometry.shape, boundary[2].type,
+// load[0].type, integrator.name) and the methods that do support it.
+
+#include "catalogue/MethodEntry.hpp"
+#include "io/scene/Scene.hpp"
+
+#include <string>
+#include <vector>
+
+namespace mfwave {
+
+struct UnsupportedFeature {
+  std::string key;      // the scene key, e.g. "load[0].type"
+  std::string feature;  // what it asks for, e.g. "point_force loads"
+  std::vector<std::string> supportedBy;  // the catalogue's methods that support it
+  std::string message() const;           // "<method> does not support point_force loads; supported by: ..."
+  std::string method;
+};
+
+// Every feature of `scene` that `method` does not support (empty: it can run the scene).
+std::vector<UnsupportedFeature> unsupportedFeatures(const Scene& scene, const MethodEntry& method);
+
+// Throws InputError(key, message) for the first unsupported feature.
+void refuseUnsupported(const Scene& scene, const MethodEntry& method);
+
+}  // namespace mfwave

@@ -1,0 +1,67 @@
+// A scene that asks a method for what it cannot represent is refused before any work, naming the
+// key and the methods that can.
+#include "catalogue/MethodCatalogue.hpp"
+#include "catalogue/SceneSupport.hpp"
+
+#include "io/scene/LoadScene.hpp"
+
+#include <gtest/gtest.h>
+
+namespace mfwave {
+namespace {
+
+Scene sceneOf(const std::string& method, const std::string& load, int dimension = 3) {
+  const std::string box = dimension == 3 ? "shape = \"block\"\nlower = [0.0, 0.0, 0.0]\nupper = [1.0, 1.0, 1.0]\n"
+                                         : "shape = \"line\"\nlower = [0.0]\nupper = [1.0]\n";
+  const std::string text = "[scene]\nname = \"t\"\ndimension = " + std::to_string(dimension) + "\n[geometry]\n" + box +
+                           "spacing = 0.25\n[material]\ndensity = 1.0\nlambda = 1.0\nmu = 1.0\n[method]\nname = \"" +
+                           method + "\"\n" + load + "[integrator]\nname = \"central_difference\"\nend_time = 1.0\n";
+  SceneReader reader = parseScene(text, "test.toml", {}, catalogueSchema(methodNamed(method)));
+  return readScene(reader);
+}
+
+const std::string kPointForce =
+    "[[load]]\ntype = \"point_force\"\nposition = [0.5, 0.5, 0.5]\ndirection = [0.0, 0.0, 1.0]\n"
+    "time_function = { type = \"ricker\", peak_frequency = 4.0, delay = 0.3 }\n";
+
+TEST(SceneSupport, ASupportedSceneHasNoProblem) {
+  EXPECT_TRUE(unsupportedFeatures(sceneOf("finite_difference", kPointForce), methodNamed("finite_difference")).empty());
+}
+
+TEST(SceneSupport, AnUnsupportedLoadNamesItsKeyAndTheMethodsThatTakeIt) {
+  const Scene scene = sceneOf("very_weak_sph", kPointForce);
+  const auto problems = unsupportedFeatures(scene, methodNamed("very_weak_sph"));
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].key, "load[0].type");
+  EXPECT_EQ(problems[0].supportedBy, std::vector<std::string>{"finite_difference"});
+  try {
+    refuseUnsupported(scene, methodNamed("very_weak_sph"));
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "load[0].type");
+    EXPECT_NE(std::string(e.what()).find("very_weak_sph does not support point_force loads; supported by: "
+                                         "finite_difference"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(SceneSupport, DimensionAndIntegratorAreCheckedToo) {
+  const Scene line = sceneOf("radial_basis", "", 1);
+  EXPECT_TRUE(unsupportedFeatures(line, methodNamed("radial_basis")).empty());
+  const auto inSpace = unsupportedFeatures(sceneOf("finite_difference", ""), methodNamed("radial_basis"));
+  ASSERT_GE(inSpace.size(), 2u);
+  EXPECT_EQ(inSpace[0].key, "scene.dimension");
+  EXPECT_EQ(inSpace[1].key, "geometry.shape");
+  // The spectral elements take central differences only.
+  Scene newmark = sceneOf("spectral_element", "");
+  newmark.integrator.name = "newmark";
+  const auto problems = unsupportedFeatures(newmark, methodNamed("spectral_element"));
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].key, "integrator.name");
+  EXPECT_NE(std::find(problems[0].supportedBy.begin(), problems[0].supportedBy.end(), "reproducing_kernel"),
+            problems[0].supportedBy.end());
+}
+
+}  // namespace
+}  // namespace mfwave
