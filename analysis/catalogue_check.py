@@ -47,8 +47,8 @@ POINTS = [
     ("VW-SPH Galerkin lamb3d", lamb(3, "very_weak_sph", 0.125), 0.125, "full"),
     ("SEM N=4 lamb2d", lamb(2, "spectral_element", 0.25), 0.25, "default"),
     ("SEM N=4 lamb2d", lamb(2, "spectral_element", 0.125), 0.125, "default"),
-    ("SEM N=4 lamb3d", lamb(3, "spectral_element", 0.5), 0.5, "default"),
-    ("SEM N=4 lamb3d", lamb(3, "spectral_element", 0.25), 0.25, "full"),
+    ("SEM N=4 lamb3d", lamb(3, "spectral_element", 0.4375), 0.4375, "default"),
+    ("SEM N=4 lamb3d", lamb(3, "spectral_element", 0.21875), 0.21875, "full"),
     ("RKCM lamb2d", lamb(2, "reproducing_kernel", 0.5), 0.5, "default"),
     ("RKCM lamb2d", lamb(2, "reproducing_kernel", 0.25), 0.25, "default"),
     ("RKCM lamb3d", lamb(3, "reproducing_kernel", 0.5), 0.5, "full"),
@@ -105,7 +105,8 @@ def main():
         print(f"{label:28s} dx {dx:<7g} N {row['particles']:>8d}  wall {wall:8.3g} s / predicted "
               f"{row['predicted_wall_s']:8.3g} s ({row['wall_ratio']:.2f}x)  memory {row['memory_mib']:7.1f} / "
               f"{row['predicted_memory_mib']:7.1f} MiB ({row['memory_ratio']:.2f}x)  stable dt {row['stable_dt']:.4g} / "
-              f"{row['predicted_stable_dt']:.4g}", flush=True)
+              f"{row['predicted_stable_dt']:.4g}  (set-up {row['setup_s']:.3g} s, loop {row['loop_s']:.3g} s, "
+              f"{row['steps']} steps)", flush=True)
     os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "predictions.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))

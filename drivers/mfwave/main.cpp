@@ -101,6 +101,7 @@ int check(const SceneArguments& a) {
   if (const std::optional<CatalogueScene> read = readCatalogueScene(a.scene, a.overrides)) {
     const Prediction p = predictScene(read->scene, read->choice);
     printResolvedModel(std::cout, read->scene, read->choice, p);
+    for (const std::string& note : read->notes) std::cout << "note         " << note << '\n';
   }
   std::cout << "program      " << program.program << " (" << program.reason << ")\n";
   return execute(programPath(program.program), withOverrides({"--scene", a.scene, "--check"}, a.overrides));
@@ -122,7 +123,8 @@ int plan(const SceneArguments& a, Real spacing, Real target, bool json) {
                 << "): no particles are stepped, nothing to plan\n";
     return 0;
   }
-  const Prediction p = predictScene(read->scene, read->choice, spacing);
+  Prediction p = predictScene(read->scene, read->choice, spacing);
+  p.notes.insert(p.notes.begin(), read->notes.begin(), read->notes.end());
   nlohmann::json out = predictionJson(p);
   if (!json) printPrediction(std::cout, p);
   if (target > 0) {

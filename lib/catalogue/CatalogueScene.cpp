@@ -2,11 +2,14 @@
 
 #include "catalogue/MethodCatalogue.hpp"
 #include "catalogue/SceneSupport.hpp"
+#include "integrators/IntegratorFactory.hpp"
 #include "io/scene/Format.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/SceneError.hpp"
 
 #include <toml++/toml.h>
+
+#include <algorithm>
 
 namespace mfwave {
 
@@ -23,12 +26,37 @@ std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const 
       throw first.error("method.name", scene::problemOf(e));
     }
   }
-  SceneReader reader = loadScene(path, overrides, catalogueSchema(*entry));
   CatalogueScene out;
+  std::vector<std::string> sets = overrides;
+  const std::string integrator = first.root().at_path("integrator.name").value<std::string>().value_or("");
+  const std::vector<std::string> secondOrder = secondOrderIntegratorNames();
+  const bool asTheLambStudy = entry->supports.firstOrder && integrator != "leapfrog" &&
+                             std::find(secondOrder.begin(), secondOrder.end(), integrator) != secondOrder.end();
+  if (asTheLambStudy) {
+    // A scene written for a second-order method and run by the UL-SPH: the Lamb study steps it by
+    // leapfrog at the method's own criteria (cfl 1) with its linear defaults (alpha 1, corrected
+    // gradients; LambSolidSpec::linearDefaults), or its method.ul_* keys.
+    sets.push_back("integrator.name=leapfrog");
+    sets.push_back("integrator.cfl=1.0");
+    out.notes.push_back("integrator.name = " + integrator + " is a second-order integrator: " + entry->name +
+                        " is a first-order system, planned as the Lamb study runs it (leapfrog at its own step "
+                        "criteria, Monaghan alpha 1, corrected kernel gradients, unless method.ul_* say otherwise)");
+  }
+  SceneReader reader = loadScene(path, sets, catalogueSchema(*entry));
   out.scene = readScene(reader);
   out.choice = readMethodChoice(reader, *entry, out.scene.geometry.dimension);
+  if (asTheLambStudy) {
+    const toml::table& root = reader.root();
+    // The Lamb study's UL-SPH keeps the method's defaults for what it does not set (cubic spline,
+    // h / dx = 1.3): the scene's kernel keys are the very weak SPH's.
+    out.choice.kernel = "cubic_spline";
+    out.choice.smoothingLengthRatio = 1.3;
+    out.choice.viscosityAlpha = root.at_path("method.ul_viscosity_alpha").value<double>().value_or(1.0);
+    out.choice.gradientCorrection = root.at_path("method.ul_gradient_correction").value<bool>().value_or(true);
+  }
   const std::vector<UnsupportedFeature> problems = unsupportedFeatures(out.scene, *entry);
   if (!problems.empty()) throw reader.error(problems.front().key, problems.front().message());
+  for (const std::string& note : standInNotes(out.scene, *entry)) out.notes.push_back(note);
   return out;
 }
 

@@ -16,11 +16,14 @@ namespace mfwave {
 struct CatalogueScene {
   Scene scene;
   MethodChoice choice;
+  std::vector<std::string> notes;  // what was read differently from the scene, and why
 };
 
 // Reads `path` with the overrides. Returns nothing for a tool scene (no [scene] section: it has no
 // method or geometry to plan). Throws SceneError / InputError naming the key: an unknown method
 // (with the catalogue's names), a feature the method does not support (with the methods that do).
+// A first-order method (the UL-SPH) on a scene that names a second-order integrator is read with
+// leapfrog, as the Lamb study steps it, and a note says so.
 std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const std::vector<std::string>& overrides);
 
 }  // namespace mfwave

@@ -47,10 +47,10 @@ std::vector<MethodEntry> makeCatalogue() {
   const std::vector<std::string> secondOrder = secondOrderIntegratorNames();
   std::vector<MethodEntry> list;
 
-  // Cost figures: whole runs of the shipped scenes on one core of this project's reference machine
-  // (2 cores of an AMD EPYC at 2.6 GHz), peak memory and wall time from the runs' summary.json; see
-  // docs/studies/which-method.md for prediction beside measurement and
-  // analysis/calibrate_catalogue.py for how they were measured.
+  // Cost figures: whole runs of the shipped scenes on one core (OMP_NUM_THREADS=1) of this project's
+  // reference machine (2 cores of an AMD EPYC, 2026-11-28), set-up, loop and peak memory from each
+  // case's record in summary.json; analysis/catalogue_check.py sets the predictions beside runs
+  // (docs/studies/which-method.md).
   {
     MethodEntry m;
     m.name = "finite_difference";
@@ -60,10 +60,11 @@ std::vector<MethodEntry> makeCatalogue() {
     m.supports = {{1, 2, 3}, {"line", "rectangle", "block"}, {B::Free, B::Fixed}, {L::PointForce}, secondOrder};
     m.addOptions = noOptions;
     m.stepRule = "cfl x 2 / omega_max, omega_max from a power iteration on the lattice operator (bounded by Gershgorin)";
-    m.cost.baseMiB = 12;
-    m.cost.bytesPerParticle = {60, 60, 60};
-    m.cost.particleStepsPerSecond = {1.0e8, 1.0e8, 6.0e7};
-    m.cost.setupSecondsPerParticle = {2e-7, 2e-7, 2e-7};
+    m.cost.baseMiB = {30, 30, 30};
+    m.cost.bytesPerParticle = {51, 51, 51};
+    m.cost.particleStepsPerSecond = {4.3e7, 4.3e7, 4.3e7};
+    m.cost.setupSecondsPerParticle = {6e-6, 6e-6, 6e-6};
+    m.cost.measured = "wavefield, block-ricker.toml at dx = 0.1, 0.05, 0.025 (3-D; 1-D and 2-D assumed the same)";
     m.programs = {"wavefield", "wave1d"};
     list.push_back(m);
   }
@@ -82,10 +83,12 @@ std::vector<MethodEntry> makeCatalogue() {
                   secondOrder};
     m.addOptions = addVeryWeakSphKeys;
     m.stepRule = "cfl x 2 / omega_max of M^-1 K, omega_max from a power iteration on the assembled operator";
-    m.cost.baseMiB = 40;
-    m.cost.bytesPerParticle = {300, 300, 300};
-    m.cost.particleStepsPerSecond = {1.2e7, 1.2e7, 1.1e7};
-    m.cost.setupSecondsPerParticle = {3e-6, 3e-6, 4e-6};
+    m.cost.baseMiB = {0, 31.9, 35};
+    m.cost.bytesPerParticle = {0, 190, 280};
+    m.cost.particleStepsPerSecond = {0, 4.7e7, 1.55e7};
+    m.cost.setupSecondsPerParticle = {0, 7e-6, 6.5e-6};
+    m.cost.measured = "lamb2d.toml at dx = 0.25, 0.125, 0.0625 (galerkin; consistent at 0.25: 0.8 x the rate), "
+                      "lamb3d.toml at dx = 0.5, 0.25";
     m.programs = {"lamb2d", "lamb3d", "plate"};
     list.push_back(m);
   }
@@ -97,16 +100,27 @@ std::vector<MethodEntry> makeCatalogue() {
                 "traction rows on free faces; central difference on its explicit form or Newmark.";
     m.supports = {{1, 2, 3},
                   {"line", "rectangle", "block"},
-                  {B::Free, B::Fixed, B::Traction, B::Transmitting},
+                  {B::Free, B::Fixed, B::Traction},
                   {L::SurfacePatch},
-                  {"central_difference", "newmark"}};
+                  {"central_difference", "newmark"},
+                  false,
+                  {{B::Transmitting, B::Fixed}}};
     m.addOptions = addCollocationOptions;
     m.stepRule = "cfl x 2 / omega_max of the constrained system (power iteration), refused when its interior rows "
                  "grow (stability atlas)";
-    m.cost.baseMiB = 40;
-    m.cost.bytesPerParticle = {6000, 20000, 60000};
-    m.cost.particleStepsPerSecond = {2.0e6, 6.0e5, 2.0e5};
-    m.cost.setupSecondsPerParticle = {2e-5, 1e-4, 1e-3};
+    // The sparse LU of the shape-function matrix fills as nodes^1.41 (3-D) and its solve dominates
+    // both the set-up and the step: memory, set-up and step per node grow with N.
+    m.cost.baseMiB = {12, 31.5, 35};
+    m.cost.bytesPerParticle = {2000, 16000, 0};
+    m.cost.fillMiB = {0, 0, 4167};
+    m.cost.fillNodes = 24389;
+    m.cost.fillExponent = 1.41;
+    m.cost.growthNodes = {321, 561, 3375};
+    m.cost.growthExponent = 1.45;
+    m.cost.particleStepsPerSecond = {3.9e6, 1.5e6, 7.6e4};
+    m.cost.setupSecondsPerParticle = {1.9e-4, 2.3e-4, 4.0e-3};
+    m.cost.measured = "bar1d.toml at 321 nodes; lamb2d.toml at dx = 0.5, 0.25; lamb3d.toml at dx = 0.5 (3375 nodes, "
+                      "255 MiB) and the 4.1 GiB measured at 24,389";
     m.programs = {"bar1d", "plane2d", "lamb2d", "lamb3d"};
     list.push_back(m);
   }
@@ -119,10 +133,11 @@ std::vector<MethodEntry> makeCatalogue() {
     m.supports = {{1}, {"line"}, {B::Free, B::Fixed, B::Traction}, {}, {"central_difference", "newmark"}};
     m.addOptions = addRadialBasisOptions;
     m.stepRule = "cfl x 2 / omega_max of the constrained system (power iteration)";
-    m.cost.baseMiB = 12;
-    m.cost.bytesPerParticle = {20000, 0, 0};
-    m.cost.particleStepsPerSecond = {2.0e6, 0, 0};
-    m.cost.setupSecondsPerParticle = {1e-4, 0, 0};
+    m.cost.baseMiB = {12, 0, 0};
+    m.cost.bytesPerParticle = {2000, 0, 0};
+    m.cost.particleStepsPerSecond = {3.9e6, 0, 0};
+    m.cost.setupSecondsPerParticle = {1.9e-4, 0, 0};
+    m.cost.measured = "assumed RK collocation's in 1-D (bar1d.toml runs both at 21 to 321 nodes)";
     m.programs = {"bar1d"};
     list.push_back(m);
   }
@@ -137,10 +152,11 @@ std::vector<MethodEntry> makeCatalogue() {
     m.addOptions = addSpectralElementOptions;
     m.interiorRow = InteriorRow::SpectralElement;
     m.stepRule = "cfl x 2 / omega_max, omega_max from a Gershgorin bound on the element operator";
-    m.cost.baseMiB = 40;
-    m.cost.bytesPerParticle = {400, 400, 400};
-    m.cost.particleStepsPerSecond = {5.0e6, 5.0e6, 2.0e6};
-    m.cost.setupSecondsPerParticle = {2e-6, 2e-6, 3e-6};
+    m.cost.baseMiB = {0, 31.5, 35};
+    m.cost.bytesPerParticle = {0, 280, 250};
+    m.cost.particleStepsPerSecond = {0, 2.7e7, 1.07e7};
+    m.cost.setupSecondsPerParticle = {0, 1.5e-6, 4.4e-6};
+    m.cost.measured = "lamb2d.toml at dx = 0.25, 0.125 and lamb3d.toml at dx = 0.4375, N = 4";
     m.programs = {"lamb2d", "lamb3d", "planewave"};
     list.push_back(m);
   }
@@ -155,13 +171,15 @@ std::vector<MethodEntry> makeCatalogue() {
                   {B::Free, B::Fixed, B::Traction},
                   {L::SurfacePatch, L::BodyForce},
                   firstOrderIntegratorNames(),
-                  true};
+                  true,
+                  {{B::Transmitting, B::Free}}};
     m.addOptions = addUpdatedLagrangianSphKeys;
     m.stepRule = "cfl x the method's own CFL, viscous and force criteria, evaluated before every step";
-    m.cost.baseMiB = 40;
-    m.cost.bytesPerParticle = {1500, 2500, 6000};
-    m.cost.particleStepsPerSecond = {2.0e6, 1.0e6, 2.5e5};
-    m.cost.setupSecondsPerParticle = {1e-6, 2e-6, 5e-6};
+    m.cost.baseMiB = {33, 32.1, 35};
+    m.cost.bytesPerParticle = {1000, 1070, 2200};
+    m.cost.particleStepsPerSecond = {1.2e7, 3.1e6, 6.5e5};
+    m.cost.setupSecondsPerParticle = {1.2e-6, 1.2e-6, 5e-6};
+    m.cost.measured = "bar1d-sph.toml at 800 particles; lamb2d.toml at dx = 0.25, 0.125; lamb3d.toml at dx = 0.5";
     m.programs = {"bar1d_sph", "plate", "rings", "lamb2d", "lamb3d"};
     list.push_back(m);
   }
@@ -174,10 +192,11 @@ std::vector<MethodEntry> makeCatalogue() {
     m.supports = {{2}, {"rectangle"}, {B::Free, B::Fixed}, {}, {"central_difference"}};
     m.addOptions = noOptions;
     m.stepRule = "cfl x 2 / omega_max of the linearised operator (power iteration)";
-    m.cost.baseMiB = 40;
-    m.cost.bytesPerParticle = {0, 3000, 0};
-    m.cost.particleStepsPerSecond = {0, 1.5e6, 0};
-    m.cost.setupSecondsPerParticle = {0, 2e-5, 0};
+    m.cost.baseMiB = {0, 30, 0};
+    m.cost.bytesPerParticle = {0, 2000, 0};
+    m.cost.particleStepsPerSecond = {0, 1.18e7, 0};
+    m.cost.setupSecondsPerParticle = {0, 1.5e-5, 0};
+    m.cost.measured = "plate.toml's tlsph case at H / dp = 5 (265 particles; memory per particle not resolved there)";
     m.programs = {"plate"};
     list.push_back(m);
   }

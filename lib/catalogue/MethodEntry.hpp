@@ -21,6 +21,7 @@
 #include <array>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mfwave {
@@ -32,18 +33,27 @@ struct MethodSupport {
   std::vector<LoadType> loads;
   std::vector<std::string> integrators;  // integrator.name
   bool firstOrder = false;               // integrator.name takes the first-order names (UL-SPH)
+  // Boundary types the method does not represent but runs with another in their place, as its study
+  // does and says in a note (the Lamb study: RK collocation fixes the transmitting faces, the UL-SPH
+  // leaves them free): {scene's type, the type that stands in}.
+  std::vector<std::pair<BoundaryType, BoundaryType>> standIns = {};
 };
 
-// Measured cost of a whole run, one core, per dimension (index D - 1); 0 where not measured. The
-// plan predicts peak memory = baseMiB + bytesPerParticle * particles and wall time =
-// setupSecondsPerParticle * particles + particles * steps / particleStepsPerSecond.
+// Measured cost of a whole run on one core, per dimension (index D - 1); 0 where not measured. The
+// plan predicts peak memory = baseMiB + bytesPerParticle N + fillMiB (N / fillNodes)^fillExponent
+// (a sparse LU's fill, growing faster than N) and wall time = setupSecondsPerParticle N + N steps /
+// particleStepsPerSecond.
 struct MethodCost {
-  double baseMiB = 40;  // the process before any particle (libraries, the exact reference)
+  std::array<double, 3> baseMiB{};  // the process before any particle (libraries, the exact reference)
   std::array<double, 3> bytesPerParticle{};
   std::array<double, 3> particleStepsPerSecond{};
   std::array<double, 3> setupSecondsPerParticle{};
-  // Memory that grows faster than the particles (a sparse LU's fill): peak += fillMiB * (N / fillNodes)^fillExponent.
-  double fillMiB = 0, fillNodes = 1, fillExponent = 1;
+  std::array<double, 3> fillMiB{};
+  double fillNodes = 1, fillExponent = 1;
+  // A method whose work per particle grows with N (a sparse LU's fill: RK collocation): set-up per
+  // particle and time per particle-step scale as (N / growthNodes)^(growthExponent - 1).
+  std::array<double, 3> growthNodes{1, 1, 1};
+  double growthExponent = 1;
   std::string measured;  // where the figures come from (scene, spacings, date)
 };
 

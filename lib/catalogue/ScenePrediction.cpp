@@ -18,13 +18,26 @@ namespace mfwave {
 namespace {
 
 // The spectral elements' stable step as a Courant number c_p dt / dx at the mean node spacing dx,
-// for the central difference limit 2 / omega_max (GLL nodes crowd at element edges, so it falls with
-// N); measured on the Lamb scenes' Gershgorin steps (LambSpectralElementCase), 2-D and 3-D.
+// for the central difference limit 2 / omega_max from the Gershgorin bound the runs use (GLL nodes
+// crowd at element edges, so it falls with N). Measured on lamb2d.toml and lamb3d.toml (rho = lambda
+// = mu = 1) at dx near 0.25 and 0.5 for N = 1 .. 8 (2026-11-28); the bound scales as c_p / dx.
 Real spectralElementCourant(int order, int dimension) {
-  static const Real planeStrain[] = {0, 0.71, 0.62, 0.56, 0.52, 0.50, 0.48, 0.47, 0.46};
-  static const Real solid[] = {0, 0.58, 0.51, 0.46, 0.43, 0.41, 0.40, 0.39, 0.38};
+  static const Real planeStrain[] = {0, 0.8662, 0.7005, 0.5731, 0.4712, 0.3972, 0.3426, 0.3009, 0.2681};
+  static const Real solid[] = {0, 0.7747, 0.6130, 0.4886, 0.3990, 0.3356, 0.2891, 0.2537, 0.2260};
   const int n = std::clamp(order, 1, 8);
   return dimension == 3 ? solid[n] : planeStrain[n];
+}
+
+// The spectral elements are N spacings wide: each side must hold whole elements.
+void checkSpectralElementLattice(const GeometrySpec& g, int order) {
+  const Real width = order * g.spacing;
+  for (int a = 0; a < g.dimension; ++a) {
+    const Real elements = (g.upper[static_cast<std::size_t>(a)] - g.lower[static_cast<std::size_t>(a)]) / width;
+    if (std::abs(elements - std::round(elements)) > 1e-9 * elements)
+      throw InputError("geometry.spacing", "spectral elements of order " + std::to_string(order) + " at spacing " +
+                                               scene::formatNumber(g.spacing) + " are " + scene::formatNumber(width) +
+                                               " wide, which does not divide the box " + g.describeBox());
+  }
 }
 
 // The interior row's name in the lattice tools (analysis/LatticeMethods) and its settings.
@@ -119,6 +132,7 @@ MethodChoice readMethodChoice(SceneReader& reader, const MethodEntry& m, int dim
     c.smoothingLengthRatio = reader.number("method.smoothing_length_ratio");
     c.gradientCorrection = reader.boolean("method.kernel_gradient_correction");
     c.courant = reader.number("method.courant");
+    c.viscosityAlpha = reader.number("method.viscosity_alpha");
   } else if (m.name == "reproducing_kernel") {
     if (registered("method.order")) c.order = static_cast<int>(reader.integer("method.order"));
     if (registered("method.support_ratio") && reader.has("method.support_ratio"))
@@ -153,13 +167,14 @@ Prediction predictScene(const Scene& scene, const MethodChoice& c, Real spacing)
   const std::size_t di = static_cast<std::size_t>(d - 1);
   const MethodCost& cost = m.cost;
   const double n = static_cast<double>(p.particles);
-  p.memoryBytes = (cost.baseMiB + cost.fillMiB * std::pow(n / cost.fillNodes, cost.fillExponent)) * 1048576.0 +
+  p.memoryBytes = (cost.baseMiB[di] + cost.fillMiB[di] * std::pow(n / cost.fillNodes, cost.fillExponent)) * 1048576.0 +
                   cost.bytesPerParticle[di] * n;
   if (cost.particleStepsPerSecond[di] <= 0)
     p.notes.push_back(m.name + " has no measured rate in " + std::to_string(d) + "-D: the wall time is unknown");
 
   TimeStepChoice step;
   if (m.interiorRow == InteriorRow::SpectralElement) {
+    checkSpectralElementLattice(g, c.order);
     p.stableStep = spectralElementCourant(c.order, d) * g.spacing / material.pWaveSpeed();
     step = chooseTimeStep(scene.integrator.stepRule(), p.stableStep);
     if (p.hasSource) {
@@ -172,9 +187,10 @@ Prediction predictScene(const Scene& scene, const MethodChoice& c, Real spacing)
       p.phaseWave = "S (the elements' own dispersion neglected)";
     }
   } else if (m.name == "updated_lagrangian_sph") {
-    // The method's own step criteria at rest: courant h / c (no viscous or force limit at rest),
+    // The method's own step criteria at rest: courant h / (c_p (1 + 1.2 alpha)) (UpdatedLagrangianSph::
+    // stableStep: the signal speed c_p with the artificial viscosity's share; no force limit at rest),
     // which integrator.cfl multiplies.
-    p.stableStep = c.courant * c.smoothingLengthRatio * g.spacing / material.pWaveSpeed();
+    p.stableStep = c.courant * c.smoothingLengthRatio * g.spacing / (material.pWaveSpeed() * (1 + 1.2 * c.viscosityAlpha));
     step = chooseTimeStep(scene.integrator.stepRule(), p.stableStep);
     if (p.hasSource) {
       Real unused = 0;
@@ -217,8 +233,9 @@ Prediction predictScene(const Scene& scene, const MethodChoice& c, Real spacing)
   if (p.growing) p.notes.push_back("the interior row has growing modes (omega^2 < 0): the run will be refused or grow");
   p.timeStep = step.dt;
   p.steps = step.steps;
-  const double rate = cost.particleStepsPerSecond[di];
-  p.setupSeconds = cost.setupSecondsPerParticle[di] * n;
+  const double growth = std::pow(n / cost.growthNodes[di], cost.growthExponent - 1);
+  const double rate = cost.particleStepsPerSecond[di] / growth;
+  p.setupSeconds = cost.setupSecondsPerParticle[di] * n * growth;
   p.wallSeconds = rate > 0 ? p.setupSeconds + n * static_cast<double>(p.steps) / rate
                            : std::numeric_limits<double>::quiet_NaN();
   return p;

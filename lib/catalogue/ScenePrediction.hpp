@@ -34,6 +34,7 @@ struct MethodChoice {
   Real shapeRatio = 3;                  // RB a_r / h
   bool gradientCorrection = false;      // UL-SPH kernel-gradient correction
   Real courant = 0.3;                   // UL-SPH Courant number
+  Real viscosityAlpha = 0.1;            // UL-SPH Monaghan alpha (its step shrinks by 1 + 1.2 alpha)
 
   std::string label() const;  // "very_weak_sph (galerkin)", "reproducing_kernel (m = 2, a/h = 2.2)"
 };

@@ -9,6 +9,12 @@
 namespace mfwave {
 namespace {
 
+const BoundaryType* standInFor(const MethodSupport& s, BoundaryType type) {
+  for (const auto& [asked, used] : s.standIns)
+    if (asked == type) return &used;
+  return nullptr;
+}
+
 template <typename T>
 bool contains(const std::vector<T>& list, const T& value) {
   return std::find(list.begin(), list.end(), value) != list.end();
@@ -43,7 +49,7 @@ std::vector<UnsupportedFeature> unsupportedFeatures(const Scene& scene, const Me
                    methodsWhere([&shape](const MethodSupport& m) { return contains(m.shapes, shape); }), ""});
   for (std::size_t i = 0; i < scene.boundaries.size(); ++i) {
     const BoundaryType type = scene.boundaries[i].type;
-    if (!contains(s.boundaries, type))
+    if (!contains(s.boundaries, type) && !standInFor(s, type))
       out.push_back({"boundary[" + std::to_string(i) + "].type", boundaryTypeName(type) + " boundaries",
                      methodsWhere([type](const MethodSupport& m) { return contains(m.boundaries, type); }), ""});
   }
@@ -60,6 +66,19 @@ std::vector<UnsupportedFeature> unsupportedFeatures(const Scene& scene, const Me
                    ""});
   for (UnsupportedFeature& f : out) f.method = method.name;
   return out;
+}
+
+std::vector<std::string> standInNotes(const Scene& scene, const MethodEntry& method) {
+  std::vector<std::string> notes;
+  for (std::size_t i = 0; i < scene.boundaries.size(); ++i) {
+    const BoundaryType type = scene.boundaries[i].type;
+    if (contains(method.supports.boundaries, type)) continue;
+    if (const BoundaryType* used = standInFor(method.supports, type))
+      notes.push_back("boundary[" + std::to_string(i) + "]: " + boundaryTypeName(type) + " faces run " +
+                      boundaryTypeName(*used) + " by " + method.name + " (it has no " + boundaryTypeName(type) +
+                      " boundary; reflections return from them)");
+  }
+  return notes;
 }
 
 void refuseUnsupported(const Scene& scene, const MethodEntry& method) {

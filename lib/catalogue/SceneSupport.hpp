@@ -24,6 +24,11 @@ struct UnsupportedFeature {
 // Every feature of `scene` that `method` does not support (empty: it can run the scene).
 std::vector<UnsupportedFeature> unsupportedFeatures(const Scene& scene, const MethodEntry& method);
 
+// What the method runs in place of what the scene asks, where it has a stand-in (MethodSupport::standIns):
+// one note per boundary entry, e.g. "boundary[0]: transmitting faces run fixed by reproducing_kernel
+// (it has no transmitting boundary; reflections return from them)".
+std::vector<std::string> standInNotes(const Scene& scene, const MethodEntry& method);
+
 // Throws InputError(key, message) for the first unsupported feature.
 void refuseUnsupported(const Scene& scene, const MethodEntry& method);
 

@@ -22,7 +22,8 @@ TEST(MethodCatalogue, EveryMethodIsRegisteredOnceAndCompletely) {
     EXPECT_FALSE(m.stepRule.empty()) << m.name;
     for (int d : m.supports.dimensions) {
       const std::size_t i = static_cast<std::size_t>(d - 1);
-      EXPECT_GT(m.cost.bytesPerParticle[i], 0) << m.name << " in " << d << "-D has no measured memory";
+      EXPECT_GT(m.cost.bytesPerParticle[i] + m.cost.fillMiB[i], 0) << m.name << " in " << d << "-D has no measured memory";
+      EXPECT_GT(m.cost.baseMiB[i], 0) << m.name << " in " << d << "-D has no measured base memory";
       EXPECT_GT(m.cost.particleStepsPerSecond[i], 0) << m.name << " in " << d << "-D has no measured rate";
     }
   }
