@@ -4,6 +4,7 @@
 
 #include "core/Stopwatch.hpp"
 #include "integrators/CentralDifference.hpp"
+#include "integrators/TimeStep.hpp"
 #include "io/run/ProgressReporter.hpp"
 #include "io/vtk/FrameOutputs.hpp"
 #include "methods/total_lagrangian_sph/TotalLagrangianSph.hpp"
@@ -49,11 +50,15 @@ PlateCaseResult runTotalLagrangianPlateCase(const PlateStudy& study, const Plate
   for (Index i : lattice.tip) result.tipStartVelocity += v0[i * D + 1];
   result.tipStartVelocity /= static_cast<Real>(lattice.tip.size());
 
-  // central differences at a fraction of the linearised system's limit 2 / omega_max
-  const Real stableStep = 2 / std::sqrt(system.largestFrequencySquared());
-  const long steps =
-      std::max(1L, static_cast<long>(std::ceil(settings.endTime / (study.totalLagrangianCfl * stableStep))));
-  const Real dt = settings.endTime / static_cast<Real>(steps);
+  // central differences at a fraction of the linearised system's limit 2 / omega_max (the step's one
+  // home: integrators/TimeStep)
+  TimeStepRule rule;
+  rule.endTime = settings.endTime;
+  rule.cfl = study.totalLagrangianCfl;
+  const TimeStepChoice step =
+      chooseTimeStep(rule, centralDifferenceStableStep(std::sqrt(system.largestFrequencySquared())));
+  const long steps = step.steps;
+  const Real dt = step.dt;
   CentralDifference integrator;
   integrator.initialise(system, 0, Vector::Zero(n * D), v0, dt);
 

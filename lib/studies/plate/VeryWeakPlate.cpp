@@ -1,5 +1,6 @@
 #include "VeryWeakPlate.hpp"
 
+#include "integrators/TimeStep.hpp"
 #include "analysis/StableTimeStep.hpp"
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
@@ -70,8 +71,11 @@ PlateCaseResult runVeryWeakPlateCase(const PlateStudy& study, const PlateCaseSet
   const Real stableStep = stable.usable();
   if (!stable.converged)
     result.notes.push_back(settings.name + ": power iteration did not converge; the Gershgorin step is used");
-  const long steps = std::max(1L, static_cast<long>(std::ceil(settings.endTime / (study.veryWeakCfl * stableStep))));
-  const Real dt = settings.endTime / static_cast<Real>(steps);
+  TimeStepRule rule;  // the step's one home: integrators/TimeStep
+  rule.endTime = settings.endTime;
+  rule.cfl = study.veryWeakCfl;
+  const TimeStepChoice step = chooseTimeStep(rule, stableStep);
+  const Real dt = step.dt;
   const std::unique_ptr<CentralDifference> integrator = veryWeakSphCentralDifference<D>(problem);
   Vector v0 = Vector::Zero(D * n);
   for (Index a = 0; a < n; ++a)
