@@ -11,7 +11,7 @@
 
 #include "studies/bar1d/BarCollocationCase.hpp"
 
-#include "analysis/ConvergenceOrders.hpp"
+#include "numerics/ConvergenceOrders.hpp"
 #include "core/Error.hpp"
 #include "integrators/ConstrainedIntegrators.hpp"
 #include "io/run/CaseTable.hpp"

@@ -12,7 +12,7 @@
 
 #include "studies/bar1d_sph/BarCase.hpp"
 
-#include "analysis/ConvergenceOrders.hpp"
+#include "numerics/ConvergenceOrders.hpp"
 #include "core/Error.hpp"
 #include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"

@@ -30,7 +30,7 @@
 
 #include "studies/plate/PlateModes.hpp"
 
-#include "analysis/RichardsonExtrapolation.hpp"
+#include "numerics/RichardsonExtrapolation.hpp"
 #include "core/Error.hpp"
 #include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"

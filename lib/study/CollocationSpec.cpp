@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "analysis/InteriorStability.hpp"
-#include "analysis/MethodLatticeStencils.hpp"
+#include "numerics/InteriorStability.hpp"
+#include "spectra/MethodLatticeStencils.hpp"
 #include "core/Error.hpp"
 #include "methods/collocation/RadialBasisShapeFunctions.hpp"
 #include "methods/collocation/ReproducingKernelShapeFunctions.hpp"

@@ -4,7 +4,7 @@
 // (LambCollocationCase.hpp), its probes compared with the exact response of the half-space, or
 // (lamb2d) through the updated-Lagrangian SPH for solids (LambSolidCase.hpp).
 
-#include "analysis/SignalComparison.hpp"
+#include "numerics/SignalComparison.hpp"
 #include "io/run/StudyCases.hpp"
 #include "io/scene/Scene.hpp"
 #include "studies/lamb3d/LambSolidSpec.hpp"

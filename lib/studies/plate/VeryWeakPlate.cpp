@@ -1,6 +1,6 @@
 #include "VeryWeakPlate.hpp"
 
-#include "analysis/StableTimeStep.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
 #include "io/run/ProgressReporter.hpp"

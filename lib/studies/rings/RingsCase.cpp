@@ -1,6 +1,6 @@
 #include "RingsCase.hpp"
 
-#include "analysis/Fragments.hpp"
+#include "numerics/Fragments.hpp"
 
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
