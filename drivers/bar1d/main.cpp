@@ -24,7 +24,7 @@
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
 #include "methods/collocation/RadialBasisFunction.hpp"
-#include "study/CollocationSpec.hpp"
+#include "wiring/CollocationSpec.hpp"
 
 #include <algorithm>
 #include <cmath>

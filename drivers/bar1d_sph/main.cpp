@@ -23,7 +23,7 @@
 #include "io/scene/Format.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
-#include "study/UpdatedLagrangianSphSpec.hpp"
+#include "wiring/UpdatedLagrangianSphSpec.hpp"
 
 #include <cmath>
 #include <sstream>

@@ -8,8 +8,8 @@
 #include "io/run/StudyCases.hpp"
 #include "io/scene/Scene.hpp"
 #include "studies/lamb3d/LambSolidSpec.hpp"
-#include "study/CollocationSpec.hpp"
-#include "study/VeryWeakSphSpec.hpp"
+#include "wiring/CollocationSpec.hpp"
+#include "wiring/VeryWeakSphSpec.hpp"
 
 #include <limits>
 #include <optional>

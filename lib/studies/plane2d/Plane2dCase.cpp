@@ -10,7 +10,7 @@
 #include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
-#include "study/CollocationSpec.hpp"
+#include "wiring/CollocationSpec.hpp"
 
 #include <limits>
 #include <memory>

@@ -13,7 +13,7 @@
 #include "particles/BoxFace.hpp"
 #include "particles/GhostLayers.hpp"
 #include "particles/Lattice.hpp"
-#include "study/VeryWeakSphRun.hpp"
+#include "wiring/VeryWeakSphRun.hpp"
 
 #include <cmath>
 

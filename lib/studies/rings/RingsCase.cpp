@@ -19,8 +19,8 @@
 #include "observers/TimeLoop.hpp"
 #include "observers/TimeSeries.hpp"
 #include "particles/Annulus.hpp"
-#include "study/EnergyLedger.hpp"
-#include "study/SolidStateAdapter.hpp"
+#include "wiring/EnergyLedger.hpp"
+#include "wiring/SolidStateAdapter.hpp"
 
 #include <algorithm>
 #include <cmath>

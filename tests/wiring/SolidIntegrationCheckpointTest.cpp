@@ -10,8 +10,8 @@
 #include "core/StateArchive.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
 #include "particles/Lattice.hpp"
-#include "study/EnergyLedger.hpp"
-#include "study/SolidIntegration.hpp"
+#include "wiring/EnergyLedger.hpp"
+#include "wiring/SolidIntegration.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "study/SolidStateAdapter.hpp"
+#include "wiring/SolidStateAdapter.hpp"
 
 namespace mfwave {
 

@@ -1,4 +1,4 @@
-#include "study/CollocationSpec.hpp"
+#include "wiring/CollocationSpec.hpp"
 
 #include <string>
 

@@ -1,4 +1,4 @@
-// lib/study/VeryWeakSphRun: the central-difference integrator of a very weak SPH problem honours its
+// lib/wiring/VeryWeakSphRun: the central-difference integrator of a very weak SPH problem honours its
 // prescribed faces (eq. 30) and applies its smoothing (eq. 33), booking what the filter removes in
 // the energy ledger without changing the run; the probes report the state and, with the published
 // variant's deconvolution, the deconvolved value (eq. 35); the growth message names each variant's
@@ -10,7 +10,7 @@
 #include "particles/BoxFace.hpp"
 #include "particles/GhostLayers.hpp"
 #include "particles/Lattice.hpp"
-#include "study/VeryWeakSphRun.hpp"
+#include "wiring/VeryWeakSphRun.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// lib/study/VeryWeakSphScene: a scene's faces and loads become the very weak SPH problem's
+// lib/wiring/VeryWeakSphScene: a scene's faces and loads become the very weak SPH problem's
 // settings (transmitting, traction, fixed and moving faces, patches, the method's switches), and
 // every combination the method or the integrator cannot run is refused when the scene is read.
 
@@ -7,8 +7,8 @@
 #include "io/scene/Scene.hpp"
 #include "io/scene/SceneError.hpp"
 #include "particles/BoxFace.hpp"
-#include "study/VeryWeakSphScene.hpp"
-#include "study/VeryWeakSphSpec.hpp"
+#include "wiring/VeryWeakSphScene.hpp"
+#include "wiring/VeryWeakSphSpec.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "study/VeryWeakSphRun.hpp"
+#include "wiring/VeryWeakSphRun.hpp"
 
 #include "methods/very_weak_sph/Deconvolution.hpp"
 

@@ -1,4 +1,4 @@
-#include "study/UpdatedLagrangianSphSpec.hpp"
+#include "wiring/UpdatedLagrangianSphSpec.hpp"
 
 #include "io/scene/Format.hpp"
 #include "kernels/KernelFactory.hpp"

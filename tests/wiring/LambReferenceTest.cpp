@@ -1,4 +1,4 @@
-// lib/study/LambReference: a scene has the exact half-space reference exactly when it is the
+// lib/wiring/LambReference: a scene has the exact half-space reference exactly when it is the
 // problem LambSquareLoad solves (and says why not otherwise), the reference is that solution for
 // the scene's load, a probe sees it only as the normal component on the loaded face, and the
 // kernel-smoothed reference tends to the exact one as the kernel shrinks.
@@ -7,7 +7,7 @@
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/BuildParticles.hpp"
 #include "kernels/KernelFactory.hpp"
-#include "study/LambReference.hpp"
+#include "wiring/LambReference.hpp"
 
 #include <gtest/gtest.h>
 

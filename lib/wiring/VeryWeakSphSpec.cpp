@@ -1,4 +1,4 @@
-#include "study/VeryWeakSphSpec.hpp"
+#include "wiring/VeryWeakSphSpec.hpp"
 
 #include "kernels/KernelFactory.hpp"
 

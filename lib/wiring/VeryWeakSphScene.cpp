@@ -1,4 +1,4 @@
-#include "study/VeryWeakSphScene.hpp"
+#include "wiring/VeryWeakSphScene.hpp"
 
 #include "core/Error.hpp"
 

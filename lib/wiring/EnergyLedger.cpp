@@ -1,4 +1,4 @@
-#include "study/EnergyLedger.hpp"
+#include "wiring/EnergyLedger.hpp"
 
 #include "core/Error.hpp"
 

@@ -1,4 +1,4 @@
-// lib/study/CollocationSpec: the collocation [method] keys are read by method name into typed
+// lib/wiring/CollocationSpec: the collocation [method] keys are read by method name into typed
 // options, another method is refused at method.name, and the shape functions made from them are
 // the asked kind with the asked parameters: a reproducing kernel of order m reproduces degree-m
 // polynomials with support a = ratio h, a radial basis interpolates its nodes; plane-strain RK rows
@@ -9,7 +9,7 @@
 #include "io/scene/SceneError.hpp"
 #include "methods/collocation/RadialBasisShapeFunctions.hpp"
 #include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
-#include "study/CollocationSpec.hpp"
+#include "wiring/CollocationSpec.hpp"
 
 #include <gtest/gtest.h>
 

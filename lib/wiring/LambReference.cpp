@@ -1,4 +1,4 @@
-#include "study/LambReference.hpp"
+#include "wiring/LambReference.hpp"
 
 #include "particles/BoxFace.hpp"
 

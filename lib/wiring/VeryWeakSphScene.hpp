@@ -6,7 +6,7 @@
 
 #include "io/scene/Scene.hpp"
 #include "methods/very_weak_sph/VeryWeakSphProblem.hpp"
-#include "study/VeryWeakSphSpec.hpp"
+#include "wiring/VeryWeakSphSpec.hpp"
 
 namespace mfwave {
 

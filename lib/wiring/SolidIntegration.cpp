@@ -1,4 +1,4 @@
-#include "study/SolidIntegration.hpp"
+#include "wiring/SolidIntegration.hpp"
 
 #include "core/Error.hpp"
 #include "integrators/FirstOrderIntegratorFactory.hpp"
