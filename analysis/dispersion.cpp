@@ -9,7 +9,7 @@
 // The scene is optional: every key has a default. Writes dispersion.csv, scene.resolved.toml and
 // summary.json; plot with analysis/plot_dispersion.py.
 
-#include "analysis/CollocationStability.hpp"
+#include "spectra/CollocationStability.hpp"
 #include "core/AtomicFile.hpp"
 #include "io/run/DriverCommandLine.hpp"
 #include "io/run/RunDriver.hpp"

@@ -1,9 +1,9 @@
 // spectra: the discrete dispersion relation omega(k) of every linear(ised) method for every
 // wavenumber of a periodic lattice at once, from the FFT (FFTW) of the assembled operator's impulse
-// response (lib/analysis/DispersionSpectrum.hpp), in 1, 2 and 3 D, P and S, along an axis and the
+// response (lib/numerics/DispersionSpectrum.hpp), in 1, 2 and 3 D, P and S, along an axis and the
 // diagonal; phase and group speed errors, points per wavelength for a phase error, anisotropy and
 // the central-difference step limit of the whole spectrum. The same relation is then measured from
-// simulations on the 2-D lattice (lib/analysis/SimulatedDispersion.hpp) and compared with the
+// simulations on the 2-D lattice (lib/numerics/SimulatedDispersion.hpp) and compared with the
 // symbol plus the integrator's discrete relation. Results: docs/studies/spectra.md.
 //
 //   spectra [--scene data/scenes/spectra.toml] [--set 'study.dimensions=[2]'] [--out DIR]
@@ -11,10 +11,10 @@
 // Writes spectra.csv, accuracy.csv, anisotropy.csv, simulation.csv, scene.resolved.toml and
 // summary.json; plot with analysis/plot_spectra.py.
 
-#include "analysis/DispersionSpectrum.hpp"
-#include "analysis/InteriorStability.hpp"
-#include "analysis/LatticeMethods.hpp"
-#include "analysis/SimulatedDispersion.hpp"
+#include "numerics/DispersionSpectrum.hpp"
+#include "numerics/InteriorStability.hpp"
+#include "spectra/LatticeMethods.hpp"
+#include "numerics/SimulatedDispersion.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Material.hpp"
 #include "io/run/DriverCommandLine.hpp"

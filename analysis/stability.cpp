@@ -10,7 +10,7 @@
 // The scene is optional: every key has a default (the paper's setting). Writes stability.csv,
 // scene.resolved.toml and summary.json; plot with analysis/plot_stability.py.
 
-#include "analysis/CollocationStability.hpp"
+#include "spectra/CollocationStability.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "io/run/DriverCommandLine.hpp"

@@ -1,7 +1,7 @@
 // stability_atlas: where each method and integrator is stable, from the exact spectra of the
 // methods' interior rows on periodic lattices, confirmed by runs (docs/studies/stability-atlas.md).
 //
-// For every linear(ised) method (lib/analysis/LatticeMethods), dimension and support (SPH kernel and
+// For every linear(ised) method (lib/spectra/LatticeMethods), dimension and support (SPH kernel and
 // h / dx, RK order and a / dx, RB shape a_r / dx) the tool takes the whole discrete spectrum
 // (DispersionSpectrum, FFTW) and reports
 //   - the most negative omega^2 / omega^2_max (below -1e-10: growing modes, no step is stable),
@@ -25,10 +25,10 @@
 // Writes atlas.csv, poisson.csv, integrators.csv, confirmations.csv, jitter.csv, scene.resolved.toml and
 // summary.json; plot with /usr/bin/python3 analysis/plot_stability_atlas.py DIR.
 
-#include "analysis/DispersionSpectrum.hpp"
+#include "numerics/DispersionSpectrum.hpp"
 #include "integrators/StabilityLimit.hpp"
-#include "analysis/InteriorStability.hpp"
-#include "analysis/LatticeMethods.hpp"
+#include "numerics/InteriorStability.hpp"
+#include "spectra/LatticeMethods.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Material.hpp"

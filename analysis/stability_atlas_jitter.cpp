@@ -1,6 +1,6 @@
 #include "stability_atlas_jitter.hpp"
 
-#include "analysis/JitteredCloud.hpp"
+#include "spectra/JitteredCloud.hpp"
 #include "core/Error.hpp"
 #include "io/scene/Format.hpp"
 
@@ -106,7 +106,7 @@ void writeDimension(const JitterAtlasSettings& s, const LatticeMethodSettings& d
 
 JitterAtlasCounts writeJitterAtlas(const JitterAtlasSettings& s, const LatticeMethodSettings& defaults,
                                    std::ostream& csv) {
-  csv << "# Whole spectra on periodic jittered clouds (lib/analysis/JitteredCloud; lambda = mu = rho = 1, dx = 1): "
+  csv << "# Whole spectra on periodic jittered clouds (lib/spectra/JitteredCloud; lambda = mu = rho = 1, dx = 1): "
          "omega2_min_over_max and imaginary_ratio above the tolerance (1e-9; 1e-6 for ulsph) mean growing modes; "
          "cd_courant = c_p dt / dx at 2 / omega_max; lowest_mode_error at `cells` points per wavelength; "
          "quadratic_residual = |A u - M a| / c_p^2 for u = x^2 / 2; the run: central difference at 0.9 of the limit "

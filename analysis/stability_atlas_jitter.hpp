@@ -1,8 +1,8 @@
 #pragma once
 // The stability atlas's irregular clouds (docs/studies/stability-atlas.md, "Irregular clouds"):
-// the [jitter] block of its scene and the jitter.csv it writes, from lib/analysis/JitteredCloud.
+// the [jitter] block of its scene and the jitter.csv it writes, from lib/spectra/JitteredCloud.
 
-#include "analysis/LatticeMethods.hpp"
+#include "spectra/LatticeMethods.hpp"
 #include "io/scene/SceneReader.hpp"
 #include "io/scene/SceneSchema.hpp"
 

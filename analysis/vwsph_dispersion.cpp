@@ -1,5 +1,5 @@
 // vwsph_dispersion: discrete dispersion of the very weak form SPH (Ding-Long-Wu) on a regular
-// lattice, from the interior stencil of the assembled system (analysis/LatticeDispersion.hpp):
+// lattice, from the interior stencil of the assembled system (numerics/LatticeDispersion.hpp):
 // normalised phase speed omega / (|k| c) and group speed (d omega / d|k|) / c of the P and S
 // branches along a lattice axis and the lattice diagonal, for the published scheme, the published
 // row with its row sum corrected, and the consistent variant (when the method has it), at each
@@ -13,8 +13,8 @@
 // vwsph_long_wave.csv (the long-wave table), scene.resolved.toml and summary.json; plot with
 //   /usr/bin/python3 analysis/plot_vwsph_dispersion.py DIR
 
-#include "analysis/LatticeDispersion.hpp"
-#include "analysis/VeryWeakSphDispersion.hpp"
+#include "numerics/LatticeDispersion.hpp"
+#include "spectra/VeryWeakSphDispersion.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Material.hpp"
 #include "io/run/DriverCommandLine.hpp"

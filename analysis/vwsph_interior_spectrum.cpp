@@ -11,8 +11,8 @@
 //
 // Writes DIR/vwsph_interior_spectrum.csv (atomically) and prints the table.
 
-#include "analysis/LatticeDispersion.hpp"
-#include "analysis/VeryWeakSphDispersion.hpp"
+#include "numerics/LatticeDispersion.hpp"
+#include "spectra/VeryWeakSphDispersion.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Material.hpp"

@@ -6,8 +6,8 @@
 // Counter: particle_steps/s (one product per step: what a central-difference step costs beyond its
 // vector updates).
 
-#include "analysis/LatticeMethods.hpp"
-#include "analysis/PeriodicLattice.hpp"
+#include "spectra/LatticeMethods.hpp"
+#include "numerics/PeriodicLattice.hpp"
 #include "systems/LinearSecondOrderSystem.hpp"
 
 #include <benchmark/benchmark.h>

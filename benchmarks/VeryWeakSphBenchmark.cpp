@@ -17,7 +17,7 @@
 // the work runs on OpenMP threads. The 2-thread numbers need an otherwise idle machine: with other
 // jobs on the cores the OpenMP barriers stall, and real time grows far beyond the CPU time.
 
-#include "analysis/StableTimeStep.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "kernels/CubicSplineKernel.hpp"
 #include "methods/very_weak_sph/VeryWeakSph.hpp"

@@ -23,7 +23,7 @@ function(mfwave_add_library folder)
   # ("io/run/RunSummary.hpp"), and a file finds the headers of its own folder and of the libraries
   # it links (their directories are PUBLIC, so they pass along the DEPENDS chain) and no others:
   # including what a target does not link fails to compile. Libraries that share a folder (the
-  # analysis_* ones) share its headers.
+  # numerics and numerics_fft; the spectra_* ones) share its headers.
   file(RELATIVE_PATH relative ${PROJECT_SOURCE_DIR}/lib ${CMAKE_CURRENT_SOURCE_DIR})
   set(includes ${PROJECT_BINARY_DIR}/include/${target})
   get_filename_component(parent ${includes}/${relative} DIRECTORY)

@@ -23,7 +23,7 @@ solution and period beside the others. What differs and cannot be made equal:
     and mfwave's run time of the case (the time loop with its observers, after set-up).
 Periods: the tip's transverse displacement (PySPH: the middle particle of the last column; mfwave:
 the centroid of the last column), zero crossings with 2 % hysteresis after the first half period,
-the same function for both (mfwave's own analysis in lib/analysis/Oscillation.cpp does the same).
+the same function for both (mfwave's own analysis in lib/numerics/Oscillation.cpp does the same).
 
 When PySPH (Debian's python3-pysph) is not installed the script says so and runs mfwave alone.
 Everything runs with OMP_NUM_THREADS=1; PySPH with --no-openmp.
@@ -52,7 +52,7 @@ def one_thread_env():
 
 
 def oscillation_period(times, values, hysteresis=0.02):
-    """Mean period from zero crossings armed by |u| > hysteresis max|u| (lib/analysis/Oscillation.cpp)."""
+    """Mean period from zero crossings armed by |u| > hysteresis max|u| (lib/numerics/Oscillation.cpp)."""
     largest = max((abs(u) for u in values), default=0.0)
     if not largest > 0:
         return float("nan")

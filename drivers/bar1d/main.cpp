@@ -11,7 +11,7 @@
 
 #include "studies/bar1d/BarCollocationCase.hpp"
 
-#include "analysis/ConvergenceOrders.hpp"
+#include "numerics/ConvergenceOrders.hpp"
 #include "core/Error.hpp"
 #include "integrators/ConstrainedIntegrators.hpp"
 #include "io/run/CaseTable.hpp"
@@ -24,7 +24,7 @@
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
 #include "methods/collocation/RadialBasisFunction.hpp"
-#include "study/CollocationSpec.hpp"
+#include "wiring/CollocationSpec.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -12,7 +12,7 @@
 
 #include "studies/bar1d_sph/BarCase.hpp"
 
-#include "analysis/ConvergenceOrders.hpp"
+#include "numerics/ConvergenceOrders.hpp"
 #include "core/Error.hpp"
 #include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
@@ -23,7 +23,7 @@
 #include "io/scene/Format.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
-#include "study/UpdatedLagrangianSphSpec.hpp"
+#include "wiring/UpdatedLagrangianSphSpec.hpp"
 
 #include <cmath>
 #include <sstream>

@@ -86,8 +86,8 @@
 #include "io/scene/LoadScene.hpp"
 #include "methods/spectral_element/SpectralElementElasticity.hpp"
 #include "particles/BoxFace.hpp"
-#include "study/CollocationSpec.hpp"
-#include "study/VeryWeakSphScene.hpp"
+#include "wiring/CollocationSpec.hpp"
+#include "wiring/VeryWeakSphScene.hpp"
 
 #include <algorithm>
 #include <cmath>

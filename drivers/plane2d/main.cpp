@@ -8,7 +8,7 @@
 
 #include "studies/plane2d/Plane2dCase.hpp"
 
-#include "analysis/ConvergenceOrders.hpp"
+#include "numerics/ConvergenceOrders.hpp"
 #include "core/Error.hpp"
 #include "integrators/ConstrainedIntegrators.hpp"
 #include "io/run/CaseTable.hpp"

@@ -2,7 +2,7 @@
 // very weak SPH published, consistent and Galerkin, RK collocation, the updated-Lagrangian SPH
 // linearised about rest, the spectral elements), against the exact solution
 // u = U e cos(k . x - omega t). The operator is the method's interior row repeated on the periodic
-// lattice (lib/analysis/PeriodicLattice.hpp), or the spectral elements with periodic faces, so the
+// lattice (lib/numerics/PeriodicLattice.hpp), or the spectral elements with periodic faces, so the
 // box has no boundary and the error is the method's and the integrator's dispersion alone. The step
 // is a fraction of the central-difference limit 2 / omega_max of the whole discrete spectrum (FFT,
 // DispersionSpectrum; a power iteration for the spectral elements). One of the speed-accuracy sweep's reference problems

@@ -30,7 +30,7 @@
 
 #include "studies/plate/PlateModes.hpp"
 
-#include "analysis/RichardsonExtrapolation.hpp"
+#include "numerics/RichardsonExtrapolation.hpp"
 #include "core/Error.hpp"
 #include "io/run/CaseTable.hpp"
 #include "io/run/DriverCommandLine.hpp"
@@ -42,7 +42,7 @@
 #include "io/scene/Format.hpp"
 #include "io/scene/IntegratorSpec.hpp"
 #include "io/scene/LoadScene.hpp"
-#include "study/UpdatedLagrangianSphSpec.hpp"
+#include "wiring/UpdatedLagrangianSphSpec.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -33,7 +33,7 @@
 #include "io/scene/Format.hpp"
 #include "io/scene/IntegratorSpec.hpp"
 #include "io/scene/LoadScene.hpp"
-#include "study/UpdatedLagrangianSphSpec.hpp"
+#include "wiring/UpdatedLagrangianSphSpec.hpp"
 
 #include <algorithm>
 #include <cmath>

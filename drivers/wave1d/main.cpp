@@ -9,7 +9,7 @@
 
 #include "studies/wave1d/Wave1dCase.hpp"
 
-#include "analysis/ConvergenceOrders.hpp"
+#include "numerics/ConvergenceOrders.hpp"
 #include "core/Error.hpp"
 #include "integrators/IntegratorFactory.hpp"
 #include "io/run/CaseTable.hpp"

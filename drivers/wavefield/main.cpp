@@ -6,7 +6,7 @@
 //   wavefield --scene data/scenes/block-ricker.toml [--set key=value ...] [--out DIR]
 //   mpirun -np 2 wavefield ...   (each rank steps a block of the lattice; the same numbers)
 
-#include "analysis/StableTimeStep.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "core/Stopwatch.hpp"
 #include "core/Error.hpp"
 #include "core/Interruption.hpp"

@@ -4,7 +4,7 @@
 // velocity at the top centre. Prints the probe's last value; scripts/check-install.sh compares it
 // with the value the in-tree build gives.
 
-#include "analysis/StableTimeStep.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "kernels/CubicSplineKernel.hpp"
 #include "methods/very_weak_sph/VeryWeakSph.hpp"

@@ -5,8 +5,8 @@
 #include "integrators/IntegratorFactory.hpp"
 #include "io/scene/Format.hpp"
 #include "io/scene/IntegratorSpec.hpp"
-#include "study/UpdatedLagrangianSphSpec.hpp"
-#include "study/VeryWeakSphSpec.hpp"
+#include "wiring/UpdatedLagrangianSphSpec.hpp"
+#include "wiring/VeryWeakSphSpec.hpp"
 
 #include <algorithm>
 

@@ -3,7 +3,7 @@
 // lattice (the stable step), whether any mode grows, and the phase error of a wave of a given
 // frequency after space and time are both discretised.
 //
-// The row is the lattice tools' interior stencil (analysis/LatticeMethods: u'' = sum_b G_b u_b, with a
+// The row is the lattice tools' interior stencil (spectra/LatticeMethods: u'' = sum_b G_b u_b, with a
 // mass stencil for collocation's consistent mass). Its symbol S(k) = -sum_b G_b exp(i k . r_b) and
 // mass symbol M(k) give the branches omega_h^2 = eig(M(k)^-1 S(k)) (LatticeDispersion.hpp).
 //   - omega_max: the largest omega_h over the Brillouin zone k dx in [0, pi]^D, sampled on a grid
@@ -19,7 +19,7 @@
 
 #include "core/Material.hpp"
 #include "integrators/IntegratorKind.hpp"
-#include "analysis/MethodLatticeStencils.hpp"
+#include "spectra/MethodLatticeStencils.hpp"
 
 #include <string>
 

@@ -1,6 +1,6 @@
 #include "catalogue/ScenePrediction.hpp"
 
-#include "analysis/LatticeMethods.hpp"
+#include "spectra/LatticeMethods.hpp"
 #include "catalogue/MethodCatalogue.hpp"
 #include "catalogue/RowSpectrum.hpp"
 #include "catalogue/SceneSupport.hpp"
@@ -40,7 +40,7 @@ void checkSpectralElementLattice(const GeometrySpec& g, int order) {
   }
 }
 
-// The interior row's name in the lattice tools (analysis/LatticeMethods) and its settings.
+// The interior row's name in the lattice tools (spectra/LatticeMethods) and its settings.
 std::string latticeRowName(const MethodChoice& c) {
   const std::string& name = c.method->name;
   if (name == "finite_difference") return "finite_difference";

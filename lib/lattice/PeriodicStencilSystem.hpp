@@ -2,7 +2,7 @@
 // u'' = A u on an N^D periodic lattice with one stencil on every node (the interior row of a
 // translation-invariant method repeated, as in the planewave study and the spectra), applied by
 // lattice arithmetic: no matrix, no per-node storage. The matrix-free counterpart of
-// periodicLatticeSystem's sparse matrices (lib/analysis/PeriodicLattice) for lumped methods
+// periodicLatticeSystem's sparse matrices (lib/numerics/PeriodicLattice) for lumped methods
 // (M = I, no dampers, no loads): K = -A.
 //
 // Each lattice line along x runs its middle, where no x offset wraps, through stencilRun (the

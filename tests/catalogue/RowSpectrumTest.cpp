@@ -1,7 +1,7 @@
 // The plan's spectral figures from a method's interior row, against closed forms.
 #include "catalogue/RowSpectrum.hpp"
 
-#include "analysis/LatticeMethods.hpp"
+#include "spectra/LatticeMethods.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include "catalogue/RowSpectrum.hpp"
 #include "catalogue/ScenePrediction.hpp"
 
-#include "analysis/LatticeMethods.hpp"
+#include "spectra/LatticeMethods.hpp"
 #include "studies/planewave/PlaneWaveRun.hpp"
 
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 
 #include "io/scene/LoadScene.hpp"
 #include "studies/lamb3d/LambCase.hpp"
-#include "study/VeryWeakSphSpec.hpp"
+#include "wiring/VeryWeakSphSpec.hpp"
 
 #include <gtest/gtest.h>
 

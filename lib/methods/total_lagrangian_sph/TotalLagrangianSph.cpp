@@ -1,6 +1,6 @@
 #include "methods/total_lagrangian_sph/TotalLagrangianSph.hpp"
 
-#include "analysis/StableTimeStep.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "core/Error.hpp"
 #include "kernels/KernelFactory.hpp"
 

@@ -7,7 +7,7 @@
 // and observers; it never touches the method's matrices.
 //
 // The description holds plain values, not scene types, so that the method stays below the scene
-// reader; lib/study/VeryWeakSphScene turns a scene into it.
+// reader; lib/wiring/VeryWeakSphScene turns a scene into it.
 
 #include "core/TimeFunction.hpp"
 #include "core/Types.hpp"

@@ -1,6 +1,6 @@
 #include "BarCollocationCase.hpp"
 
-#include "analysis/CollocationStability.hpp"
+#include "spectra/CollocationStability.hpp"
 #include "analytic/FixedFreeBarImpact.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"

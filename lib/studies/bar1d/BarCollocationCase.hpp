@@ -6,7 +6,7 @@
 
 #include "io/run/StudyCases.hpp"
 #include "io/scene/Scene.hpp"
-#include "study/CollocationSpec.hpp"
+#include "wiring/CollocationSpec.hpp"
 
 #include <cmath>
 #include <string>

@@ -7,8 +7,8 @@
 #include "io/vtk/VtkFrameWriter.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
 #include "observers/TimeLoop.hpp"
-#include "study/EnergyLedger.hpp"
-#include "study/SolidStateAdapter.hpp"
+#include "wiring/EnergyLedger.hpp"
+#include "wiring/SolidStateAdapter.hpp"
 
 #include <cmath>
 #include <iomanip>

@@ -5,7 +5,7 @@
 #include "io/run/StudyCases.hpp"
 #include "io/scene/OutputSpec.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSphOptions.hpp"
-#include "study/SolidIntegration.hpp"
+#include "wiring/SolidIntegration.hpp"
 
 #include <cmath>
 #include <string>

@@ -18,8 +18,8 @@
 #include "observers/LinearEnergyLedger.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
-#include "study/VeryWeakSphRun.hpp"
-#include "study/VeryWeakSphScene.hpp"
+#include "wiring/VeryWeakSphRun.hpp"
+#include "wiring/VeryWeakSphScene.hpp"
 #ifdef MFWAVE_WITH_MPI
 #include "decomposition/mpi/MpiSession.hpp"
 #include "decomposition/mpi/RankCheckpointStore.hpp"

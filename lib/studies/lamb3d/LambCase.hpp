@@ -4,12 +4,12 @@
 // (LambCollocationCase.hpp), its probes compared with the exact response of the half-space, or
 // (lamb2d) through the updated-Lagrangian SPH for solids (LambSolidCase.hpp).
 
-#include "analysis/SignalComparison.hpp"
+#include "numerics/SignalComparison.hpp"
 #include "io/run/StudyCases.hpp"
 #include "io/scene/Scene.hpp"
 #include "studies/lamb3d/LambSolidSpec.hpp"
-#include "study/CollocationSpec.hpp"
-#include "study/VeryWeakSphSpec.hpp"
+#include "wiring/CollocationSpec.hpp"
+#include "wiring/VeryWeakSphSpec.hpp"
 
 #include <limits>
 #include <optional>

@@ -1,7 +1,7 @@
 #include "studies/lamb3d/LambCaseLoop.hpp"
 
 #include "core/Error.hpp"
-#include "analysis/StableTimeStep.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/scene/StepLimitCheck.hpp"
 

@@ -1,6 +1,6 @@
 #include "studies/lamb3d/LambCollocationCase.hpp"
 
-#include "analysis/StableTimeStep.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
 #include "integrators/ConstrainedIntegrators.hpp"

@@ -1,7 +1,7 @@
 #include "studies/lamb3d/LambProbeScores.hpp"
 
 #include "core/AtomicFile.hpp"
-#include "study/LambReference.hpp"
+#include "wiring/LambReference.hpp"
 
 #include <algorithm>
 #include <iomanip>

@@ -10,7 +10,7 @@
 #include "kernels/Kernel.hpp"
 #include "observers/ReportedProbes.hpp"
 #include "particles/ParticleSet.hpp"
-#include "study/LambReference.hpp"
+#include "wiring/LambReference.hpp"
 
 #include <string>
 #include <vector>

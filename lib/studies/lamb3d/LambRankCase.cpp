@@ -16,8 +16,8 @@
 #include "observers/TimeLoop.hpp"
 #include "particles/GhostLayers.hpp"
 #include "particles/Lattice.hpp"
-#include "study/LambReference.hpp"
-#include "study/VeryWeakSphRun.hpp"
+#include "wiring/LambReference.hpp"
+#include "wiring/VeryWeakSphRun.hpp"
 
 #include <iomanip>
 #include <memory>

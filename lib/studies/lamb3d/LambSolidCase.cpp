@@ -12,8 +12,8 @@
 #include "particles/BoxFace.hpp"
 #include "studies/lamb3d/LambProbeScores.hpp"
 #include "studies/lamb3d/LambReflection.hpp"
-#include "study/SolidIntegration.hpp"
-#include "study/SolidStateAdapter.hpp"
+#include "wiring/SolidIntegration.hpp"
+#include "wiring/SolidStateAdapter.hpp"
 
 #include <algorithm>
 #include <cmath>

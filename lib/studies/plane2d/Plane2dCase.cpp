@@ -1,6 +1,6 @@
 #include "Plane2dCase.hpp"
 
-#include "analysis/StableTimeStep.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
 #include "integrators/ConstrainedIntegrators.hpp"
@@ -10,7 +10,7 @@
 #include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
-#include "study/CollocationSpec.hpp"
+#include "wiring/CollocationSpec.hpp"
 
 #include <limits>
 #include <memory>

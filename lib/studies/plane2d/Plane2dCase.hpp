@@ -26,7 +26,7 @@ struct CaseResult : StudyCase {
 CaseResult runCase(const Scene& scene, int order, Real ratio, Real w, int cells, std::vector<std::string>& notes);
 
 // Before any step: the exact spectrum of the interior rows on a periodic lattice
-// (rkPlaneStrainGrowingModes, lib/study/CollocationSpec, which lamb2d's RK cases share; at h = 1:
+// (rkPlaneStrainGrowingModes, lib/wiring/CollocationSpec, which lamb2d's RK cases share; at h = 1:
 // with a / h fixed the rows scale as 1 / h^2, so one spectrum serves every resolution). omega^2 < 0
 // grows at every time step, whatever the integrator: RK collocation from a / h of about 2.8 on in
 // 2-D, where the mass symbol changes sign (docs/studies/spectra.md). Refused with exit 3 unless

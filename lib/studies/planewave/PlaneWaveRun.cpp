@@ -1,7 +1,7 @@
 #include "PlaneWaveRun.hpp"
 
-#include "analysis/DispersionSpectrum.hpp"
-#include "analysis/StableTimeStep.hpp"
+#include "numerics/DispersionSpectrum.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "analytic/PlaneWave.hpp"
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"

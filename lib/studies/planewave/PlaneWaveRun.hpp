@@ -8,8 +8,8 @@
 // elements); a spectrum with omega^2 < 0 (exit 3) or a step beyond the integrator's own limit
 // (exit 2) is refused before any work.
 
-#include "analysis/DispersionSpectrum.hpp"
-#include "analysis/LatticeMethods.hpp"
+#include "numerics/DispersionSpectrum.hpp"
+#include "spectra/LatticeMethods.hpp"
 #include "io/run/StudyCases.hpp"
 
 #include <string>

@@ -13,9 +13,9 @@
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
 #include "observers/GroupMeanRecorder.hpp"
 #include "observers/TimeLoop.hpp"
-#include "study/EnergyLedger.hpp"
-#include "study/SolidIntegration.hpp"
-#include "study/SolidStateAdapter.hpp"
+#include "wiring/EnergyLedger.hpp"
+#include "wiring/SolidIntegration.hpp"
+#include "wiring/SolidStateAdapter.hpp"
 
 #include <algorithm>
 #include <cmath>

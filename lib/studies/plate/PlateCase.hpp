@@ -4,7 +4,7 @@
 // the small-deformation comparison, by the very weak form SPH, or by the total-Lagrangian SPH; its tip history analysed for the
 // period and the amplitude and compared with the thin-plate and Timoshenko periods.
 
-#include "analysis/Oscillation.hpp"
+#include "numerics/Oscillation.hpp"
 
 #include "analytic/CantileverPlate.hpp"
 #include "io/run/StudyCases.hpp"

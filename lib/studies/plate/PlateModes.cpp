@@ -2,7 +2,7 @@
 
 #include "PlateLattice.hpp"
 
-#include "analysis/RestModes.hpp"
+#include "numerics/RestModes.hpp"
 #include "core/Stopwatch.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // The plate's small vibrations by the updated-Lagrangian SPH, linearised about rest
-// (lib/analysis/RestModes): the first bending period of the discretisation itself, with no
+// (lib/numerics/RestModes): the first bending period of the discretisation itself, with no
 // amplitude, no artificial terms (both vanish or are switched off in the linearisation) and no
 // time integration. Over several resolutions it shows how the method converges, free of what the
 // runs add (docs/studies/sph-solids.md).

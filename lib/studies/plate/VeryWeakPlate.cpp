@@ -1,10 +1,10 @@
 #include "VeryWeakPlate.hpp"
 
-#include "integrators/TimeStep.hpp"
-#include "analysis/StableTimeStep.hpp"
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
+#include "integrators/TimeStep.hpp"
 #include "io/run/ProgressReporter.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "methods/very_weak_sph/VeryWeakSphProblem.hpp"
 #include "observers/EnergyObserver.hpp"
 #include "observers/LinearEnergyLedger.hpp"
@@ -14,7 +14,7 @@
 #include "particles/BoxFace.hpp"
 #include "particles/GhostLayers.hpp"
 #include "particles/Lattice.hpp"
-#include "study/VeryWeakSphRun.hpp"
+#include "wiring/VeryWeakSphRun.hpp"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 #include "RingsCase.hpp"
 
-#include "analysis/Fragments.hpp"
+#include "numerics/Fragments.hpp"
 
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
@@ -19,8 +19,8 @@
 #include "observers/TimeLoop.hpp"
 #include "observers/TimeSeries.hpp"
 #include "particles/Annulus.hpp"
-#include "study/EnergyLedger.hpp"
-#include "study/SolidStateAdapter.hpp"
+#include "wiring/EnergyLedger.hpp"
+#include "wiring/SolidStateAdapter.hpp"
 
 #include <algorithm>
 #include <cmath>

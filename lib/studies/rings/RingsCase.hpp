@@ -6,7 +6,7 @@
 #include "io/run/StudyCases.hpp"
 #include "io/scene/Scene.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
-#include "study/SolidIntegration.hpp"
+#include "wiring/SolidIntegration.hpp"
 
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #include "Wave1dCase.hpp"
 
-#include "analysis/StableTimeStep.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "analytic/StandingWave.hpp"
 #include "core/Stopwatch.hpp"
 #include "integrators/IntegratorFactory.hpp"

@@ -12,7 +12,7 @@
 
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
-#include "study/UpdatedLagrangianSphSpec.hpp"
+#include "wiring/UpdatedLagrangianSphSpec.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -3,8 +3,8 @@
 
 #include "io/scene/IntegratorSpec.hpp"
 #include "io/scene/SceneSchema.hpp"
-#include "study/UpdatedLagrangianSphSpec.hpp"
-#include "study/VeryWeakSphSpec.hpp"
+#include "wiring/UpdatedLagrangianSphSpec.hpp"
+#include "wiring/VeryWeakSphSpec.hpp"
 
 #include <fstream>
 #include <gtest/gtest.h>

@@ -7,8 +7,8 @@
 #include "integrators/FirstOrderIntegratorFactory.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
-#include "study/UpdatedLagrangianSphSpec.hpp"
-#include "study/VeryWeakSphSpec.hpp"
+#include "wiring/UpdatedLagrangianSphSpec.hpp"
+#include "wiring/VeryWeakSphSpec.hpp"
 
 #include <gtest/gtest.h>
 #include <stdexcept>

@@ -21,7 +21,7 @@
 
 #include "BlockFixture.hpp"
 
-#include "analysis/StableTimeStep.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "core/Material.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "methods/very_weak_sph/TransmittingBoundary.hpp"

@@ -5,7 +5,7 @@
 
 #include "BlockFixture.hpp"
 
-#include "analysis/StableTimeStep.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "methods/very_weak_sph/VeryWeakSph.hpp"
 

@@ -3,8 +3,8 @@
 // of 73,000 unknowns takes about a minute here, so this runs with the study tests, not under the
 // sanitizers.
 
-#include "analysis/LowestModes.hpp"
-#include "analysis/StableTimeStep.hpp"
+#include "numerics/LowestModes.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "methods/very_weak_sph/VeryWeakSph.hpp"
 #include "kernels/CubicSplineKernel.hpp"
 #include "particles/Lattice.hpp"

@@ -4,7 +4,7 @@
 // dashpots. Its rows are exact for linear fields everywhere and for quadratic ones at interior and
 // face particles (not at 2-D corners and 3-D edges and corners: 0.177 of the cancelling terms).
 
-#include "analysis/StableTimeStep.hpp"
+#include "numerics/StableTimeStep.hpp"
 #include "core/Error.hpp"
 #include "integrators/CentralDifference.hpp"
 #include "kernels/CubicSplineKernel.hpp"
