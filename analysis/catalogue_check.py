@@ -101,7 +101,9 @@ def main():
             "memory_mib": case["peak_memory_mib"], "predicted_memory_mib": plan["memory_bytes"] / 1048576.0,
             "memory_ratio": plan["memory_bytes"] / 1048576.0 / case["peak_memory_mib"],
             "stable_dt": case["stable_dt"], "predicted_stable_dt": plan["stable_step"],
-            "phase_error": plan["phase_error"], "setup_s": case["setup_seconds"], "loop_s": case["loop_seconds"],
+            "phase_error": plan["phase_error"], "measured_error": case.get("primary_error_value"),
+            "measured_error_name": case.get("primary_error"),
+            "setup_s": case["setup_seconds"], "loop_s": case["loop_seconds"],
             "steps": case["steps"], "predicted_steps": plan["steps"],
         }
         rows.append(row)
@@ -117,13 +119,15 @@ def main():
         writer.writerows(rows)
     with open(os.path.join(args.out, "predictions.md"), "w") as f:
         f.write("| point | dx | particles | wall (predicted) | ratio | peak MiB (predicted) | ratio | "
-                "stable step (predicted) | phase error |\n|---|---|---|---|---|---|---|---|---|\n")
+                "stable step (predicted) | predicted phase error | measured error (its name) |\n"
+                "|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
             phase = "-" if r["phase_error"] is None else f"{r['phase_error']:.3g}"
+            measured = "-" if r["measured_error"] is None else f"{r['measured_error']:.3g} ({r['measured_error_name']})"
             f.write(f"| {r['point']} | {r['spacing']:g} | {r['particles']} | {r['wall_s']:.3g} s "
                     f"({r['predicted_wall_s']:.3g} s) | {r['wall_ratio']:.2f} | {r['memory_mib']:.0f} "
                     f"({r['predicted_memory_mib']:.0f}) | {r['memory_ratio']:.2f} | {r['stable_dt']:.4g} "
-                    f"({r['predicted_stable_dt']:.4g}) | {phase} |\n")
+                    f"({r['predicted_stable_dt']:.4g}) | {phase} | {measured} |\n")
     # The stable step: the interior row's bound against the run's (boundary rows may lower the run's a
     # little, the plan says so); 10 % either way. Steps follow from it through integrators/TimeStep.
     outside = [r for r in rows if not (0.7 <= r["memory_ratio"] <= 1.3)

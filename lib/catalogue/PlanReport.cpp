@@ -60,7 +60,8 @@ void printResolvedModel(std::ostream& out, const Scene& scene, const MethodChoic
   const Material material = scene.material.material();
   out << "scene        " << scene.info.name << " (" << g.dimension << "-D)\n"
       << "geometry     " << g.shape << ' ' << g.describeBox() << ", spacing " << formatNumber(g.spacing) << " m, "
-      << p.particles << " particles" << (g.ghostLayers > 0 ? " (with ghost layers where the method uses them)" : "")
+      << g.particleCount() << " particles"
+      << (p.particles > g.particleCount() ? " and " + std::to_string(p.particles - g.particleCount()) + " ghosts" : "")
       << '\n'
       << "material     rho " << formatNumber(material.density()) << ", lambda " << formatNumber(material.lambda())
       << ", mu " << formatNumber(material.mu()) << "; c_p " << significant(material.pWaveSpeed(), 5) << ", c_s "

@@ -1,11 +1,12 @@
 // The plan's predictions against what runs measure: the phase error of every lattice method against
-// the plane-wave study's measured error (within a factor of 1.25), and the plan of a shipped scene.
+// the plane-wave study's measured error (within a factor of 1.5), and the plan of a shipped scene.
 #include "catalogue/CatalogueScene.hpp"
 #include "catalogue/PlanReport.hpp"
 #include "catalogue/RowSpectrum.hpp"
 #include "catalogue/ScenePrediction.hpp"
 
 #include "spectra/LatticeMethods.hpp"
+#include "spectra/SpectralElementDispersion.hpp"
 #include "studies/planewave/PlaneWaveRun.hpp"
 
 #include <gtest/gtest.h>
@@ -33,7 +34,8 @@ Real predictedPlaneWaveError(const planewave::Settings& s, Real dt) {
   const IntegratorKind kind = integratorKind(s.integrator);
   if (s.method == "spectral_element") {
     const Real omega = speed * k.norm();
-    return planeWaveError(std::abs(discreteFrequency(omega, dt, kind) / omega - 1), s.periods);
+    const Real omegaH = spectralElementFrequency(s.semOrder, dx, speed, k.norm());
+    return planeWaveError(std::abs(discreteFrequency(omegaH, dt, kind) / omega - 1), s.periods);
   }
   const auto row = latticeMethodStencil<D>(s.method, s.lattice, dx);
   return planeWaveError(wavePhaseError<D>(row, k, s.shear, speed, dt, kind).total, s.periods);
@@ -53,7 +55,7 @@ TEST_P(PredictedPlaneWave, IsWithinAFactorOfTwoOfTheMeasuredError) {
   s.cfl = 0.5;
   s.shear = c.shear;
   s.lattice.smoothingLengthRatio = 1.3;
-  s.semOrder = 4;
+  s.semOrder = c.method == "spectral_element" && c.cells == 16 ? 2 : 4;
   const planewave::Outcome run = planewave::runPlaneWave(s);
   const Real predicted = c.dimension == 1   ? predictedPlaneWaveError<1>(s, run.record.timeStep)
                          : c.dimension == 2 ? predictedPlaneWaveError<2>(s, run.record.timeStep)
@@ -61,9 +63,11 @@ TEST_P(PredictedPlaneWave, IsWithinAFactorOfTwoOfTheMeasuredError) {
   RecordProperty("measured", std::to_string(run.error));
   RecordProperty("predicted", std::to_string(predicted));
   // The issue asks for a factor of 2; the row's symbol and the integrator's frequency map give the
-  // measured error within 7 % for every method here (2026-11-28), so a factor of 1.25 is asserted.
-  EXPECT_GT(predicted, run.error / 1.25) << c.method << ": measured " << run.error << ", predicted " << predicted;
-  EXPECT_LT(predicted, run.error * 1.25) << c.method << ": measured " << run.error << ", predicted " << predicted;
+  // measured error within 7 % for every lattice row here, and the spectral elements' Bloch analysis
+  // within 25 % (2026-11-28: their S wave at N = 2, 16 cells, predicted 0.0159, measured 0.0212), so a
+  // factor of 1.5 is asserted.
+  EXPECT_GT(predicted, run.error / 1.5) << c.method << ": measured " << run.error << ", predicted " << predicted;
+  EXPECT_LT(predicted, run.error * 1.5) << c.method << ": measured " << run.error << ", predicted " << predicted;
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -72,7 +76,8 @@ INSTANTIATE_TEST_SUITE_P(
                       PlaneWaveCase{"vwsph_galerkin", 2, 32, false}, PlaneWaveCase{"vwsph_galerkin", 2, 32, true},
                       PlaneWaveCase{"vwsph_consistent", 2, 32, false}, PlaneWaveCase{"rkcm", 2, 32, false},
                       PlaneWaveCase{"ulsph_corrected", 2, 32, false}, PlaneWaveCase{"ulsph", 2, 64, false},
-                      PlaneWaveCase{"spectral_element", 2, 32, false}, PlaneWaveCase{"vwsph_galerkin", 3, 16, false}),
+                      PlaneWaveCase{"spectral_element", 2, 32, false}, PlaneWaveCase{"spectral_element", 2, 16, true},
+                      PlaneWaveCase{"vwsph_galerkin", 3, 16, false}),
     [](const ::testing::TestParamInfo<PlaneWaveCase>& param) {
       return param.param.method + "_" + std::to_string(param.param.dimension) + "d_" +
              std::to_string(param.param.cells) + (param.param.shear ? "_s" : "_p");

@@ -1,12 +1,11 @@
 #pragma once
 // The lamb2d and lamb3d scenes (data/scenes/lamb2d.toml, lamb3d.toml) read as the Lamb case tests
-// need them, without the driver: the very weak SPH's [method] keys and the study keys the scenes set
-// registered, so that every method's case (RK collocation, the UL-SPH, spectral elements) runs the
-// shipped scene.
+// need them, without the driver: read with the study's own schema (lambSchema), so that every method's
+// case (RK collocation, the UL-SPH, spectral elements) runs the shipped scene.
 
 #include "io/scene/LoadScene.hpp"
 #include "studies/lamb3d/LambCase.hpp"
-#include "wiring/VeryWeakSphSpec.hpp"
+#include "studies/lamb3d/LambPlan.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,14 +17,7 @@ namespace mfwave::lamb3d::testing {
 // `sceneFile` a file of data/scenes ("lamb2d.toml", "lamb3d.toml").
 inline StudySettings lambCaseStudy(const std::string& sceneFile, const std::vector<std::string>& overrides,
                                    Real errorWindow = 6.0) {
-  SceneSchema schema = SceneSchema::common();
-  addVeryWeakSphKeys(schema);
-  schema.add("study", ValueType::Table);
-  for (const char* key : {"study.spacings", "study.free_block_lower", "study.free_block_upper"})
-    schema.add(key, ValueType::NumberArray);
-  for (const char* key : {"study.error_window", "study.published_smoothing_rate", "study.strong_smoothing_rate"})
-    schema.add(key, ValueType::Number);
-  schema.add("study.compare_published", ValueType::Boolean);
+  const SceneSchema schema = lambSchema(sceneFile == "lamb3d.toml" ? 3 : 2);  // the study's own keys
   SceneReader reader = loadScene(std::string(SCENES_FOLDER) + "/" + sceneFile, overrides, schema);
   StudySettings study;
   study.scene = readScene(reader);
