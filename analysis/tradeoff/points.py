@@ -176,6 +176,20 @@ PLANE_WAVE_METHODS = {"finite_difference": "FD", "vwsph_consistent": "VW-SPH con
                       "spectral_element": "SEM"}
 
 
+# The planewave scene names its method as the catalogue does (mfwave methods); the sweep keeps the
+# lattice tools' row ids as its short labels.
+CATALOGUE_SPELLING = {
+    "finite_difference": ["study.method=finite_difference"],
+    "vwsph_published": ["study.method=very_weak_sph", "study.variant=published"],
+    "vwsph_consistent": ["study.method=very_weak_sph", "study.variant=consistent"],
+    "vwsph_galerkin": ["study.method=very_weak_sph", "study.variant=galerkin"],
+    "rkcm": ["study.method=reproducing_kernel"],
+    "ulsph": ["study.method=updated_lagrangian_sph"],
+    "ulsph_corrected": ["study.method=updated_lagrangian_sph", "study.gradient_correction=true"],
+    "spectral_element": ["study.method=spectral_element"],
+}
+
+
 def planewave(cells, method="vwsph_consistent", kernel="cubic_spline", ratio=1.3, integrator="central_difference",
               cfl=0.5, order=4):
     """A P wave, two wavelengths across the periodic unit square, over two periods (planewave driver).
@@ -194,8 +208,8 @@ def planewave(cells, method="vwsph_consistent", kernel="cubic_spline", ratio=1.3
     support_text = support if support == "-" else f"{support:g}"
     return Point("plane_wave_2d", PLANE_WAVE_METHODS[method], "planewave", "planewave.toml", f"cells={cells}",
                  kernel_name, support_text, integrator, cfl,
-                 tuple([f"study.method={method}", f"study.cells={cells}", f"integrator.name={integrator}",
-                        f"integrator.cfl={cfl}"] + sets))
+                 tuple(CATALOGUE_SPELLING[method] + [f"study.cells={cells}", f"integrator.name={integrator}",
+                                                      f"integrator.cfl={cfl}"] + sets))
 
 
 def _dedupe(points):

@@ -12,6 +12,7 @@
 
 #include "studies/planewave/PlaneWaveRun.hpp"
 
+#include "catalogue/LatticeRows.hpp"
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
 #include "integrators/IntegratorFactory.hpp"
@@ -40,12 +41,21 @@ SceneSchema planeWaveSchema() {
   schema.add("study", ValueType::Table).describedAs("the plane-wave study (every key has a default)");
   schema.add("study.dimension", ValueType::Integer).withUnit("-").defaultsTo("2").between(1, 3).describedAs(
       "dimension of the periodic box");
-  schema.add("study.method", ValueType::String).defaultsTo("\"vwsph_consistent\"")
-      .oneOf({"finite_difference", "vwsph_published", "vwsph_consistent", "vwsph_galerkin", "rkcm", "ulsph",
-              "ulsph_corrected", "spectral_element"})
-      .describedAs("method (rkcm has a consistent mass, which explicit integrators solve every step; ulsph and "
-                   "ulsph_corrected are the updated-Lagrangian SPH linearised about rest, viscosity off; "
-                   "spectral_element is the GLL spectral-element reference on periodic elements)");
+  // The method by the catalogue's name (lib/catalogue), its variant and options as the catalogue spells
+  // them; the lattice row it stands for comes from latticeRowOf. The old row ids are refused, naming
+  // the new spelling.
+  schema.add("study.method", ValueType::String).defaultsTo("\"very_weak_sph\"")
+      .oneOf({"finite_difference", "very_weak_sph", "reproducing_kernel", "updated_lagrangian_sph", "spectral_element",
+              "vwsph_published", "vwsph_consistent", "vwsph_galerkin", "rkcm", "ulsph", "ulsph_corrected"})
+      .describedAs("method, by the catalogue's name (mfwave methods): finite_difference, very_weak_sph, "
+                   "reproducing_kernel (a consistent mass, which explicit integrators solve every step), "
+                   "updated_lagrangian_sph (linearised about rest, viscosity off), spectral_element (GLL elements with "
+                   "periodic faces)");
+  schema.add("study.variant", ValueType::String).defaultsTo("\"consistent\"")
+      .oneOf({"galerkin", "consistent", "published"}).when("method = very_weak_sph")
+      .describedAs("the very weak SPH's variant (method.variant in other scenes)");
+  schema.add("study.gradient_correction", ValueType::Boolean).defaultsTo("false").when("method = updated_lagrangian_sph")
+      .describedAs("the UL-SPH's kernel-gradient correction (method.kernel_gradient_correction in other scenes)");
   schema.add("study.cells", ValueType::Integer).withUnit("-").defaultsTo("32").atLeast(8).describedAs(
       "lattice nodes per axis (even); dx = 1 / cells, the box is the unit cube");
   schema.add("study.wavelengths", ValueType::Integer).withUnit("-").defaultsTo("2").atLeast(1).describedAs(
@@ -120,7 +130,16 @@ int main(int argc, char** argv) {
     SceneReader reader = loadDriverScene(opt, schema);
     Settings s;
     s.dimension = static_cast<int>(reader.integer("study.dimension"));
-    s.method = reader.string("study.method");
+    {
+      const std::string method = reader.string("study.method");
+      const std::string catalogue = catalogueSpellingOf(method);
+      if (!catalogue.empty())
+        reader.fail("study.method", "'" + method + "' is a lattice row id; the scene names the method by the catalogue's "
+                                    "name: " + catalogue + " (study.variant, study.gradient_correction)");
+      const std::string variant = method == "very_weak_sph" ? reader.string("study.variant") : "";
+      const bool corrected = method == "updated_lagrangian_sph" && reader.boolean("study.gradient_correction");
+      s.method = latticeRowOf(method, variant, corrected, "study.method");
+    }
     const long cells = reader.integer("study.cells");
     if (std::pow(static_cast<Real>(cells), s.dimension) > 1e8)
       reader.fail("study.cells", std::to_string(cells) + " per axis in " + std::to_string(s.dimension) +

@@ -117,8 +117,8 @@ std::vector<MethodEntry> makeCatalogue() {
     m.cost.fillExponent = 1.41;
     m.cost.growthNodes = {321, 561, 3375};
     m.cost.growthExponent = 1.45;
-    m.cost.particleStepsPerSecond = {3.9e6, 1.5e6, 7.6e4};
-    m.cost.setupSecondsPerParticle = {1.9e-4, 2.3e-4, 4.0e-3};
+    m.cost.particleStepsPerSecond = {3.9e6, 1.5e6, 1.4e5};
+    m.cost.setupSecondsPerParticle = {1.9e-4, 2.3e-4, 2.5e-3};
     m.cost.measured = "bar1d.toml at 321 nodes; lamb2d.toml at dx = 0.5, 0.25; lamb3d.toml at dx = 0.5 (3375 nodes, "
                       "255 MiB) and the 4.1 GiB measured at 24,389";
     m.programs = {"bar1d", "plane2d", "lamb2d", "lamb3d"};

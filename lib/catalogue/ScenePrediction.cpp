@@ -2,6 +2,7 @@
 
 #include "spectra/LatticeMethods.hpp"
 #include "spectra/SpectralElementDispersion.hpp"
+#include "catalogue/LatticeRows.hpp"
 #include "catalogue/MethodCatalogue.hpp"
 #include "catalogue/RowSpectrum.hpp"
 #include "catalogue/SceneSupport.hpp"
@@ -41,15 +42,9 @@ void checkSpectralElementLattice(const GeometrySpec& g, int order) {
   }
 }
 
-// The interior row's name in the lattice tools (spectra/LatticeMethods) and its settings.
+// The interior row of the choice in the lattice tools (LatticeRows.hpp).
 std::string latticeRowName(const MethodChoice& c) {
-  const std::string& name = c.method->name;
-  if (name == "finite_difference") return "finite_difference";
-  if (name == "very_weak_sph") return "vwsph_" + c.variant;
-  if (name == "reproducing_kernel") return "rkcm";
-  if (name == "radial_basis") return "rbcm";
-  if (name == "updated_lagrangian_sph") return c.gradientCorrection ? "ulsph_corrected" : "ulsph";
-  return "ulsph_corrected";  // total_lagrangian_sph: the corrected kernel gradients, linearised at rest
+  return latticeRowOf(c.method->name, c.variant, c.gradientCorrection);
 }
 
 LatticeMethodSettings latticeSettings(const MethodChoice& c, const Material& material) {
@@ -236,6 +231,9 @@ Prediction predictScene(const Scene& scene, const MethodChoice& c, Real spacing)
     p.notes.push_back("stable step from the interior row; boundary rows may lower it (the run's power iteration "
                       "decides)");
   }
+  if (p.hasSource)
+    p.notes.push_back("the phase error is that of bulk plane waves at the dominant frequency: a free surface, a "
+                      "load's kinks and boundary rows add errors it does not predict (docs/studies/which-method.md)");
   if (!p.hasSource) {
     p.phaseError = std::numeric_limits<Real>::quiet_NaN();
     p.notes.push_back("no time-dependent source: no dominant frequency, no phase error predicted");

@@ -63,14 +63,14 @@ TEST(PlaneWaveStudy, ConsistentVeryWeakSphAndRkcmConvergeAtSecondOrder) {
   ASSERT_EQ(vw64.outcome.exitCode, 0) << vw64.outcome.log;
   const double order = std::log2(vw32.numbers.at("relative_l2_u") / vw64.numbers.at("relative_l2_u"));
   EXPECT_NEAR(order, 2.0, 0.15);  // 0.2203 -> 0.0535: 2.04
-  const PlaneWaveRun rk32 = run("--set study.method=rkcm --set integrator.name=newmark --set study.cells=32", "rk32");
-  const PlaneWaveRun rk64 = run("--set study.method=rkcm --set integrator.name=newmark --set study.cells=64", "rk64");
+  const PlaneWaveRun rk32 = run("--set study.method=reproducing_kernel --set integrator.name=newmark --set study.cells=32", "rk32");
+  const PlaneWaveRun rk64 = run("--set study.method=reproducing_kernel --set integrator.name=newmark --set study.cells=64", "rk64");
   ASSERT_EQ(rk32.outcome.exitCode, 0) << rk32.outcome.log;
   ASSERT_EQ(rk64.outcome.exitCode, 0) << rk64.outcome.log;
   EXPECT_NEAR(std::log2(rk32.numbers.at("relative_l2_u") / rk64.numbers.at("relative_l2_u")), 2.0, 0.2);
   // Central difference solves RK collocation's consistent mass every step: second order too.
-  const PlaneWaveRun cd32 = run("--set study.method=rkcm --set study.cells=32", "rkcd32");
-  const PlaneWaveRun cd64 = run("--set study.method=rkcm --set study.cells=64", "rkcd64");
+  const PlaneWaveRun cd32 = run("--set study.method=reproducing_kernel --set study.cells=32", "rkcd32");
+  const PlaneWaveRun cd64 = run("--set study.method=reproducing_kernel --set study.cells=64", "rkcd64");
   ASSERT_EQ(cd32.outcome.exitCode, 0) << cd32.outcome.log;
   ASSERT_EQ(cd64.outcome.exitCode, 0) << cd64.outcome.log;
   EXPECT_NEAR(std::log2(cd32.numbers.at("relative_l2_u") / cd64.numbers.at("relative_l2_u")), 2.0, 0.2);
@@ -104,9 +104,9 @@ TEST(PlaneWaveStudy, LinearisedUlSphConvergesOnlyWithTheGradientCorrection) {
   // the kernel sums misjudge the gradient on the lattice by a factor set by h / dx, so the wave
   // speed is off by an amount that does not fall with dx (measured 0.028 at 64 cells, 0.106 at 128);
   // with it the error falls at second order (0.106 -> 0.026).
-  const PlaneWaveRun plain = run("--set study.method=ulsph --set study.cells=128", "ul128");
-  const PlaneWaveRun c64 = run("--set study.method=ulsph_corrected --set study.cells=64", "ulc64");
-  const PlaneWaveRun c128 = run("--set study.method=ulsph_corrected --set study.cells=128", "ulc128");
+  const PlaneWaveRun plain = run("--set study.method=updated_lagrangian_sph --set study.cells=128", "ul128");
+  const PlaneWaveRun c64 = run("--set study.method=updated_lagrangian_sph --set study.gradient_correction=true --set study.cells=64", "ulc64");
+  const PlaneWaveRun c128 = run("--set study.method=updated_lagrangian_sph --set study.gradient_correction=true --set study.cells=128", "ulc128");
   ASSERT_EQ(plain.outcome.exitCode, 0) << plain.outcome.log;
   ASSERT_EQ(c64.outcome.exitCode, 0) << c64.outcome.log;
   ASSERT_EQ(c128.outcome.exitCode, 0) << c128.outcome.log;
@@ -119,7 +119,7 @@ TEST(PlaneWaveStudy, BadInputIsRefusedBeforeAnyWork) {
   EXPECT_EQ(beyond.outcome.exitCode, 2) << beyond.outcome.log;
   EXPECT_NE(beyond.outcome.log.find("integrator.cfl"), std::string::npos) << beyond.outcome.log;
   // RK collocation's limit with its consistent mass is that of M^-1 A: refused just above it.
-  const PlaneWaveRun mass = run("--set study.method=rkcm --set integrator.cfl=1.02", "mass");
+  const PlaneWaveRun mass = run("--set study.method=reproducing_kernel --set integrator.cfl=1.02", "mass");
   EXPECT_EQ(mass.outcome.exitCode, 2) << mass.outcome.log;
   EXPECT_NE(mass.outcome.log.find("integrator.cfl"), std::string::npos) << mass.outcome.log;
   // The 3-D consistent very weak SPH has omega^2 < 0 on the periodic lattice (docs/studies/spectra.md):
@@ -132,7 +132,7 @@ TEST(PlaneWaveStudy, BadInputIsRefusedBeforeAnyWork) {
   EXPECT_EQ(rk4.outcome.exitCode, 2) << rk4.outcome.log;
   EXPECT_NE(rk4.outcome.log.find("arkode:classic_rk4 limit 2.82"), std::string::npos) << rk4.outcome.log;
   // RK collocation at a = 2.5 dx in 3-D: the mass symbol changes sign, growing modes (exit 3).
-  const PlaneWaveRun rk3d = run("--set study.method=rkcm --set integrator.name=newmark --set study.dimension=3 "
+  const PlaneWaveRun rk3d = run("--set study.method=reproducing_kernel --set integrator.name=newmark --set study.dimension=3 "
                                 "--set study.cells=16", "rk3d");
   EXPECT_EQ(rk3d.outcome.exitCode, 3) << rk3d.outcome.log;
   const PlaneWaveRun odd = run("--set study.cells=33", "odd");
