@@ -52,10 +52,11 @@ SceneSchema planeWaveSchema() {
                    "updated_lagrangian_sph (linearised about rest, viscosity off), spectral_element (GLL elements with "
                    "periodic faces)");
   schema.add("study.variant", ValueType::String).defaultsTo("\"consistent\"")
-      .oneOf({"galerkin", "consistent", "published"}).when("method = very_weak_sph")
-      .describedAs("the very weak SPH's variant (method.variant in other scenes)");
-  schema.add("study.gradient_correction", ValueType::Boolean).defaultsTo("false").when("method = updated_lagrangian_sph")
-      .describedAs("the UL-SPH's kernel-gradient correction (method.kernel_gradient_correction in other scenes)");
+      .oneOf({"galerkin", "consistent", "published"})
+      .describedAs("the very weak SPH's variant (method.variant in other scenes); other methods ignore it");
+  schema.add("study.gradient_correction", ValueType::Boolean).defaultsTo("false")
+      .describedAs("the UL-SPH's kernel-gradient correction (method.kernel_gradient_correction in other scenes); other "
+                   "methods ignore it");
   schema.add("study.cells", ValueType::Integer).withUnit("-").defaultsTo("32").atLeast(8).describedAs(
       "lattice nodes per axis (even); dx = 1 / cells, the box is the unit cube");
   schema.add("study.wavelengths", ValueType::Integer).withUnit("-").defaultsTo("2").atLeast(1).describedAs(
@@ -136,8 +137,10 @@ int main(int argc, char** argv) {
       if (!catalogue.empty())
         reader.fail("study.method", "'" + method + "' is a lattice row id; the scene names the method by the catalogue's "
                                     "name: " + catalogue + " (study.variant, study.gradient_correction)");
-      const std::string variant = method == "very_weak_sph" ? reader.string("study.variant") : "";
-      const bool corrected = method == "updated_lagrangian_sph" && reader.boolean("study.gradient_correction");
+      // Both are read (and checked) whatever the method, so that a scene written for one method runs
+      // another by --set study.method alone; each applies to its own method only.
+      const std::string variant = reader.string("study.variant");
+      const bool corrected = reader.boolean("study.gradient_correction");
       s.method = latticeRowOf(method, variant, corrected, "study.method");
     }
     const long cells = reader.integer("study.cells");
