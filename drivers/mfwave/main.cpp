@@ -25,6 +25,8 @@
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
+#include <iomanip>
+#include <sstream>
 #include <iostream>
 #include <unistd.h>
 
@@ -125,6 +127,13 @@ int plan(const SceneArguments& a, Real spacing, Real target, bool json) {
   }
   Prediction p = predictScene(read->scene, read->choice, spacing);
   p.notes.insert(p.notes.begin(), read->notes.begin(), read->notes.end());
+  const double machine = physicalMemoryMiB();
+  if (p.memoryBytes / 1048576.0 > machine) {
+    std::ostringstream note;
+    note << std::setprecision(3) << "needs about " << p.memoryBytes / 1073741824.0 << " GiB, more than this machine's "
+         << machine / 1024.0 << " GiB: the run would be refused (a coarser spacing, or the ranks: docs/scaling.md)";
+    p.notes.insert(p.notes.begin(), note.str());
+  }
   nlohmann::json out = predictionJson(p);
   if (!json) printPrediction(std::cout, p);
   if (target > 0) {
