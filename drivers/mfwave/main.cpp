@@ -202,7 +202,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version: 0; a usage error: 2, as every driver says bad input.
+    return app.exit(e) == 0 ? 0 : 2;
   }
 
   return runDriver("mfwave", [&]() -> int {

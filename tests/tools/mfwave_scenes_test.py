@@ -102,6 +102,8 @@ def main():
         ([args.mfwave, "plan", lamb, "--set", "method.name=vwsph"], "method.name"),
         ([args.mfwave, "check", block, "--set", "method.name=very_weak_sph"], "load[0].type"),
         ([args.mfwave, "run", lamb, "--set", "study.spacings=[0.3]", "--quiet"], "study.spacings"),
+        ([args.mfwave], "subcommand is required"),
+        ([args.mfwave, "plan", os.path.join(args.scenes, "no-such-scene.toml")], "no-such-scene.toml"),
     ]:
         code, out = run(command)
         if code != 2 or key not in out:
