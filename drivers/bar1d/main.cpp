@@ -41,16 +41,12 @@ const char* kProgram = "bar1d";
 
 SceneSchema bar1dSchema() {
   SceneSchema schema = SceneSchema::common();
-  schema.addChoice("method.name", "reproducing_kernel");
-  schema.addChoice("method.name", "radial_basis");
-  schema.add("method.order", ValueType::Integer).withUnit("-").defaultsTo("2").between(0, 3)
-      .when("name = reproducing_kernel").describedAs("RK basis order m");
-  schema.add("method.support_ratio", ValueType::Number).withUnit("-").defaultsTo("3.3").positive()
-      .when("name = reproducing_kernel").describedAs("cubic B-spline support radius a / h");
-  schema.add("method.basis", ValueType::String).defaultsTo("\"inverse_multiquadric\"")
-      .oneOf(radialBasisNames()).when("name = radial_basis").describedAs("radial basis function");
-  schema.add("method.shape_ratio", ValueType::Number).withUnit("-").defaultsTo("1.0").positive()
-      .when("name = radial_basis").describedAs("RBF shape parameter a_r / h");
+  // The paper's supports: a / h = 3.3 for the reproducing kernel, a_r / h = 1 for the radial basis.
+  CollocationKeyDefaults collocation;
+  collocation.supportRatio = 3.3;
+  collocation.radialBasis = true;
+  collocation.shapeRatio = 1.0;
+  addCollocationKeys(schema, collocation);
   schema.add("study", ValueType::Table).describedAs("the convergence study of bar1d");
   schema.add("study.initial_velocity", ValueType::Number).withUnit("m/s").defaultsTo("-1.0")
       .describedAs("uniform initial velocity v0");

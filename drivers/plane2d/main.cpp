@@ -21,6 +21,7 @@
 #include "io/scene/Format.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/Scene.hpp"
+#include "wiring/CollocationSpec.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,12 +38,10 @@ const char* kProgram = "plane2d";
 
 SceneSchema plane2dSchema() {
   SceneSchema schema = SceneSchema::common();
-  schema.addChoice("method.name", "reproducing_kernel");
-  schema.add("method.order", ValueType::Integer).withUnit("-").defaultsTo("2").between(2, 3)
-      .describedAs("RK basis order m (collocation needs second derivatives: m >= 2)");
-  schema.add("method.support_ratio", ValueType::Number).withUnit("-").defaultsTo("2.5").positive()
-      .describedAs("cubic B-spline support radius a / h (above about 2.7 the 2-D interior rows have growing modes: "
-                   "refused)");
+  CollocationKeyDefaults collocation;
+  collocation.supportRatio = 2.5;
+  collocation.supportAdvice = "above about 2.7 the 2-D interior rows have growing modes: refused";
+  addCollocationKeys(schema, collocation);
   schema.add("study", ValueType::Table).describedAs("the convergence study of plane2d");
   schema.add("study.cells", ValueType::NumberArray).withUnit("-").required()
       .describedAs("resolutions: cells per side (h = side / cells); geometry.spacing is ignored");

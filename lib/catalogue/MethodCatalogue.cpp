@@ -5,6 +5,7 @@
 #include "integrators/IntegratorFactory.hpp"
 #include "io/scene/Format.hpp"
 #include "io/scene/IntegratorSpec.hpp"
+#include "wiring/CollocationSpec.hpp"
 #include "wiring/UpdatedLagrangianSphSpec.hpp"
 #include "wiring/VeryWeakSphSpec.hpp"
 
@@ -17,23 +18,21 @@ using B = BoundaryType;
 using L = LoadType;
 using T = ValueType;
 
-// The [method] keys of the methods whose keys no library registers yet (their studies declare them
-// with study-specific defaults: the catalogue says so in each default's note).
+// Collocation's keys are declared once, beside their reader (wiring/CollocationSpec); their defaults
+// are each study's, which the listing says.
 void addCollocationOptions(SceneSchema& schema) {
-  const std::string when = "name = reproducing_kernel";
-  schema.add("method.order", T::Integer).withUnit("-").defaultsTo("2").between(1, 3).when(when)
-      .describedAs("RK basis order m (2 or 3: collocation needs second derivatives)");
-  schema.add("method.support_ratio", T::Number).withUnit("-")
-      .defaultsToNote("2.5 (1-D, 2-D); 2.2 in 3-D, the widest support whose interior rows do not grow").positive()
-      .when(when).describedAs("cubic B-spline support radius a / h (bar1d takes 3.3, the paper's)");
+  CollocationKeyDefaults keys;
+  keys.supportNote = "the study's: 2.5 in 1-D and 2-D (bar1d 3.3), 2.2 in 3-D";
+  keys.supportAdvice = "from about 2.77 in 2-D and 2.5 in 3-D the interior rows grow";
+  addCollocationKeys(schema, keys);
 }
 
 void addRadialBasisOptions(SceneSchema& schema) {
-  const std::string when = "name = radial_basis";
-  schema.add("method.basis", T::String).defaultsTo("\"inverse_multiquadric\"").when(when)
-      .describedAs("radial basis function");
-  schema.add("method.shape_ratio", T::Number).withUnit("-").defaultsTo("3.0").positive().when(when)
-      .describedAs("shape parameter a_r / h (bar1d takes 1.0)");
+  CollocationKeyDefaults keys;
+  keys.reproducingKernel = false;
+  keys.radialBasis = true;
+  keys.shapeRatio = 1.0;  // bar1d's (the paper's), the one program that runs it
+  addCollocationKeys(schema, keys);
 }
 
 void addSpectralElementOptions(SceneSchema& schema) {

@@ -1,10 +1,13 @@
 #include "wiring/CollocationSpec.hpp"
 
+#include "io/scene/Format.hpp"
+
 #include <string>
 
 #include "numerics/InteriorStability.hpp"
 #include "spectra/MethodLatticeStencils.hpp"
 #include "core/Error.hpp"
+#include "methods/collocation/RadialBasisFunction.hpp"
 #include "methods/collocation/RadialBasisShapeFunctions.hpp"
 #include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
 
@@ -19,6 +22,29 @@ std::string CollocationSpec::describe() const {
   else
     s << "reproducing kernel order " << order << ", method.support_ratio = " << supportRatio;
   return s.str();
+}
+
+void addCollocationKeys(SceneSchema& schema, const CollocationKeyDefaults& defaults) {
+  using T = ValueType;
+  if (defaults.reproducingKernel) {
+    const std::string rk = "name = reproducing_kernel";
+    schema.addChoice("method.name", "reproducing_kernel");
+    // 1 .. 3 here; readCollocationSpec refuses m = 1 with the reason (collocation needs second derivatives).
+    schema.add("method.order", T::Integer).withUnit("-").defaultsTo("2").between(1, 3).when(rk)
+        .describedAs("RK basis order m (2 or 3: collocation needs second derivatives)");
+    KeySpec& support = schema.add("method.support_ratio", T::Number).withUnit("-").positive().when(rk);
+    if (defaults.supportRatio > 0) support.defaultsTo(scene::tomlNumber(defaults.supportRatio));
+    else support.defaultsToNote(defaults.supportNote);
+    support.describedAs("cubic B-spline support radius a / h" +
+                        (defaults.supportAdvice.empty() ? std::string() : " (" + defaults.supportAdvice + ")"));
+  }
+  if (!defaults.radialBasis) return;
+  const std::string rb = "name = radial_basis";
+  schema.addChoice("method.name", "radial_basis");
+  schema.add("method.basis", T::String).defaultsTo("\"inverse_multiquadric\"").oneOf(radialBasisNames()).when(rb)
+      .describedAs("radial basis function");
+  schema.add("method.shape_ratio", T::Number).withUnit("-").defaultsTo(scene::tomlNumber(defaults.shapeRatio)).positive()
+      .when(rb).describedAs("RBF shape parameter a_r / h");
 }
 
 CollocationSpec readCollocationSpec(SceneReader& reader, const std::string& methodName, const std::string& program) {

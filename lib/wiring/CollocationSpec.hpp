@@ -6,6 +6,7 @@
 
 #include "core/Material.hpp"
 #include "io/scene/SceneReader.hpp"
+#include "io/scene/SceneSchema.hpp"
 #include "methods/collocation/ShapeFunctions.hpp"
 #include "particles/ParticleSet.hpp"
 
@@ -27,6 +28,22 @@ struct CollocationSpec {
   // inverse_multiquadric, method.shape_ratio = 1".
   std::string describe() const;
 };
+
+// The one declaration of collocation's [method] keys, beside their reader: method.order and
+// method.support_ratio ("reproducing_kernel"), and/or method.basis and
+// method.shape_ratio ("radial_basis"); the method names join method.name's choices. A study gives its
+// own defaults (bar1d the paper's a / h = 3.3 and a_r / h = 1; plane2d 2.5; lamb3d 2.2, the widest
+// stable 3-D support); 0 leaves a default to `defaultNote` (the catalogue's listing: it depends on
+// the study).
+struct CollocationKeyDefaults {
+  bool reproducingKernel = true;  // method.order, method.support_ratio
+  Real supportRatio = 0;
+  std::string supportNote;        // used when supportRatio is 0
+  std::string supportAdvice;      // appended to method.support_ratio's description (where it grows)
+  bool radialBasis = false;       // method.basis, method.shape_ratio
+  Real shapeRatio = 0;
+};
+void addCollocationKeys(SceneSchema& schema, const CollocationKeyDefaults& defaults);
 
 // The keys of the scene's method: method.order and method.support_ratio for
 // "reproducing_kernel", method.basis and method.shape_ratio for "radial_basis"; another method

@@ -33,21 +33,23 @@ struct PlanReader {
     // method.name: the catalogue's methods that name this study among their programs.
     for (const std::string& name : lambMethods(D))
       if (name != "very_weak_sph") schema.addChoice("method.name", name);
-    // The spectral-element reference: method.order is its GLL order N there.
-    schema.add("method.order", T::Integer).withUnit("-")
-        .defaultsToNote("2 (reproducing_kernel), 4 (spectral_element)").between(1, 8)
+    // RK collocation's keys (their one declaration, lib/wiring/CollocationSpec) with the support the
+    // study measured in each dimension: 2.5 in plane strain (the 2-D interior grows from about 2.77),
+    // 2.2 in 3-D, where m = 2 grows from 2.5 on and 2.2 is the widest stable support of the stability
+    // atlas (docs/studies/stability-atlas.md).
+    CollocationKeyDefaults collocation;
+    collocation.supportRatio = kDimension == 3 ? 2.2 : 2.5;
+    collocation.supportAdvice = kDimension == 3 ? "from 2.5 on the 3-D interior rows have growing modes: refused"
+                                                : "from about 2.77 on the 2-D interior rows have growing modes: refused";
+    addCollocationKeys(schema, collocation);
+    // method.order is the spectral elements' GLL order N too: no one default, and N up to 8 (the RK
+    // range is checked by readCollocationSpec).
+    KeySpec& order = schema.at("method.order");
+    order.defaultLiteral.clear();
+    order.defaultsToNote("2 (reproducing_kernel), 4 (spectral_element)").between(1, 8)
         .when("name = reproducing_kernel or spectral_element")
         .describedAs("RK basis order m (2 or 3: collocation needs second derivatives), or the spectral elements' GLL "
                      "order N (1 .. 8; elements N spacings wide)");
-    // The default support is the one the study measured in each dimension: 2.5 in plane strain (the
-    // 2-D interior grows from about 2.77), 2.2 in 3-D, where m = 2 grows from 2.5 on and 2.2 is the
-    // widest stable support of the stability atlas (docs/studies/stability-atlas.md).
-    schema.add("method.support_ratio", T::Number).withUnit("-").defaultsTo(kDimension == 3 ? "2.2" : "2.5").positive()
-        .when("name = reproducing_kernel")
-        .describedAs(kDimension == 3 ? "cubic B-spline support radius a / h (from 2.5 on the 3-D interior rows have "
-                                       "growing modes: refused)"
-                                     : "cubic B-spline support radius a / h (from about 2.77 on the 2-D interior rows "
-                                       "have growing modes: refused)");
     // The updated-Lagrangian SPH for solids (lamb2d and lamb3d). Only what
     // the linear small-amplitude problem needs to set or to measure: the rest are the method's defaults.
     schema.add("method.ul_amplitude", T::Number).withUnit("-").defaultsTo("1e-4").positive()
