@@ -138,7 +138,7 @@ def lamb2d_ulsph(dx, alpha=1.0):
     """The 2-D Lamb problem by the updated-Lagrangian SPH at small amplitude (lamb2d, method.name =
     updated_lagrangian_sph): cubic spline h/dx 1.3, kernel-gradient correction, Monaghan viscosity
     alpha, leapfrog at the method's own step criteria (it takes no step fraction: 1 here)."""
-    sets = ("method.name=updated_lagrangian_sph", f"method.ul_viscosity_alpha={alpha}", f"geometry.spacing={dx}",
+    sets = ("method.name=updated_lagrangian_sph", f"method.viscosity_alpha={alpha}", f"geometry.spacing={dx}",
             f"study.spacings=[{dx}]", "output.vtk=false")
     return Point("lamb_2d", f"UL-SPH alpha {alpha:g}", "lamb2d", "lamb2d.toml", f"dx={dx:g}", "cubic_spline",
                  "1.3", "leapfrog", 1.0, sets, drop=("study.free_block_lower", "study.free_block_upper"))
@@ -148,7 +148,7 @@ def lamb3d_ulsph(dx, alpha=1.0):
     """The 3-D Lamb problem by the updated-Lagrangian SPH at small amplitude (lamb3d, method.name =
     updated_lagrangian_sph), as lamb2d_ulsph: the scene's 7 x 7 x 7 box with every face free (the
     method has no dashpots; the reflections move its errors by 0.012 at most at dx = 0.25)."""
-    sets = ("method.name=updated_lagrangian_sph", f"method.ul_viscosity_alpha={alpha}", f"geometry.spacing={dx}",
+    sets = ("method.name=updated_lagrangian_sph", f"method.viscosity_alpha={alpha}", f"geometry.spacing={dx}",
             f"study.spacings=[{dx}]", "output.vtk=false")
     return Point("lamb_3d", f"UL-SPH alpha {alpha:g}", "lamb3d", "lamb3d.toml", f"dx={dx:g}", "cubic_spline",
                  "1.3", "leapfrog", 1.0, sets, drop=("study.free_block_lower", "study.free_block_upper"))

@@ -48,7 +48,7 @@
 // lamb2d and lamb3d run it by the updated-Lagrangian SPH for solids too (Li's primer; a
 // large-deformation method run at small amplitude, lib/studies/lamb3d/LambSolidCase.hpp, one
 // implementation for D = 2 and 3): --set method.name=updated_lagrangian_sph
-// [--set method.ul_viscosity_alpha=1] [--set method.ul_viscosity_beta=0] [--set method.ul_gradient_correction=true]
+// [--set method.viscosity_alpha=1] [--set method.viscosity_beta=0] [--set method.kernel_gradient_correction=true]
 // [--set method.ul_tributary_volumes=true] [--set method.ul_amplitude=1e-4] (the defaults shown).
 //   ulsph_<dx>   one case per spacing (the scene's first, which also writes exact.csv)
 // The method's other options keep UpdatedLagrangianSphOptions' defaults (cubic spline, h / dx = 1.3,

@@ -35,12 +35,12 @@ std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const 
   if (asTheLambStudy) {
     // A scene written for a second-order method and run by the UL-SPH: the Lamb study steps it by
     // leapfrog at the method's own criteria (cfl 1) with its linear defaults (alpha 1, corrected
-    // gradients; LambSolidSpec::linearDefaults), or its method.ul_* keys.
+    // gradients; LambSolidSpec::linearDefaults), or the method's own keys where the scene sets them.
     sets.push_back("integrator.name=leapfrog");
     sets.push_back("integrator.cfl=1.0");
     out.notes.push_back("integrator.name = " + integrator + " is a second-order integrator: " + entry->name +
                         " is a first-order system, planned as the Lamb study runs it (leapfrog at its own step "
-                        "criteria, Monaghan alpha 1, corrected kernel gradients, unless method.ul_* say otherwise)");
+                        "criteria, Monaghan alpha 1, corrected kernel gradients, unless the scene's method.viscosity_alpha / method.kernel_gradient_correction say otherwise)");
   }
   SceneReader reader = loadScene(path, sets, catalogueSchema(*entry));
   out.scene = readScene(reader);
@@ -51,8 +51,8 @@ std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const 
     // h / dx = 1.3): the scene's kernel keys are the very weak SPH's.
     out.choice.kernel = "cubic_spline";
     out.choice.smoothingLengthRatio = 1.3;
-    out.choice.viscosityAlpha = root.at_path("method.ul_viscosity_alpha").value<double>().value_or(1.0);
-    out.choice.gradientCorrection = root.at_path("method.ul_gradient_correction").value<bool>().value_or(true);
+    out.choice.viscosityAlpha = root.at_path("method.viscosity_alpha").value<double>().value_or(1.0);
+    out.choice.gradientCorrection = root.at_path("method.kernel_gradient_correction").value<bool>().value_or(true);
   }
   const std::vector<UnsupportedFeature> problems = unsupportedFeatures(out.scene, *entry);
   if (!problems.empty()) throw reader.error(problems.front().key, problems.front().message());

@@ -5,6 +5,19 @@
 
 namespace mfwave {
 
+void addUpdatedLagrangianSphViscosityKeys(SceneSchema& schema, const UpdatedLagrangianSphKeyDefaults& defaults) {
+  using T = ValueType;
+  const std::string when = "name = updated_lagrangian_sph";
+  schema.add("method.viscosity_alpha", T::Number).withUnit("-").defaultsTo(scene::tomlNumber(defaults.viscosityAlpha))
+      .nonNegative().when(when)
+      .describedAs("Monaghan artificial viscosity, linear term alpha (approaching pairs only)" + defaults.alphaNote);
+  schema.add("method.viscosity_beta", T::Number).withUnit("-").defaultsTo(scene::tomlNumber(defaults.viscosityBeta))
+      .nonNegative().when(when).describedAs("Monaghan artificial viscosity, quadratic term beta");
+  schema.add("method.kernel_gradient_correction", T::Boolean)
+      .defaultsTo(defaults.kernelGradientCorrection ? "true" : "false").when(when)
+      .describedAs("correct grad W so linear velocity fields give exact strain rates (also at free surfaces)");
+}
+
 void addUpdatedLagrangianSphKeys(SceneSchema& schema) {
   using T = ValueType;
   const std::string when = "name = updated_lagrangian_sph";
@@ -17,10 +30,7 @@ void addUpdatedLagrangianSphKeys(SceneSchema& schema) {
       .describedAs("stiffened-gas EOS p = c0^2 (rho - rho0) + (gamma - 1) rho e, c0 = sqrt(K / rho0); 1: isothermal");
   schema.add("method.density", T::String).defaultsTo("\"continuity\"").oneOf({"continuity", "summation"}).when(when)
       .describedAs("density from the continuity equation, or by summation (loses support at free surfaces)");
-  schema.add("method.viscosity_alpha", T::Number).withUnit("-").defaultsTo("0.1").nonNegative().when(when)
-      .describedAs("Monaghan artificial viscosity, linear term alpha (approaching pairs only)");
-  schema.add("method.viscosity_beta", T::Number).withUnit("-").defaultsTo("0.0").nonNegative().when(when)
-      .describedAs("Monaghan artificial viscosity, quadratic term beta");
+  addUpdatedLagrangianSphViscosityKeys(schema, {});
   schema.add("method.viscosity_eta", T::Number).withUnit("-").defaultsTo("0.1").positive().when(when)
       .describedAs("eta in mu_ij = h v_ij.x_ij / (|x_ij|^2 + eta^2 h^2): keeps mu finite for close pairs");
   schema.add("method.artificial_stress", T::Boolean).defaultsTo("false").when(when)
@@ -31,8 +41,6 @@ void addUpdatedLagrangianSphKeys(SceneSchema& schema) {
       .describedAs("n in f_ij^n, f_ij = W(r_ij) / W(dp)");
   schema.add("method.artificial_stress_spacing", T::Number).withUnit("m").defaultsTo("0.0").nonNegative().when(when)
       .describedAs("dp in f_ij = W(r_ij) / W(dp); 0: the initial particle spacing (volume^(1/D))");
-  schema.add("method.kernel_gradient_correction", T::Boolean).defaultsTo("false").when(when)
-      .describedAs("correct grad W so linear velocity fields give exact strain rates (also at free surfaces)");
   schema.add("method.xsph", T::Number).withUnit("-").defaultsTo("0.0").between(0, 1).when(when)
       .describedAs("XSPH epsilon: dx/dt = v + epsilon sum_j m_j / rhobar_ij (v_j - v_i) W_ij; 0 is off");
   schema.add("method.neighbour_skin", T::Number).withUnit("-").defaultsTo("0.2").nonNegative().when(when)

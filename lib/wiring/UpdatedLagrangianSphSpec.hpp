@@ -8,6 +8,8 @@
 
 #include "io/scene/SceneReader.hpp"
 #include "io/scene/SceneSchema.hpp"
+
+#include <string>
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSphOptions.hpp"
 
 namespace mfwave {
@@ -16,6 +18,19 @@ namespace mfwave {
 // one SPH method: registering these after addVeryWeakSphKeys throws std::logic_error (method.kernel
 // and method.smoothing_length_ratio are shared names with different defaults).
 void addUpdatedLagrangianSphKeys(SceneSchema& schema);
+
+// The one declaration of the UL-SPH's viscosity and gradient-correction keys (method.viscosity_alpha,
+// method.viscosity_beta, method.kernel_gradient_correction), which addUpdatedLagrangianSphKeys
+// registers with the method's defaults and a study that runs the method among others with its own
+// (the Lamb study: alpha 1, the correction on; its scenes' other [method] keys are the very weak
+// SPH's, so it registers these alone).
+struct UpdatedLagrangianSphKeyDefaults {
+  Real viscosityAlpha = 0.1;
+  Real viscosityBeta = 0;
+  bool kernelGradientCorrection = false;
+  std::string alphaNote;  // appended to method.viscosity_alpha's description
+};
+void addUpdatedLagrangianSphViscosityKeys(SceneSchema& schema, const UpdatedLagrangianSphKeyDefaults& defaults);
 
 // Reads the options when method.name is updated_lagrangian_sph; `material` from the scene's
 // [material]. method.body_force has scene.dimension entries or 3 (then those beyond the dimension

@@ -33,10 +33,10 @@
 //                   rate (eq. 26, shear modulus G) this is plane-strain linear elasticity at small
 //                   amplitude (eps = 1e-6, 1e-4, 1e-2 give the same errors to 1e-4, 1e-4, 1e-2)
 //   masses          tributary areas (face particles half, corners a quarter; method.ul_tributary_volumes)
-//   kernel-gradient correction  on (method.ul_gradient_correction): the velocity gradient and the
+//   kernel-gradient correction  on (method.kernel_gradient_correction): the velocity gradient and the
 //                   stress divergence of a free-surface particle, whose support is cut in half, are
 //                   then first-order consistent
-//   artificial viscosity  alpha = 1, beta = 0 (method.ul_viscosity_alpha / _beta). The problem is
+//   artificial viscosity  alpha = 1, beta = 0 (method.viscosity_alpha / _beta). The problem is
 //                   linear, but without viscosity the free surface rings (with or without the
 //                   correction): after the pulse the load centre oscillates at about 0.2 of the peak
 //                   with a period near 2.2, and a slow spurious surface wave reaches the receiver at

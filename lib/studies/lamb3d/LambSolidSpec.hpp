@@ -10,8 +10,8 @@ namespace mfwave::lamb3d {
 struct LambSolidSpec {
   // UpdatedLagrangianSphOptions' defaults (cubic spline, h / dx = 1.3, continuity density, gamma = 1,
   // no artificial stress, no XSPH, courant 0.3) except the material (the scene's) and what the
-  // driver's keys set: the artificial viscosity (method.ul_viscosity_alpha = 1, _beta = 0) and the
-  // kernel-gradient correction (method.ul_gradient_correction = true). Why: LambSolidCase.hpp.
+  // driver's keys set: the artificial viscosity (method.viscosity_alpha = 1, _beta = 0) and the
+  // kernel-gradient correction (method.kernel_gradient_correction = true). Why: LambSolidCase.hpp.
   UpdatedLagrangianSphOptions options;
   // eps: the traction is eps times the scene's and the recorded probes are divided by eps, so the
   // strains (~ eps) stay in the linear range of the EOS and the Jaumann rate (method.ul_amplitude).
