@@ -46,7 +46,8 @@ std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const 
   out.scene = readScene(reader);
   out.choice = readMethodChoice(reader, *entry, out.scene.geometry.dimension);
   if (asTheLambStudy) {
-    const toml::table& root = reader.root();
+    // What the scene itself sets (the first reader's table holds no defaults filled in).
+    const toml::table& root = first.root();
     // The Lamb study's UL-SPH keeps the method's defaults for what it does not set (cubic spline,
     // h / dx = 1.3): the scene's kernel keys are the very weak SPH's.
     out.choice.kernel = "cubic_spline";

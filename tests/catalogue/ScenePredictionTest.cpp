@@ -135,3 +135,23 @@ TEST(ScenePrediction, AMethodThatCannotRepresentTheSceneIsRefusedByName) {
 
 }  // namespace
 }  // namespace mfwave
+
+namespace mfwave {
+namespace {
+
+TEST(ScenePrediction, TheUlSphOnALambSceneIsPlannedAsTheLambStudyStepsIt) {
+  // The Lamb study runs the UL-SPH at its own criteria 0.3 h / (c_p (1 + 1.2 alpha)) with h = 1.3 dx
+  // and alpha = 1 unless the scene sets method.viscosity_alpha: at dx = 0.25 the run's step is
+  // 0.02559 (lamb2d, measured).
+  const auto read = readCatalogueScene(shipped("lamb2d.toml"), {"method.name=updated_lagrangian_sph"});
+  ASSERT_TRUE(read.has_value());
+  const Prediction p = predictScene(read->scene, read->choice);
+  EXPECT_NEAR(p.stableStep, 0.3 * 1.3 * 0.25 / (std::sqrt(3.0) * 2.2), 1e-12);
+  EXPECT_NEAR(p.stableStep, 0.02559, 1e-5);
+  const auto inviscid =
+      readCatalogueScene(shipped("lamb2d.toml"), {"method.name=updated_lagrangian_sph", "method.viscosity_alpha=0"});
+  EXPECT_NEAR(predictScene(inviscid->scene, inviscid->choice).stableStep, 0.3 * 1.3 * 0.25 / std::sqrt(3.0), 1e-12);
+}
+
+}  // namespace
+}  // namespace mfwave
