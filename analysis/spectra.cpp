@@ -11,6 +11,7 @@
 // Writes spectra.csv, accuracy.csv, anisotropy.csv, simulation.csv, scene.resolved.toml and
 // summary.json; plot with analysis/plot_spectra.py.
 
+#include "catalogue/LatticeRows.hpp"
 #include "numerics/DispersionSpectrum.hpp"
 #include "numerics/InteriorStability.hpp"
 #include "spectra/LatticeMethods.hpp"
@@ -44,7 +45,10 @@ SceneSchema spectraSchema() {
   schema.add("study.methods", ValueType::StringArray).withUnit("-")
       .defaultsTo("[\"finite_difference\", \"vwsph_published\", \"vwsph_consistent\", \"vwsph_galerkin\", \"rkcm\", "
                   "\"rbcm\", \"ulsph\", \"ulsph_corrected\"]")
-      .oneOf(latticeMethodNames()).describedAs("methods (rbcm in 1-D only: its global functions make 2-D/3-D rows costly)");
+      .oneOf(latticeRowChoices())
+      .describedAs("interior rows by row id, or a catalogue method for all its rows (very_weak_sph: its three "
+                   "variants; updated_lagrangian_sph: plain and corrected); rbcm in 1-D only: its global functions "
+                   "make 2-D/3-D rows costly");
   schema.add("study.dimensions", ValueType::NumberArray).withUnit("-").defaultsTo("[1.0, 2.0, 3.0]").between(1, 3)
       .describedAs("lattice dimensions");
   schema.add("study.cells_1d", ValueType::Integer).withUnit("-").defaultsTo("512").atLeast(16).describedAs(
@@ -221,7 +225,7 @@ int main(int argc, char** argv) {
     const auto& opt = cli.options();
     SceneReader reader = loadDriverScene(opt, schema);
     Settings s;
-    s.methods = reader.strings("study.methods");
+    s.methods = latticeRowsOf(reader.strings("study.methods"), "study.methods");  // catalogue names: all their rows
     s.dimensions = reader.wholeNumbers("study.dimensions");
     s.cells[1] = static_cast<int>(reader.integer("study.cells_1d"));
     s.cells[2] = static_cast<int>(reader.integer("study.cells_2d"));

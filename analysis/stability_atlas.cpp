@@ -25,6 +25,7 @@
 // Writes atlas.csv, poisson.csv, integrators.csv, confirmations.csv, jitter.csv, scene.resolved.toml and
 // summary.json; plot with /usr/bin/python3 analysis/plot_stability_atlas.py DIR.
 
+#include "catalogue/LatticeRows.hpp"
 #include "numerics/DispersionSpectrum.hpp"
 #include "integrators/StabilityLimit.hpp"
 #include "numerics/InteriorStability.hpp"
@@ -65,7 +66,9 @@ SceneSchema atlasSchema() {
   schema.add("study.methods", ValueType::StringArray).withUnit("-")
       .defaultsTo("[\"finite_difference\", \"vwsph_published\", \"vwsph_consistent\", \"vwsph_galerkin\", \"rkcm\", "
                   "\"rbcm\", \"ulsph\", \"ulsph_corrected\"]")
-      .oneOf(latticeMethodNames()).describedAs("methods (rbcm in 1-D only)");
+      .oneOf(latticeRowChoices())
+      .describedAs("interior rows by row id, or a catalogue method for all its rows (very_weak_sph: its three "
+                   "variants; updated_lagrangian_sph: plain and corrected); rbcm in 1-D only");
   schema.add("study.dimensions", ValueType::NumberArray).withUnit("-").defaultsTo("[1.0, 2.0, 3.0]").between(1, 3)
       .describedAs("lattice dimensions");
   schema.add("study.cells_1d", ValueType::Integer).withUnit("-").defaultsTo("256").atLeast(16).describedAs(
@@ -400,7 +403,7 @@ int main(int argc, char** argv) {
     const auto& opt = cli.options();
     SceneReader reader = loadDriverScene(opt, schema);
     Settings s;
-    s.methods = reader.strings("study.methods");
+    s.methods = latticeRowsOf(reader.strings("study.methods"), "study.methods");  // catalogue names: all their rows
     s.dimensions = reader.wholeNumbers("study.dimensions");
     s.cells[1] = static_cast<int>(reader.integer("study.cells_1d"));
     s.cells[2] = static_cast<int>(reader.integer("study.cells_2d"));
