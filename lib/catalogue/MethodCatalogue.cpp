@@ -230,14 +230,12 @@ const MethodEntry& methodNamed(const std::string& name, const std::string& key) 
 
 SceneSchema catalogueSchema(const MethodEntry& method) {
   SceneSchema schema = SceneSchema::common();
+  // addChoice keeps each name once: the others first, then the method's own keys (which may add its
+  // name), then its name where its keys do not.
   for (const MethodEntry& m : methodCatalogue())
-    if (m.name != "finite_difference" && schema.find("method.name") && m.name != method.name) {
-      const auto& choices = schema.at("method.name").choices;
-      if (std::find(choices.begin(), choices.end(), m.name) == choices.end()) schema.addChoice("method.name", m.name);
-    }
-  method.addOptions(schema);  // registers its own name as a choice where its keys do
-  const auto& choices = schema.at("method.name").choices;
-  if (std::find(choices.begin(), choices.end(), method.name) == choices.end()) schema.addChoice("method.name", method.name);
+    if (m.name != method.name) schema.addChoice("method.name", m.name);
+  method.addOptions(schema);
+  schema.addChoice("method.name", method.name);
   if (method.supports.firstOrder) useFirstOrderIntegrators(schema);
   return schema;
 }

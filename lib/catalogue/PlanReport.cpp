@@ -35,11 +35,18 @@ std::string faces(std::uint8_t mask, int dimension) {
   return scene::joinNames(names);
 }
 
+// The method's own [method] keys, as its catalogue schema declares them (method.name left out).
+std::vector<KeySpec> methodOptions(const MethodEntry& m) {
+  const SceneSchema schema = catalogueSchema(m);
+  std::vector<KeySpec> options;
+  for (const KeySpec& k : schema.keys())
+    if (k.path.rfind("method.", 0) == 0 && k.path != "method.name") options.push_back(k);
+  return options;
+}
+
 std::string optionList(const MethodEntry& m) {
-  SceneSchema schema = catalogueSchema(m);
   std::ostringstream out;
-  for (const KeySpec& k : schema.keys()) {
-    if (k.path.rfind("method.", 0) != 0 || k.path == "method.name") continue;
+  for (const KeySpec& k : methodOptions(m)) {
     out << "      " << std::left << std::setw(40) << k.path << ' ' << std::setw(8) << typeName(k.type) << ' '
         << std::setw(16) << k.defaultText() << ' ' << k.doc << '\n';
   }
@@ -172,10 +179,8 @@ nlohmann::json catalogueJson() {
     e["stable_step"] = m.stepRule;
     e["programs"] = m.programs;
     nlohmann::json options = nlohmann::json::array();
-    const SceneSchema schema = catalogueSchema(m);
-    for (const KeySpec& k : schema.keys())
-      if (k.path.rfind("method.", 0) == 0 && k.path != "method.name")
-        options.push_back({{"key", k.path}, {"type", typeName(k.type)}, {"default", k.defaultText()}, {"doc", k.doc}});
+    for (const KeySpec& k : methodOptions(m))
+      options.push_back({{"key", k.path}, {"type", typeName(k.type)}, {"default", k.defaultText()}, {"doc", k.doc}});
     e["options"] = options;
     list.push_back(e);
   }

@@ -78,30 +78,24 @@ RowPhaseError wavePhaseError(const MethodLatticeStencil<D>& row, const Vec<D>& w
   const Vec<D> n = wavevector / k;
   const bool scalar = row.acceleration.components == 1;
   const auto solver = branches<D>(row, wavevector);
-  // The branch of the wave: the most aligned with n for P (the scalar's only one), the slowest of the
-  // others for S.
-  Index pAt = 0;
-  Real best = -1;
-  for (Index b = 0; b < solver.eigenvalues().size(); ++b) {
+  // The branch of the wave by LatticeDispersion's rule (polarisationBranch: P the most aligned with n,
+  // S the slowest of the others, the scalar row's only one), on the branches in ascending omega^2.
+  std::vector<LatticeMode> modes;
+  std::vector<Index> order;
+  for (Index b = 0; b < solver.eigenvalues().size(); ++b) order.push_back(b);
+  std::sort(order.begin(), order.end(), [&solver](Index a, Index b) {
+    return solver.eigenvalues()[a].real() < solver.eigenvalues()[b].real();
+  });
+  for (const Index b : order) {
+    LatticeMode m;
+    m.omegaSquared = solver.eigenvalues()[b].real();
     const Eigen::VectorXd v = solver.eigenvectors().col(b).real().normalized();
-    Real alignment = 0;
-    for (int a = 0; a < D && v.size() == D; ++a) alignment += v[a] * n[a];
-    alignment = std::abs(alignment);
-    if (scalar || alignment > best) {
-      best = alignment;
-      pAt = b;
-    }
+    for (int a = 0; a < D && v.size() == D; ++a) m.alignment += v[a] * n[a];
+    m.alignment = std::abs(m.alignment);
+    modes.push_back(m);
   }
-  Index pick = pAt;
-  if (shear && !scalar) {
-    Real slowest = std::numeric_limits<Real>::infinity();
-    for (Index b = 0; b < solver.eigenvalues().size(); ++b)
-      if (b != pAt && solver.eigenvalues()[b].real() < slowest) {
-        slowest = solver.eigenvalues()[b].real();
-        pick = b;
-      }
-  }
-  const Real omega2 = solver.eigenvalues()[pick].real();
+  const Polarisation polarisation = scalar ? Polarisation::Scalar : shear ? Polarisation::S : Polarisation::P;
+  const Real omega2 = modes[polarisationBranch(modes, polarisation)].omegaSquared;
   const Real omegaH = omega2 > 0 ? std::sqrt(omega2) : std::numeric_limits<Real>::quiet_NaN();
   const Real exact = speed * k;
   RowPhaseError out;

@@ -91,7 +91,7 @@ RowFigures latticeRowFigures(const MethodChoice& c, const Material& material, Re
   return f;
 }
 
-const MethodChoice defaultChoice(const MethodEntry& m, int dimension) {
+MethodChoice defaultChoice(const MethodEntry& m, int dimension) {
   MethodChoice c;
   c.method = &m;
   if (!m.variants.empty()) c.variant = m.variants.front();
@@ -117,8 +117,6 @@ std::string MethodChoice::label() const {
 
 MethodChoice readMethodChoice(SceneReader& reader, const MethodEntry& m, int dimension) {
   MethodChoice c = defaultChoice(m, dimension);
-  const SceneSchema& schema = reader.schema();
-  const auto registered = [&schema](const char* key) { return schema.find(key) != nullptr; };
   if (m.name == "very_weak_sph") {
     c.variant = reader.string("method.variant");
     c.kernel = reader.string("method.kernel");
@@ -130,8 +128,8 @@ MethodChoice readMethodChoice(SceneReader& reader, const MethodEntry& m, int dim
     c.courant = reader.number("method.courant");
     c.viscosityAlpha = reader.number("method.viscosity_alpha");
   } else if (m.name == "reproducing_kernel") {
-    if (registered("method.order")) c.order = static_cast<int>(reader.integer("method.order"));
-    if (registered("method.support_ratio") && reader.has("method.support_ratio"))
+    c.order = static_cast<int>(reader.integer("method.order"));
+    if (reader.has("method.support_ratio"))  // its default is the study's: the catalogue's by dimension
       c.supportRatio = reader.number("method.support_ratio");
   } else if (m.name == "radial_basis") {
     c.shapeRatio = reader.number("method.shape_ratio");
@@ -141,7 +139,11 @@ MethodChoice readMethodChoice(SceneReader& reader, const MethodEntry& m, int dim
   return c;
 }
 
-Prediction predictScene(const Scene& scene, const MethodChoice& c, Real spacing) {
+Prediction predictScene(const Scene& scene, const MethodChoice& choice, Real spacing) {
+  return predictScene(scene, choice, spacing, sceneSourceFrequency(scene));
+}
+
+Prediction predictScene(const Scene& scene, const MethodChoice& c, Real spacing, const SourceFrequency& source) {
   const MethodEntry& m = *c.method;
   const GeometrySpec g = spacing > 0 && std::abs(spacing - scene.geometry.spacing) > 1e-12 * spacing
                              ? scene.geometry.withLattice(scene.geometry.lower, scene.geometry.upper, spacing)
@@ -155,7 +157,6 @@ Prediction predictScene(const Scene& scene, const MethodChoice& c, Real spacing)
   const bool ghosts = m.name == "very_weak_sph" && c.variant != "galerkin";
   if (ghosts) p.particles += ghostParticles(g);
 
-  const SourceFrequency source = sceneSourceFrequency(scene);
   p.hasSource = source.found;
   p.frequency = source.frequency;
   p.frequencySource = source.found ? source.source + " (" + source.rule + ")" : "";
@@ -251,6 +252,7 @@ Prediction predictScene(const Scene& scene, const MethodChoice& c, Real spacing)
 
 TargetAnswer cheapestForTarget(const Scene& scene, Real target, double memoryLimitBytes) {
   TargetAnswer answer;
+  const SourceFrequency source = sceneSourceFrequency(scene);  // the same for every candidate
   for (const MethodEntry& m : methodCatalogue()) {
     if (!unsupportedFeatures(scene, m).empty()) continue;
     std::vector<MethodChoice> choices;
@@ -266,7 +268,7 @@ TargetAnswer cheapestForTarget(const Scene& scene, Real target, double memoryLim
         const Real dx = scene.geometry.spacing * std::pow(2.0, -j);
         Prediction p;
         try {
-          p = predictScene(scene, c, dx);
+          p = predictScene(scene, c, dx, source);
         } catch (const InputError&) {
           continue;  // the spacing does not divide the box, or the row cannot be built there
         }

@@ -16,6 +16,7 @@
 // a free surface or a load is not its plane-wave phase error.
 
 #include "catalogue/MethodEntry.hpp"
+#include "catalogue/SourceFrequency.hpp"
 #include "io/scene/Scene.hpp"
 
 #include <string>
@@ -67,6 +68,9 @@ struct Prediction {
 // The prediction for `scene` (its geometry, material, [integrator], sources) by `choice` at
 // `spacing` (the scene's when 0).
 Prediction predictScene(const Scene& scene, const MethodChoice& choice, Real spacing = 0);
+// The same with the sources' dominant frequency already found (sceneSourceFrequency), for a caller
+// that predicts one scene many times.
+Prediction predictScene(const Scene& scene, const MethodChoice& choice, Real spacing, const SourceFrequency& source);
 
 struct TargetAnswer {
   bool found = false;
