@@ -12,6 +12,7 @@
 #include "io/scene/Format.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -71,24 +72,31 @@ Index ghostParticles(const GeometrySpec& g) {
 }
 
 struct RowFigures {
-  Real omegaMax = 0;
   bool growing = false;
-  RowPhaseError phase;
+  TimeStepChoice step;
+  RowPhaseError phase;  // of the sources' waves at step.dt (none without a frequency)
 };
 
+// The method's interior row at spacing dx: whether it grows, the step `stepOf` takes from its
+// omega_max, and the phase error of waves of `frequency` (Hz; 0: none) stepped at that step by `kind`.
 template <int D>
 RowFigures latticeRowFigures(const MethodChoice& c, const Material& material, Real dx, Real frequency,
-                             const IntegratorSpec& integrator, Real* stableStepOut, TimeStepChoice* stepOut) {
+                             const std::function<TimeStepChoice(Real omegaMax)>& stepOf, IntegratorKind kind) {
   const MethodLatticeStencil<D> row =
       latticeMethodStencil<D>(latticeRowName(c), latticeSettings(c, material), dx, "method.name");
   const RowSpectrum spectrum = rowSpectrum<D>(row, dx);
   RowFigures f;
-  f.omegaMax = spectrum.omegaMax;
   f.growing = spectrum.growing;
-  *stableStepOut = centralDifferenceStableStep(spectrum.omegaMax);
-  *stepOut = chooseTimeStep(integrator.stepRule(), *stableStepOut);
-  if (frequency > 0) f.phase = rowPhaseError<D>(row, material, dx, frequency, stepOut->dt, integrator.kind);
+  f.step = stepOf(spectrum.omegaMax);
+  if (frequency > 0) f.phase = rowPhaseError<D>(row, material, dx, frequency, f.step.dt, kind);
   return f;
+}
+
+RowFigures latticeRowFigures(int dimension, const MethodChoice& c, const Material& material, Real dx, Real frequency,
+                             const std::function<TimeStepChoice(Real omegaMax)>& stepOf, IntegratorKind kind) {
+  if (dimension == 1) return latticeRowFigures<1>(c, material, dx, frequency, stepOf, kind);
+  if (dimension == 2) return latticeRowFigures<2>(c, material, dx, frequency, stepOf, kind);
+  return latticeRowFigures<3>(c, material, dx, frequency, stepOf, kind);
 }
 
 MethodChoice defaultChoice(const MethodEntry& m, int dimension) {
@@ -199,29 +207,23 @@ Prediction predictScene(const Scene& scene, const MethodChoice& c, Real spacing,
     p.stableStep = c.courant * c.smoothingLengthRatio * g.spacing / (material.pWaveSpeed() * (1 + 1.2 * c.viscosityAlpha));
     step = chooseTimeStep(scene.integrator.stepRule(), p.stableStep);
     if (p.hasSource) {
-      Real unused = 0;
-      TimeStepChoice unusedStep;
-      RowFigures f;
-      IntegratorSpec leapfrog = scene.integrator;
-      leapfrog.kind = IntegratorKind::Leapfrog;
-      if (d == 1) f = latticeRowFigures<1>(c, material, g.spacing, p.frequency, leapfrog, &unused, &unusedStep);
-      if (d == 2) f = latticeRowFigures<2>(c, material, g.spacing, p.frequency, leapfrog, &unused, &unusedStep);
-      if (d == 3) f = latticeRowFigures<3>(c, material, g.spacing, p.frequency, leapfrog, &unused, &unusedStep);
+      // The row linearised about rest, stepped at the method's own step by leapfrog.
+      const RowFigures f = latticeRowFigures(d, c, material, g.spacing, p.frequency,
+                                             [&step](Real) { return step; }, IntegratorKind::Leapfrog);
       p.growing = f.growing;
-      const Real omega = 2 * kPi * p.frequency;
-      const Real spatial = f.phase.spatial;
-      // Its own step, not the row's: the time error at step.dt on the row's frequency.
-      p.phaseError = std::abs(discreteFrequency(omega * (1 + spatial), step.dt, IntegratorKind::Leapfrog) / omega - 1);
-      p.spatialPhaseError = spatial;
+      p.phaseError = f.phase.total;
+      p.spatialPhaseError = f.phase.spatial;
       p.pointsPerWavelength = f.phase.pointsPerWavelength;
       p.phaseWave = f.phase.wave + " (the row linearised about rest)";
     }
   } else {
-    RowFigures f;
-    const Real nu = p.hasSource ? p.frequency : 0;
-    if (d == 1) f = latticeRowFigures<1>(c, material, g.spacing, nu, scene.integrator, &p.stableStep, &step);
-    if (d == 2) f = latticeRowFigures<2>(c, material, g.spacing, nu, scene.integrator, &p.stableStep, &step);
-    if (d == 3) f = latticeRowFigures<3>(c, material, g.spacing, nu, scene.integrator, &p.stableStep, &step);
+    const TimeStepRule rule = scene.integrator.stepRule();
+    const RowFigures f = latticeRowFigures(
+        d, c, material, g.spacing, p.hasSource ? p.frequency : 0,
+        [&rule](Real omegaMax) { return chooseTimeStep(rule, centralDifferenceStableStep(omegaMax)); },
+        scene.integrator.kind);
+    step = f.step;
+    p.stableStep = f.step.stableStep;
     p.growing = f.growing;
     if (p.hasSource) {
       p.phaseError = f.phase.total;
