@@ -228,6 +228,17 @@ const MethodEntry& methodNamed(const std::string& name, const std::string& key) 
   throw InputError(key, problem);
 }
 
+bool runsIn(const MethodEntry& method, const std::string& program) {
+  return std::find(method.programs.begin(), method.programs.end(), program) != method.programs.end();
+}
+
+std::vector<std::string> methodsRunBy(const std::string& program) {
+  std::vector<std::string> names;
+  for (const MethodEntry& m : methodCatalogue())
+    if (runsIn(m, program)) names.push_back(m.name);
+  return names;
+}
+
 SceneSchema catalogueSchema(const MethodEntry& method) {
   SceneSchema schema = SceneSchema::common();
   // addChoice keeps each name once: the others first, then the method's own keys (which may add its

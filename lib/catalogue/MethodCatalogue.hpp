@@ -24,6 +24,12 @@ const MethodEntry& methodNamed(const std::string& name, const std::string& key =
 // Every method name, in catalogue order.
 std::vector<std::string> methodNames();
 
+// Whether `program` runs the method (its entry names it among its programs).
+bool runsIn(const MethodEntry& method, const std::string& program);
+
+// The catalogue's methods that `program` runs, in catalogue order.
+std::vector<std::string> methodsRunBy(const std::string& program);
+
 // The schema a scene of `method` is read with outside its study: the common sections, every
 // catalogue name as a method.name choice, the first-order integrator names for a first-order
 // method, and the method's own [method] keys.

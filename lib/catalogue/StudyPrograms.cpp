@@ -1,5 +1,6 @@
 #include "catalogue/StudyPrograms.hpp"
 
+#include "catalogue/MethodCatalogue.hpp"
 #include "core/Error.hpp"
 #include "io/scene/LoadScene.hpp"
 
@@ -67,8 +68,9 @@ ProgramChoice programForScene(const std::string& scenePath, const std::vector<st
   const toml::array* loads = root.at_path("load").as_array();
   const bool onePatch = loads && loads->size() == 1 && loads->front().as_table() &&
                         loads->front().as_table()->at_path("type").value<std::string>() == "surface_patch";
-  const bool lambMethod = method == "very_weak_sph" || method == "reproducing_kernel" ||
-                          method == "spectral_element" || method == "updated_lagrangian_sph";
+  // The Lamb study's methods are the catalogue's that name it among their programs.
+  const MethodEntry* entry = findMethod(method);
+  const bool lambMethod = entry && (runsIn(*entry, "lamb2d") || runsIn(*entry, "lamb3d"));
   if (lambMethod && onePatch && (dimension == 2 || dimension == 3))
     return {dimension == 3 ? "lamb3d" : "lamb2d",
             "method.name = " + method + " with one surface_patch load in " + std::to_string(dimension) + "-D"};

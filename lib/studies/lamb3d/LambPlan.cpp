@@ -469,13 +469,7 @@ struct PlanReader {
 
 const char* lambProgram(int dimension) { return dimension == 3 ? "lamb3d" : "lamb2d"; }
 
-std::vector<std::string> lambMethods(int dimension) {
-  std::vector<std::string> names;
-  for (const MethodEntry& m : methodCatalogue())
-    if (std::find(m.programs.begin(), m.programs.end(), lambProgram(dimension)) != m.programs.end())
-      names.push_back(m.name);
-  return names;
-}
+std::vector<std::string> lambMethods(int dimension) { return methodsRunBy(lambProgram(dimension)); }
 
 SceneSchema lambSchema(int dimension) {
   return dimension == 3 ? PlanReader<3>::lambSchema() : PlanReader<2>::lambSchema();
