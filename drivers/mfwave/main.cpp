@@ -39,9 +39,8 @@ namespace fs = std::filesystem;
 // The program `name` beside this one: installed, every program is in bin/; in the build tree the
 // study drivers are in drivers/ and the analysis tools in analysis/.
 std::string programPath(const std::string& name) {
-  std::error_code error;
-  const fs::path self = fs::read_symlink("/proc/self/exe", error);
-  const fs::path here = error ? fs::path(".") : self.parent_path();
+  const std::string self = thisExecutable();
+  const fs::path here = self.empty() ? fs::path(".") : fs::path(self).parent_path();
   for (const fs::path& candidate : {here / name, here.parent_path() / "analysis" / name,
                                     here.parent_path() / "drivers" / name})
     if (fs::exists(candidate)) return candidate.string();

@@ -15,12 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path thisExecutable() {
-  std::error_code error;
-  const fs::path path = fs::read_symlink("/proc/self/exe", error);
-  return error ? fs::path() : path;
-}
-
 // Whether `path` lies inside `folder` (both made absolute and normal first).
 bool isInside(const fs::path& path, const fs::path& folder) {
   if (folder.empty()) return false;
@@ -31,11 +25,17 @@ bool isInside(const fs::path& path, const fs::path& folder) {
 
 }  // namespace
 
+std::string thisExecutable() {
+  std::error_code error;
+  const fs::path path = fs::read_symlink("/proc/self/exe", error);
+  return error ? std::string() : path.string();
+}
+
 std::vector<ShippedDataPlace> shippedDataPlaces(const std::string& executable) {
   std::vector<ShippedDataPlace> places;
   if (const char* dataDir = std::getenv("MFWAVE_DATA_DIR"); dataDir && *dataDir)
     places.push_back({dataDir, "MFWAVE_DATA_DIR"});
-  const fs::path exe = executable.empty() ? thisExecutable() : fs::path(executable);
+  const fs::path exe = executable.empty() ? fs::path(thisExecutable()) : fs::path(executable);
   if (!exe.empty()) {
     places.push_back({(exe.parent_path() / ".." / "share" / "mfwave").lexically_normal().string(),
                       "beside the program " + exe.string()});

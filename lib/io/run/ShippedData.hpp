@@ -18,6 +18,9 @@ struct ShippedDataPlace {
   std::string origin;  // where the place comes from, for messages: "MFWAVE_DATA_DIR", ...
 };
 
+// This process's executable (/proc/self/exe), or "" where it cannot be read.
+std::string thisExecutable();
+
 // The places for a program at `executable` (this process's own, /proc/self/exe, by default).
 std::vector<ShippedDataPlace> shippedDataPlaces(const std::string& executable = {});
 
