@@ -6,6 +6,7 @@
 #include "io/scene/Format.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/SceneError.hpp"
+#include "wiring/UpdatedLagrangianSphSpec.hpp"
 
 #include <toml++/toml.h>
 
@@ -40,7 +41,8 @@ std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const 
     sets.push_back("integrator.cfl=1.0");
     out.notes.push_back("integrator.name = " + integrator + " is a second-order integrator: " + entry->name +
                         " is a first-order system, planned as the Lamb study runs it (leapfrog at its own step "
-                        "criteria, Monaghan alpha 1, corrected kernel gradients, unless the scene's method.viscosity_alpha / method.kernel_gradient_correction say otherwise)");
+                        "criteria, Monaghan alpha 1, corrected kernel gradients, unless the scene's "
+                        "method.viscosity_alpha / method.kernel_gradient_correction say otherwise)");
   }
   SceneReader reader = loadScene(path, sets, catalogueSchema(*entry));
   out.scene = readScene(reader);
@@ -48,12 +50,15 @@ std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const 
   if (asTheLambStudy) {
     // What the scene itself sets (the first reader's table holds no defaults filled in).
     const toml::table& root = first.root();
-    // The Lamb study's UL-SPH keeps the method's defaults for what it does not set (cubic spline,
-    // h / dx = 1.3): the scene's kernel keys are the very weak SPH's.
-    out.choice.kernel = "cubic_spline";
-    out.choice.smoothingLengthRatio = 1.3;
-    out.choice.viscosityAlpha = root.at_path("method.viscosity_alpha").value<double>().value_or(1.0);
-    out.choice.gradientCorrection = root.at_path("method.kernel_gradient_correction").value<bool>().value_or(true);
+    // The Lamb study's UL-SPH keeps the method's defaults for what it does not set (its kernel and
+    // h / dx): the scene's kernel keys are the very weak SPH's.
+    const UpdatedLagrangianSphOptions method;
+    const UpdatedLagrangianSphKeyDefaults study = smallAmplitudeWaveDefaults();
+    out.choice.kernel = method.kernel;
+    out.choice.smoothingLengthRatio = method.smoothingLengthRatio;
+    out.choice.viscosityAlpha = root.at_path("method.viscosity_alpha").value<double>().value_or(study.viscosityAlpha);
+    out.choice.gradientCorrection =
+        root.at_path("method.kernel_gradient_correction").value<bool>().value_or(study.kernelGradientCorrection);
   }
   const std::vector<UnsupportedFeature> problems = unsupportedFeatures(out.scene, *entry);
   if (!problems.empty()) throw reader.error(problems.front().key, problems.front().message());

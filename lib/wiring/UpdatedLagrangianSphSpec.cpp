@@ -18,6 +18,14 @@ void addUpdatedLagrangianSphViscosityKeys(SceneSchema& schema, const UpdatedLagr
       .describedAs("correct grad W so linear velocity fields give exact strain rates (also at free surfaces)");
 }
 
+UpdatedLagrangianSphKeyDefaults smallAmplitudeWaveDefaults() {
+  UpdatedLagrangianSphKeyDefaults d;
+  d.viscosityAlpha = 1;
+  d.kernelGradientCorrection = true;
+  d.alphaNote = "; 1 in the Lamb study, measured best on lamb2d.toml (0 and 0.1 ring, 2 is no better)";
+  return d;
+}
+
 void addUpdatedLagrangianSphKeys(SceneSchema& schema) {
   using T = ValueType;
   const std::string when = "name = updated_lagrangian_sph";

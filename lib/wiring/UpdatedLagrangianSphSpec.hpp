@@ -32,6 +32,11 @@ struct UpdatedLagrangianSphKeyDefaults {
 };
 void addUpdatedLagrangianSphViscosityKeys(SceneSchema& schema, const UpdatedLagrangianSphKeyDefaults& defaults);
 
+// The defaults for elastic waves at small amplitude (the Lamb study, and mfwave plan of a scene run as
+// it runs it): alpha 1, measured best on lamb2d.toml at every spacing (it damps the particle-scale
+// ringing of the free surface; 0 and 0.1 ring, 2 is no better), and the kernel-gradient correction on.
+UpdatedLagrangianSphKeyDefaults smallAmplitudeWaveDefaults();
+
 // Reads the options when method.name is updated_lagrangian_sph; `material` from the scene's
 // [material]. method.body_force has scene.dimension entries or 3 (then those beyond the dimension
 // must be 0); absent, it is zero.

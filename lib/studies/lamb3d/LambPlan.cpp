@@ -60,11 +60,7 @@ struct PlanReader {
     // The method's own viscosity and gradient-correction keys, with the defaults this problem needs:
     // alpha 1 (measured best on lamb2d.toml at every spacing: it damps the particle-scale ringing of
     // the free surface; 0 and 0.1 ring, 2 is no better) and the kernel-gradient correction on.
-    UpdatedLagrangianSphKeyDefaults solid;
-    solid.viscosityAlpha = 1;
-    solid.kernelGradientCorrection = true;
-    solid.alphaNote = "; 1 in the Lamb study, measured best on lamb2d.toml (0 and 0.1 ring, 2 is no better)";
-    addUpdatedLagrangianSphViscosityKeys(schema, solid);
+    addUpdatedLagrangianSphViscosityKeys(schema, smallAmplitudeWaveDefaults());
     schema.add("method.ul_tributary_volumes", T::Boolean).defaultsTo("true").when("name = updated_lagrangian_sph")
         .describedAs("face particles carry their tributary area (2-D: dx^2 / 2, corners dx^2 / 4) or volume (3-D: faces "
                      "dx^3 / 2, edges / 4, corners / 8); false: dx^D");

@@ -4,6 +4,7 @@
 // problem.
 
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSphOptions.hpp"
+#include "wiring/UpdatedLagrangianSphSpec.hpp"
 
 namespace mfwave::lamb3d {
 
@@ -26,9 +27,10 @@ struct LambSolidSpec {
   static LambSolidSpec linearDefaults(const Material& material) {
     LambSolidSpec spec;
     spec.options.material = material;
-    spec.options.viscosity.alpha = 1;
-    spec.options.viscosity.beta = 0;
-    spec.options.kernelGradientCorrection = true;
+    const UpdatedLagrangianSphKeyDefaults keys = smallAmplitudeWaveDefaults();  // the keys' defaults, declared once
+    spec.options.viscosity.alpha = keys.viscosityAlpha;
+    spec.options.viscosity.beta = keys.viscosityBeta;
+    spec.options.kernelGradientCorrection = keys.kernelGradientCorrection;
     return spec;
   }
 };
