@@ -1,6 +1,7 @@
 #include "catalogue/PlanReport.hpp"
 
 #include "io/scene/Faces.hpp"
+#include "particles/BoxFace.hpp"
 #include "io/scene/Format.hpp"
 
 #include <cmath>
@@ -31,7 +32,7 @@ std::string seconds(double s) {
 std::string faces(std::uint8_t mask, int dimension) {
   std::vector<std::string> names;
   for (int f = 0; f < 2 * dimension; ++f)
-    if (mask & (1u << f)) names.push_back(faceName(f));
+    if (mask & faceBit(f)) names.push_back(faceName(f));
   return scene::joinNames(names);
 }
 
@@ -78,11 +79,11 @@ void printResolvedModel(std::ostream& out, const Scene& scene, const MethodChoic
     out << "boundary     " << faces(b.faceMask, g.dimension) << ": " << boundaryTypeName(b.type) << '\n';
     named |= b.faceMask;
   }
-  std::uint8_t all = static_cast<std::uint8_t>((1u << (2 * g.dimension)) - 1);
+  const std::uint8_t all = allFaces(g.dimension);
   std::uint8_t periodic = 0;
   for (int a = 0; a < g.dimension; ++a)
     if (a < static_cast<int>(g.periodic.size()) && g.periodic[static_cast<std::size_t>(a)])
-      periodic |= static_cast<std::uint8_t>(3u << (2 * a));
+      periodic |= static_cast<std::uint8_t>(faceBit(2 * a) | faceBit(2 * a + 1));
   if (const std::uint8_t free = static_cast<std::uint8_t>(all & ~named & ~periodic))
     out << "boundary     " << faces(free, g.dimension) << ": free (not named)\n";
   for (const LoadSpec& l : scene.loads) {

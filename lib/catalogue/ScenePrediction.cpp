@@ -8,6 +8,7 @@
 #include "catalogue/SceneSupport.hpp"
 #include "catalogue/SourceFrequency.hpp"
 #include "core/Error.hpp"
+#include "particles/BoxFace.hpp"
 #include "integrators/TimeStep.hpp"
 #include "io/scene/Format.hpp"
 
@@ -64,8 +65,8 @@ Index ghostParticles(const GeometrySpec& g) {
   Index grown = 1;
   for (int a = 0; a < g.dimension; ++a) {
     Index n = g.intervals[static_cast<std::size_t>(a)] + 1;
-    if (g.ghostFaces & (1u << (2 * a))) n += g.ghostLayers;
-    if (g.ghostFaces & (1u << (2 * a + 1))) n += g.ghostLayers;
+    if (g.ghostFaces & faceBit(2 * a)) n += g.ghostLayers;
+    if (g.ghostFaces & faceBit(2 * a + 1)) n += g.ghostLayers;
     grown *= n;
   }
   return grown - g.particleCount();

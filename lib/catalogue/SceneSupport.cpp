@@ -20,13 +20,17 @@ bool contains(const std::vector<T>& list, const T& value) {
   return std::find(list.begin(), list.end(), value) != list.end();
 }
 
-// The catalogue's methods for which `supports` holds.
-template <typename Predicate>
-std::vector<std::string> methodsWhere(Predicate supports) {
-  std::vector<std::string> names;
+// Adds the feature `value` of the scene at `key` to `out` unless `method` lists it in its `field`
+// (or, for a boundary, has a stand-in for it), with the catalogue's methods that do list it.
+template <typename T>
+void requireSupport(std::vector<UnsupportedFeature>& out, const MethodEntry& method,
+                    std::vector<T> MethodSupport::*field, const T& value, std::string key, std::string feature,
+                    bool standIn = false) {
+  if (contains(method.supports.*field, value) || standIn) return;
+  std::vector<std::string> supportedBy;
   for (const MethodEntry& m : methodCatalogue())
-    if (supports(m.supports)) names.push_back(m.name);
-  return names;
+    if (contains(m.supports.*field, value)) supportedBy.push_back(m.name);
+  out.push_back({std::move(key), std::move(feature), supportedBy, method.name});
 }
 
 }  // namespace
@@ -38,33 +42,20 @@ std::string UnsupportedFeature::message() const {
 
 std::vector<UnsupportedFeature> unsupportedFeatures(const Scene& scene, const MethodEntry& method) {
   std::vector<UnsupportedFeature> out;
-  const MethodSupport& s = method.supports;
   const int d = scene.geometry.dimension;
-  if (!contains(s.dimensions, d))
-    out.push_back({"scene.dimension", std::to_string(d) + "-D scenes",
-                   methodsWhere([d](const MethodSupport& m) { return contains(m.dimensions, d); }), ""});
-  const std::string& shape = scene.geometry.shape;
-  if (!contains(s.shapes, shape))
-    out.push_back({"geometry.shape", "the shape '" + shape + "'",
-                   methodsWhere([&shape](const MethodSupport& m) { return contains(m.shapes, shape); }), ""});
+  requireSupport(out, method, &MethodSupport::dimensions, d, "scene.dimension", std::to_string(d) + "-D scenes");
+  requireSupport(out, method, &MethodSupport::shapes, scene.geometry.shape, "geometry.shape",
+                 "the shape '" + scene.geometry.shape + "'");
   for (std::size_t i = 0; i < scene.boundaries.size(); ++i) {
     const BoundaryType type = scene.boundaries[i].type;
-    if (!contains(s.boundaries, type) && !standInFor(s, type))
-      out.push_back({"boundary[" + std::to_string(i) + "].type", boundaryTypeName(type) + " boundaries",
-                     methodsWhere([type](const MethodSupport& m) { return contains(m.boundaries, type); }), ""});
+    requireSupport(out, method, &MethodSupport::boundaries, type, "boundary[" + std::to_string(i) + "].type",
+                   boundaryTypeName(type) + " boundaries", standInFor(method.supports, type) != nullptr);
   }
-  for (std::size_t i = 0; i < scene.loads.size(); ++i) {
-    const LoadType type = scene.loads[i].type;
-    if (!contains(s.loads, type))
-      out.push_back({"load[" + std::to_string(i) + "].type", loadTypeName(type) + " loads",
-                     methodsWhere([type](const MethodSupport& m) { return contains(m.loads, type); }), ""});
-  }
-  const std::string& integrator = scene.integrator.name;
-  if (!contains(s.integrators, integrator))
-    out.push_back({"integrator.name", "the integrator '" + integrator + "'",
-                   methodsWhere([&integrator](const MethodSupport& m) { return contains(m.integrators, integrator); }),
-                   ""});
-  for (UnsupportedFeature& f : out) f.method = method.name;
+  for (std::size_t i = 0; i < scene.loads.size(); ++i)
+    requireSupport(out, method, &MethodSupport::loads, scene.loads[i].type, "load[" + std::to_string(i) + "].type",
+                   loadTypeName(scene.loads[i].type) + " loads");
+  requireSupport(out, method, &MethodSupport::integrators, scene.integrator.name, "integrator.name",
+                 "the integrator '" + scene.integrator.name + "'");
   return out;
 }
 

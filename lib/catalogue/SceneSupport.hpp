@@ -17,8 +17,8 @@ struct UnsupportedFeature {
   std::string key;      // the scene key, e.g. "load[0].type"
   std::string feature;  // what it asks for, e.g. "point_force loads"
   std::vector<std::string> supportedBy;  // the catalogue's methods that support it
+  std::string method;                    // the method that does not
   std::string message() const;           // "<method> does not support point_force loads; supported by: ..."
-  std::string method;
 };
 
 // Every feature of `scene` that `method` does not support (empty: it can run the scene).
