@@ -1,8 +1,9 @@
 #include "catalogue/SourceFrequency.hpp"
 
+#include "numerics/FourierTransform.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <vector>
 
 namespace mfwave {
@@ -18,21 +19,16 @@ Real dominantFrequency(const TimeFunction& f, Real endTime, std::string* rule) {
   const Real span = std::isfinite(quiet) ? std::min(std::max(quiet, Real(0)), endTime) : endTime;
   if (!(span > 0)) return 0;
   // Samples of f, its rate by differences, and |R(nu)| on nu = j / (8 span) up to the sampling's
-  // Nyquist frequency / 4 (8x zero padding resolves the peak).
-  const int n = 2048;
+  // Nyquist frequency / 4: the FFT of the rate padded with zeros to 8 n points resolves the peak.
+  const int n = 2048, padded = 8 * n;
   const Real dt = span / n;
-  std::vector<Real> rate(n);
+  ComplexVector rate(static_cast<std::size_t>(padded), 0);
   for (int i = 0; i < n; ++i) rate[static_cast<std::size_t>(i)] = (f((i + 1) * dt) - f(i * dt)) / dt;
+  forwardFourierTransform(rate, 1, padded);
   const Real dnu = 1 / (8 * span);
   const int frequencies = static_cast<int>(std::floor(0.25 / (2 * dt) / dnu));
   std::vector<Real> amplitude(static_cast<std::size_t>(frequencies + 1));
-  for (int j = 0; j <= frequencies; ++j) {
-    const Real nu = j * dnu;
-    std::complex<Real> sum = 0;
-    for (int i = 0; i < n; ++i)
-      sum += rate[static_cast<std::size_t>(i)] * std::polar(Real(1), -2 * kPi * nu * (i + 0.5) * dt);
-    amplitude[static_cast<std::size_t>(j)] = std::abs(sum) * dt;
-  }
+  for (std::size_t j = 0; j < amplitude.size(); ++j) amplitude[j] = std::abs(rate[j]) * dt;
   const auto peak = std::max_element(amplitude.begin(), amplitude.end());
   const std::size_t at = static_cast<std::size_t>(peak - amplitude.begin());
   if (at > 0) {
