@@ -77,7 +77,7 @@ std::vector<MethodEntry> makeCatalogue() {
     m.variants = {"galerkin", "consistent", "published"};
     m.supports = {{2, 3},
                   {"rectangle", "block"},
-                  {B::Free, B::Fixed, B::Traction, B::Displacement, B::Transmitting},
+                  {B::Free, B::Fixed, B::Traction, B::Displacement, B::Transmitting, B::Symmetry},
                   {L::SurfacePatch},
                   secondOrder};
     m.addOptions = addVeryWeakSphKeys;

@@ -25,6 +25,11 @@ void checkVeryWeakSphScene(const SceneReader& reader, const Scene& scene, const 
   } catch (const InputError& e) {
     reader.fail(e.key(), e.problem());  // the method's refusal, located in the scene
   }
+  bool periodic = false;
+  for (bool p : scene.geometry.periodic) periodic = periodic || p;
+  if (facesWith(scene.boundaries, BoundaryType::Symmetry) != 0 && (spec.operatorStorage == "sparse" || periodic))
+    reader.fail("method.operator", "symmetry planes are folded into the lattice stencils; the sparse assembly has "
+                                   "no image to fold (use \"auto\" or \"lattice\", on a box without periodic axes)");
   if (scene.integrator.kind == IntegratorKind::CentralDifference) return;
   if (spec.smoothingRate > 0)
     reader.fail("method.smoothing_rate", "conservative smoothing is applied by the central_difference "
@@ -44,6 +49,9 @@ VeryWeakSphProblemSettings<D> veryWeakSphProblemSettings(const Scene& scene, con
   s.upper = vectorOf<D>(geometry.upper);
   s.spacing = geometry.spacing;
   s.dashpotLumping = spec.dashpotLumping;
+  // Symmetry planes describe the solid (one side of a mirror), not a condition on it: a case
+  // without boundaries keeps them.
+  s.symmetryFaces = facesWith(scene.boundaries, BoundaryType::Symmetry);
   if (withBoundaries) {
     s.transmittingFaces = facesWith(scene.boundaries, BoundaryType::Transmitting);
     for (const BoundarySpec& b : scene.boundaries) {

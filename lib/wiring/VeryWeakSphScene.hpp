@@ -14,7 +14,7 @@ namespace mfwave {
 // surface patches (InputError "load[i].type"), the smoothing filter or prescribed faces with an
 // integrator other than central_difference (InputError "method.smoothing_rate" / "boundary"),
 // deconvolution or smoothing with the galerkin variant ("method.deconvolution" /
-// "method.smoothing_rate"). `spec` is the case's (its smoothing rate may differ from the scene's).
+// "method.smoothing_rate"), symmetry planes without the lattice storage ("method.operator"). `spec` is the case's (its smoothing rate may differ from the scene's).
 // Called while the scene is read: the scene's own refusals go through `reader`, so they name the
 // file and line of the key.
 void checkVeryWeakSphScene(const SceneReader& reader, const Scene& scene, const VeryWeakSphSpec& spec,

@@ -117,7 +117,7 @@ TEST(VeryWeakSphProbes, ReportTheStateOrItsDeconvolutionOncePerTime) {
   const Index probeParticle = 12;
   const std::vector<Probe> probes{{"a", probeParticle, 1, ProbeQuantity::Velocity},
                                   {"b", probeParticle, 0, ProbeQuantity::Displacement}};
-  const ParticleMatrix rows = problem.deconvolutionRows({probeParticle, probeParticle});
+  const ParticleMatrix rows = problem.deconvolutionRows({probeParticle, probeParticle}, {1, 0});
   ASSERT_EQ(rows.rows(), 2);
   VeryWeakSphProbes sharp(probes, 2, &rows);
   VeryWeakSphProbes plain(probes, 2, nullptr);

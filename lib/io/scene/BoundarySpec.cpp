@@ -5,6 +5,7 @@
 #include "io/scene/TimeFunctionSpec.hpp"
 #include "particles/BoxFace.hpp"
 
+#include <algorithm>
 #include <array>
 
 namespace mfwave {
@@ -16,6 +17,7 @@ std::string boundaryTypeName(BoundaryType type) {
     case BoundaryType::Traction: return "traction";
     case BoundaryType::Displacement: return "displacement";
     case BoundaryType::Transmitting: return "transmitting";
+    case BoundaryType::Symmetry: return "symmetry";
   }
   return "?";
 }
@@ -49,7 +51,7 @@ std::vector<BoundarySpec> readBoundaries(SceneReader& reader, const GeometrySpec
     b.faceMask = faceMaskOf(b.faces);
     const std::string type = reader.string(key("type"));
     for (const BoundaryType t : {BoundaryType::Free, BoundaryType::Fixed, BoundaryType::Traction,
-                                 BoundaryType::Displacement, BoundaryType::Transmitting})
+                                 BoundaryType::Displacement, BoundaryType::Transmitting, BoundaryType::Symmetry})
       if (type == boundaryTypeName(t)) b.type = t;
     if (b.type == BoundaryType::Traction) {
       b.traction = reader.numbers(key("traction"), d);
@@ -58,7 +60,43 @@ std::vector<BoundarySpec> readBoundaries(SceneReader& reader, const GeometrySpec
       b.value = reader.numbers(key("value"), d, std::vector<Real>(d, 0.0));
       b.timeFunction = readTimeFunction(reader, key("time_function"), false);
     }
+    if (b.type == BoundaryType::Symmetry) {
+      // A mirror on both faces of one axis repeats the solid without end.
+      for (std::size_t j = 0; j < b.faces.size(); ++j) {
+        const int other = b.faces[j] ^ 1;
+        const std::string& claimed = owner[static_cast<std::size_t>(other)];
+        bool otherSymmetric = std::find(b.faces.begin(), b.faces.end(), other) != b.faces.end();
+        for (const BoundarySpec& earlier : boundaries)
+          otherSymmetric = otherSymmetric || (earlier.type == BoundaryType::Symmetry && (earlier.faceMask & faceBit(other)) != 0);
+        if (otherSymmetric)
+          reader.fail(scene::indexPath(key("faces"), j),
+                      "faces '" + faceName(b.faces[j]) + "' and '" + faceName(other) + "' are both symmetry planes (" +
+                          (claimed.empty() ? entry : claimed) + "): mirrors on both sides repeat the solid without "
+                          "end; at most one symmetry face per axis");
+      }
+    }
     boundaries.push_back(std::move(b));
+  }
+  // Symmetry planes mirror the loads too: a condition on a face meeting a plane with a component
+  // along the plane's normal is mirrored with that component reversed, which the methods do not
+  // model on whole faces (surface-patch loads may: their images are reflected).
+  const std::uint8_t symmetry = facesWith(boundaries, BoundaryType::Symmetry);
+  for (std::size_t i = 0; i < boundaries.size(); ++i) {
+    const BoundarySpec& b = boundaries[i];
+    const std::vector<Real>& values = b.type == BoundaryType::Traction ? b.traction : b.value;
+    if (b.type != BoundaryType::Traction && b.type != BoundaryType::Displacement) continue;
+    for (int axis = 0; axis < dimension; ++axis) {
+      if ((symmetry & (faceBit(2 * axis) | faceBit(2 * axis + 1))) == 0) continue;
+      if (values[static_cast<std::size_t>(axis)] == 0) continue;
+      for (const int face : b.faces)
+        if (faceAxis(face) != axis)
+          reader.fail(scene::indexPath(scene::childPath(scene::indexPath("boundary", i),
+                                                        b.type == BoundaryType::Traction ? "traction" : "value"),
+                                       static_cast<std::size_t>(axis)),
+                      std::string("must be 0: face '") + faceName(face) + "' meets the symmetry plane normal to " +
+                          axisName(axis) + ", where a symmetric field has no " + axisName(axis) +
+                          " component (use a surface_patch load, whose image is mirrored)");
+    }
   }
   return boundaries;
 }

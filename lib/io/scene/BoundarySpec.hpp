@@ -1,6 +1,8 @@
 #pragma once
 // [[boundary]]: conditions on box faces. Each face is in at most one entry; faces not named are
-// free; faces of periodic axes take no condition.
+// free; faces of periodic axes take no condition. A "symmetry" face is a mirror plane (zero normal
+// displacement, zero tangential traction): the box is one side of a solid symmetric about it, loaded
+// symmetrically (at most one symmetry face per axis).
 
 #include "core/TimeFunction.hpp"
 #include "io/scene/GeometrySpec.hpp"
@@ -12,9 +14,9 @@
 
 namespace mfwave {
 
-enum class BoundaryType { Free, Fixed, Traction, Displacement, Transmitting };
+enum class BoundaryType { Free, Fixed, Traction, Displacement, Transmitting, Symmetry };
 
-// "free", "fixed", "traction", "displacement", "transmitting".
+// "free", "fixed", "traction", "displacement", "transmitting", "symmetry".
 std::string boundaryTypeName(BoundaryType type);
 
 struct BoundarySpec {

@@ -84,8 +84,9 @@ SceneSchema SceneSchema::common() {
   s.add("boundary", T::TableArray).describedAs("boundary conditions on box faces; faces not named are free");
   s.add("boundary[].faces", T::StringArray).required()
       .describedAs("faces of this condition: -x, +x, -y, +y, -z, +z; each face in at most one entry");
-  s.add("boundary[].type", T::String).required().oneOf({"free", "fixed", "traction", "displacement", "transmitting"})
-      .describedAs("kind of condition");
+  s.add("boundary[].type", T::String).required().oneOf({"free", "fixed", "traction", "displacement", "transmitting", "symmetry"})
+      .describedAs("kind of condition; symmetry: a mirror plane (zero normal displacement, zero tangential "
+                   "traction), the box one side of a solid and load symmetric about it");
   s.add("boundary[].traction", T::NumberArray).withUnit("Pa").required().when("type = traction")
       .describedAs("traction vector, one entry per axis, scaled by time_function");
   s.add("boundary[].value", T::NumberArray).withUnit("m").defaultsToNote("zeros").when("type = displacement")

@@ -1,6 +1,7 @@
 #include "methods/very_weak_sph/VeryWeakSphLattice.hpp"
 
 #include "core/Error.hpp"
+#include "lattice/SymmetryFold.hpp"
 #include "particles/GhostLayers.hpp"
 #include "particles/Lattice.hpp"
 
@@ -15,18 +16,38 @@ constexpr Real kTolerance = 1e-12;
 
 // The settings on the box of `nodes` from the same lower corner, without the loads (the face
 // tractions are read off its traction matrix, patches are not per row type) and prescribed faces.
+// With symmetry planes the box is the whole (mirrored) one of that modelled box (SymmetryFold.hpp):
+// its far faces carry the modelled box's far faces' conditions, and the planes are interior.
 template <int D>
 VeryWeakSphProblemSettings<D> onBox(const VeryWeakSphProblemSettings<D>& settings, const std::array<Index, D>& nodes) {
+  const SymmetryFold<D> fold(nodes, settings.symmetryFaces);
+  const std::array<Index, D> shift = fold.wholeOriginShift();
   VeryWeakSphProblemSettings<D> s = settings;
   s.storage = OperatorStorage::Sparse;
-  for (int a = 0; a < D; ++a)
-    s.upper[a] = settings.lower[a] + static_cast<Real>(nodes[static_cast<std::size_t>(a)] - 1) * settings.spacing;
+  for (int a = 0; a < D; ++a) {
+    const auto k = static_cast<std::size_t>(a);
+    s.lower[a] = settings.lower[a] + static_cast<Real>(shift[k]) * settings.spacing;
+    s.upper[a] = s.lower[a] + static_cast<Real>(fold.wholeNodes()[k] - 1) * settings.spacing;
+  }
+  s.transmittingFaces = mirroredFaceMask(settings.transmittingFaces, settings.symmetryFaces, D);
+  s.ghostFaces = mirroredFaceMask(settings.ghostFaces, settings.symmetryFaces, D);
+  s.symmetryFaces = 0;
   s.faceTractions.clear();
   s.patches.clear();
   s.prescribed.clear();
   s.keepOperatorMatrix = false;
   return s;
 }
+
+// An assembly on the whole box of onBox as the modelled lattice's operators: unchanged without
+// symmetry planes, else their Galerkin restriction (forces) or fold (maps of the field).
+template <int D>
+struct OnModelled {
+  SymmetryFold<D> fold;
+  SparseMatrix operatorOf(const SparseMatrix& whole) const { return fold.active() ? fold.restrictOperator(whole) : whole; }
+  SparseMatrix mapOf(const SparseMatrix& whole) const { return fold.active() ? fold.foldMap(whole) : whole; }
+  Vector forceOf(const Vector& whole) const { return fold.active() ? fold.restrictForce(whole) : whole; }
+};
 
 template <int D>
 ParticleSet<D> particlesOf(const VeryWeakSphProblemSettings<D>& s) {
@@ -125,18 +146,21 @@ VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& 
     const VeryWeakSphProblemSettings<D> compactSettings = onBox<D>(settings, types.compactNodes());
     VeryWeakSphProblem<D> compact(particlesOf<D>(compactSettings), compactSettings);
     LinearSecondOrderSystem& system = compact.sparseSystem();
+    const OnModelled<D> modelled{SymmetryFold<D>(types.compactNodes(), settings.symmetryFaces)};
+    const auto compactWholeNodes = static_cast<Index>(system.mass().rows() / D);
     VeryWeakSphStencils<D> result;
-    result.mass = LatticeStencils<D>(types, system.mass());
-    result.stiffness = LatticeStencils<D>(types, system.stiffness());
-    if (system.hasDamping()) result.damping = LatticeStencils<D>(types, system.damping());
-    if (compact.smoothing()) result.smoothing = LatticeStencils<D>(types, onEveryComponent<D>(compact.smoothing()->matrix()));
+    result.mass = LatticeStencils<D>(types, modelled.operatorOf(system.mass()));
+    result.stiffness = LatticeStencils<D>(types, modelled.operatorOf(system.stiffness()));
+    if (system.hasDamping()) result.damping = LatticeStencils<D>(types, modelled.operatorOf(system.damping()));
+    if (compact.smoothing())
+      result.smoothing = LatticeStencils<D>(types, modelled.mapOf(onEveryComponent<D>(compact.smoothing()->matrix())));
     if (compact.deconvolution())
-      result.deconvolution = LatticeStencils<D>(types, onEveryComponent<D>(*compact.deconvolution()));
+      result.deconvolution = LatticeStencils<D>(types, modelled.mapOf(onEveryComponent<D>(*compact.deconvolution())));
     result.patchFaces.resize(2 * D);
     for (int face = 0; face < 2 * D; ++face)
       if (needsPatchFace<D>(settings, face))
-        result.patchFaces[static_cast<std::size_t>(face)] =
-            LatticeStencils<D>(types, faceTractionGather<D>(compact.data(), face, types.typeCount()));
+        result.patchFaces[static_cast<std::size_t>(face)] = LatticeStencils<D>(
+            types, modelled.operatorOf(faceTractionGather<D>(compact.data(), face, compactWholeNodes)));
 
     // The check: an assembly two nodes longer per axis (as far as the lattice goes) must be the
     // stencils' rows. When the compact box is the whole box there is nothing to check.
@@ -150,22 +174,25 @@ VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& 
       const VeryWeakSphProblemSettings<D> checkSettings = onBox<D>(settings, checkNodes);
       VeryWeakSphProblem<D> check(particlesOf<D>(checkSettings), checkSettings);
       LinearSecondOrderSystem& checked = check.sparseSystem();
-      result.mismatch = std::max(result.stiffness.on(checkTypes).mismatch(checked.stiffness()),
-                                 result.mass.on(checkTypes).mismatch(checked.mass()));
+      const OnModelled<D> checkModelled{SymmetryFold<D>(checkNodes, settings.symmetryFaces)};
+      const auto checkWholeNodes = static_cast<Index>(checked.mass().rows() / D);
+      result.mismatch = std::max(result.stiffness.on(checkTypes).mismatch(checkModelled.operatorOf(checked.stiffness())),
+                                 result.mass.on(checkTypes).mismatch(checkModelled.operatorOf(checked.mass())));
       if (compact.smoothing())
-        result.mismatch = std::max(result.mismatch, result.smoothing.on(checkTypes).mismatch(
-                                                        onEveryComponent<D>(check.smoothing()->matrix())));
+        result.mismatch = std::max(result.mismatch, result.smoothing.on(checkTypes).mismatch(checkModelled.mapOf(
+                                                        onEveryComponent<D>(check.smoothing()->matrix()))));
       if (compact.deconvolution())
         result.mismatch = std::max(result.mismatch, result.deconvolution.on(checkTypes).mismatch(
-                                                        onEveryComponent<D>(*check.deconvolution())));
+                                                        checkModelled.mapOf(onEveryComponent<D>(*check.deconvolution()))));
       for (int face = 0; face < 2 * D; ++face)
         if (needsPatchFace<D>(settings, face))
           result.mismatch = std::max(result.mismatch,
                                      result.patchFaces[static_cast<std::size_t>(face)].on(checkTypes).mismatch(
-                                         faceTractionGather<D>(check.data(), face, checkTypes.nodeCount())));
+                                         checkModelled.operatorOf(faceTractionGather<D>(check.data(), face, checkWholeNodes))));
       if (checked.hasDamping() != system.hasDamping()) result.mismatch = std::numeric_limits<Real>::infinity();
       else if (system.hasDamping())
-        result.mismatch = std::max(result.mismatch, result.damping.on(checkTypes).mismatch(checked.damping()));
+        result.mismatch = std::max(result.mismatch,
+                                   result.damping.on(checkTypes).mismatch(checkModelled.operatorOf(checked.damping())));
       if (!(result.mismatch <= kTolerance)) {
         closest = std::min(closest, result.mismatch);
         continue;
@@ -174,7 +201,8 @@ VeryWeakSphStencils<D> veryWeakSphStencils(const VeryWeakSphProblemSettings<D>& 
 
     // Face tractions at unit history, from the compact assembly's traction matrix.
     for (const FaceTraction<D>& traction : settings.faceTractions) {
-      const Vector f = faceTractionLoad<D>(compact.data(), traction.faces, traction.traction);
+      const Vector f = modelled.forceOf(faceTractionLoad<D>(
+          compact.data(), mirroredFaceMask(traction.faces, settings.symmetryFaces, D), traction.traction));
       result.faceLoads.emplace_back(f.data(), f.data() + f.size());
     }
     return result;

@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "kernels/KernelFactory.hpp"
+#include "lattice/SymmetryFold.hpp"
 #include "methods/very_weak_sph/Deconvolution.hpp"
 #include "methods/very_weak_sph/LatticePatchLoad.hpp"
 #include "methods/very_weak_sph/PatchLoad.hpp"
@@ -24,6 +25,13 @@ Real compressedRowsMiB(const SparseMatrix& m) {
 template <int D>
 std::unique_ptr<Kernel> checkedKernel(const VeryWeakSphProblemSettings<D>& settings) {
   checkVeryWeakSphCombination(settings.options.variant, settings.deconvolution, settings.smoothingRate);
+  if (settings.symmetryFaces != 0) {
+    checkSymmetryFaces(settings.symmetryFaces, D, "boundary");
+    // The planes are folded into the lattice's stencils (VeryWeakSphLattice.hpp); an assembly on
+    // particles has no image to fold.
+    if (settings.storage != OperatorStorage::Lattice)
+      throw InputError("method.operator", "symmetry planes need the lattice storage (\"auto\" or \"lattice\")");
+  }
   return makeKernel(settings.kernel, D, settings.smoothingLength);
 }
 
@@ -219,8 +227,11 @@ void VeryWeakSphProblem<D>::buildLattice(const std::array<Index, D>& nodes,
 }
 
 template <int D>
-ParticleMatrix VeryWeakSphProblem<D>::deconvolutionRows(const std::vector<Index>& particles) const {
+ParticleMatrix VeryWeakSphProblem<D>::deconvolutionRows(const std::vector<Index>& particles,
+                                                        const std::vector<int>& components) const {
   const Index n = system().size() / D;
+  if (components.size() != particles.size())
+    throw InputError("probe", "deconvolution rows need one component per particle");
   std::vector<Eigen::Triplet<Real, int>> entries;
   for (std::size_t k = 0; k < particles.size(); ++k) {
     const Index p = particles[k];
@@ -229,11 +240,13 @@ ParticleMatrix VeryWeakSphProblem<D>::deconvolutionRows(const std::vector<Index>
     if (deconvolution_) {
       for (ParticleMatrix::InnerIterator it(*deconvolution_, p); it; ++it)
         entries.emplace_back(row, static_cast<int>(it.col()), it.value());
-    } else if (deconvolutionStencils_) {  // the same operator on every component: one diagonal entry per block
+    } else if (deconvolutionStencils_) {  // a diagonal block per entry: the component's own
       const LatticeStencils<D>& s = *deconvolutionStencils_;
       const Index type = s.types().typeOf(s.types().node(p));
+      const int c = components[k];
+      if (c < 0 || c >= D) throw InputError("probe", "component " + std::to_string(c) + " does not exist");
       for (Index e = s.begin(type); e < s.end(type); ++e)
-        entries.emplace_back(row, static_cast<int>(s.column(e, p)), s.block(e)[0]);
+        if (s.block(e)[D * c + c] != 0) entries.emplace_back(row, static_cast<int>(s.column(e, p)), s.block(e)[D * c + c]);
     }
   }
   ParticleMatrix rows(static_cast<Index>(particles.size()), n);

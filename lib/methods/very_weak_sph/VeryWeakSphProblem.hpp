@@ -77,6 +77,9 @@ struct VeryWeakSphProblemSettings {
   // Dashpots on these faces: lumped facet dashpots for the galerkin variant, through the corrected
   // traction matrix for the consistent one, eq. (32) with `dashpotLumping` for the published one.
   std::uint8_t transmittingFaces = 0;
+  // Symmetry planes on these faces (at most one per axis): the box is one side of a mirror-symmetric
+  // solid, loaded symmetrically (lattice/SymmetryFold.hpp). The lattice storage only.
+  std::uint8_t symmetryFaces = 0;
   DashpotLumping dashpotLumping = DashpotLumping::Particle;
   std::vector<FaceTraction<D>> faceTractions;
   std::vector<PatchTraction<D>> patches;
@@ -148,9 +151,11 @@ class VeryWeakSphProblem {
   // Eq. (35) when settings.deconvolution with the sparse storage, else null.
   const ParticleMatrix* deconvolution() const { return deconvolution_ ? &*deconvolution_ : nullptr; }
   // Whether eq. (35) is on (either storage), and its rows at `particles`: a P x N matrix whose row k
-  // is particles[k]'s (what probes read, nothing whole-lattice sized; empty rows when it is off).
+  // is particles[k]'s for displacement component components[k] (what probes read, nothing
+  // whole-lattice sized; empty rows when it is off). The rows are the same for every component but
+  // near symmetry planes, where the reflection flips the normal component's images.
   bool deconvolves() const { return deconvolution_.has_value() || deconvolutionStencils_ != nullptr; }
-  ParticleMatrix deconvolutionRows(const std::vector<Index>& particles) const;
+  ParticleMatrix deconvolutionRows(const std::vector<Index>& particles, const std::vector<int>& components) const;
 
   // Storage of the step's operators, MiB: the matrices (stiffness, traction, damping, mass) in
   // compressed rows, or the stencil tables and the loads' nonzeros.

@@ -109,8 +109,12 @@ CaseResult runCaseIn(const StudySettings& study, const CaseSettings& settings, c
   const std::vector<Probe> probes = resolveProbes(scene.probes, particles);
   // the deconvolution's rows at the probes (eq. (35) of what is reported), from either storage
   std::vector<Index> probeParticles;
-  for (const Probe& p : probes) probeParticles.push_back(p.particle);
-  const ParticleMatrix deconvolutionRows = problem.deconvolutionRows(probeParticles);
+  std::vector<int> probeComponents;
+  for (const Probe& p : probes) {
+    probeParticles.push_back(p.particle);
+    probeComponents.push_back(p.component);
+  }
+  const ParticleMatrix deconvolutionRows = problem.deconvolutionRows(probeParticles, probeComponents);
   VeryWeakSphProbes recorder(probes, D, problem.deconvolves() ? &deconvolutionRows : nullptr);
   record.setupSeconds = assemblyClock.seconds();
 

@@ -1,6 +1,7 @@
 #include "studies/lamb3d/LambPlan.hpp"
 
 #include "catalogue/MethodCatalogue.hpp"
+#include "catalogue/SceneSupport.hpp"
 #include "core/Error.hpp"
 #include "integrators/ConstrainedIntegrators.hpp"
 #include "io/run/MemoryGuard.hpp"
@@ -388,6 +389,10 @@ struct PlanReader {
                                                              {"spectral_element", readSpectralElementPlan}};
     for (const auto& [name, read] : readers)
       if (scene.method.name == name) {
+        // What the method cannot represent (a symmetry plane for a method without one, ...), by the
+        // catalogue's word, before its own reader.
+        for (const UnsupportedFeature& f : unsupportedFeatures(scene, methodNamed(name)))
+          reader.fail(f.key, f.message());
         read(reader, plan);
         return plan;
       }
@@ -424,6 +429,14 @@ struct PlanReader {
       for (std::size_t a = 0; a < static_cast<std::size_t>(kDimension); ++a)
         if (lower[a] > g.lower[a] || upper[a] < g.upper[a])
           reader.fail("study.free_block_lower", "the free block must contain the scene's box " + g.describeBox());
+      // It is the same solid's larger block: on the scene's side of its symmetry planes.
+      const std::uint8_t symmetry = facesWith(scene.boundaries, BoundaryType::Symmetry);
+      for (std::size_t a = 0; a < static_cast<std::size_t>(kDimension); ++a)
+        if (((symmetry & faceBit(2 * static_cast<int>(a))) != 0 && lower[a] != g.lower[a]) ||
+            ((symmetry & faceBit(2 * static_cast<int>(a) + 1)) != 0 && upper[a] != g.upper[a]))
+          reader.fail((symmetry & faceBit(2 * static_cast<int>(a))) != 0 ? "study.free_block_lower" : "study.free_block_upper",
+                      std::string("must share the symmetry plane of axis ") + axisName(static_cast<int>(a)) +
+                          " with the scene's box " + g.describeBox());
       try {
         plan.cases.push_back(veryWeakCase("free_block", g.withLattice(lower, upper, g.spacing), true,
                                           atSpacing(main, g.spacing, g.spacing), false));

@@ -123,8 +123,12 @@ CaseResult runOnRanks(const StudySettings& study, const CaseSettings& settings, 
     sites.push_back(probeSite<D>(makeLattice<D>(lower, upper, dx, node, next), 0));
   }
   std::vector<Index> probeParticles;
-  for (const Probe& p : probes) probeParticles.push_back(p.particle);
-  const ParticleMatrix deconvolutionRows = problem.deconvolutionRows(probeParticles);
+  std::vector<int> probeComponents;
+  for (const Probe& p : probes) {
+    probeParticles.push_back(p.particle);
+    probeComponents.push_back(p.component);
+  }
+  const ParticleMatrix deconvolutionRows = problem.deconvolutionRows(probeParticles, probeComponents);
   RankProbes recorder(probes, [&share](Index particle) { return share.localNode(particle); }, D, MPI_COMM_WORLD,
                       problem.deconvolves() ? &deconvolutionRows : nullptr);
   result.record.setupSeconds = setupClock.seconds();
