@@ -20,6 +20,8 @@ import tempfile
 QUICK = {
     "lamb3d.toml": ["--set", "study.compare_published=false", "--set", "integrator.end_time=1",
                     "--set", "study.error_window=1", "--set", "output.vtk=false"],
+    "lamb3d_quarter.toml": ["--set", "study.compare_published=false", "--set", "integrator.end_time=1",
+                            "--set", "study.error_window=1", "--set", "output.vtk=false"],
     "lamb2d.toml": ["--set", "study.compare_published=false", "--set", "integrator.end_time=1",
                     "--set", "study.error_window=1", "--set", "output.vtk=false"],
     "block-ricker.toml": ["--set", "integrator.end_time=0.1", "--set", "output.png=false", "--set", "output.vtk=false"],
