@@ -60,6 +60,13 @@ struct SpectralElementSettings {
   Real elementSize = 1;
   int order = 4;  // N: N + 1 GLL nodes per element edge
   Material material = Material::fromLame(1, 1, 1);
+  // Materials by region (issue 48): empty for `material` everywhere; else `materialAt` gives, for an
+  // element's centre, its index into `regionMaterials`. Each element has one material, so an
+  // interface must lie on element boundaries (a layered box meshed by whole elements per layer): the
+  // stiffness, mass and dashpots are integrated element by element with that element's (lambda,
+  // mu, rho), and a node on an interface takes its share from each side. No averaging is needed.
+  std::vector<Material> regionMaterials;
+  std::function<int(const Vec<D>&)> materialAt;
   std::array<SpectralElementFace, 2 * D> faces = uniformFaces(SpectralElementFace::Free);
   std::vector<SpectralElementTraction<D>> tractions;
 
@@ -112,10 +119,14 @@ class SpectralElementElasticity : public LinearOperatorSystem {
   // node lies on (what the probes and the Lamb scores read).
   ParticleSet<D> nodeParticles() const;
   // The dense element matrix, D (N + 1)^D square, local dof D l + c with l = a + (N + 1)(b + (N + 1) c),
-  // assembled column by column from the sum-factorised element product (tests, Gershgorin).
-  Eigen::MatrixXd elementStiffness() const;
+  // assembled column by column from the sum-factorised element product (tests, Gershgorin), of the
+  // material numbered `material` (0: settings.material, or the first region's).
+  Eigen::MatrixXd elementStiffness(int material = 0) const;
   // y_e = K_e x_e for one element's local vectors (layout as elementStiffness()), by sum factorisation.
-  void elementProduct(const Real* x, Real* y) const;
+  void elementProduct(const Real* x, Real* y, int material = 0) const;
+  // The materials (settings.material alone, or the regions') and each element's.
+  const std::vector<Material>& materials() const { return materials_; }
+  int elementMaterial(Index e) const { return elementMaterial_.empty() ? 0 : elementMaterial_[static_cast<std::size_t>(e)]; }
   const Vector& dampingDiagonal() const { return damping_; }
   // 1 for the unknowns a fixed face holds at zero.
   const std::vector<char>& fixedDofs() const { return fixed_; }
@@ -136,7 +147,9 @@ class SpectralElementElasticity : public LinearOperatorSystem {
   // offset, wrapped along periodic axes for the last element's far nodes.
   void elementNodes(Index e, Index* nodes) const;
   // elementProduct on planar local vectors (component c at c (N + 1)^D + l), what the loop uses.
-  void planarElementProduct(const Real* x, Real* y) const;
+  void planarElementProduct(const Real* x, Real* y, const Material& material) const;
+  // The centre of element e.
+  Vec<D> elementCentre(Index e) const;
   // y += sign * K x over every element (x read with its fixed unknowns as zero), fixed rows left alone;
   // OpenMP over the elements of one colour at a time (elementColour), bitwise thread-independent.
   void addStiffnessProduct(const Real* x, Real* y, Real sign) const;
@@ -160,8 +173,10 @@ class SpectralElementElasticity : public LinearOperatorSystem {
   std::vector<Real> derivative_;                 // (2 / h) D_ij = dl_j/dx at node i, row major (N + 1)^2
   std::vector<Real> pointWeights_;               // GLL weight product times the Jacobian (h / 2)^D per point
   std::array<std::vector<int>, D> lineIndex_;    // per axis and local point: its index along that axis
-  Eigen::MatrixXd denseElement_;                 // 2-D only: K_e cached for the faster dense product
-  Vector mass_, damping_;                        // diagonals
+  std::vector<Eigen::MatrixXd> denseElements_;   // 2-D only: K_e per material, cached for the faster dense product
+  std::vector<Material> materials_;
+  std::vector<int> elementMaterial_;             // per element (empty: one material)
+  Vector mass_, damping_, volume_;               // diagonals; volume_ per node (sum of w J)
   std::vector<char> fixed_;
   std::vector<Vector> loadVectors_;              // per traction: integral of T phi_i over its rectangle
   bool hasDamping_ = false;
