@@ -95,11 +95,22 @@ SceneSchema SceneSchema::common() {
                     "time function scaling traction or value");
   s.at("boundary[].time_function").when("type = traction or displacement");
 
-  s.add("load", T::TableArray).describedAs("loads: point forces, body forces and surface patch tractions");
-  s.add("load[].type", T::String).required().oneOf({"point_force", "body_force", "surface_patch"})
+  s.add("load", T::TableArray)
+      .describedAs("loads: point forces, body forces, surface patch tractions, moment tensors, tractions on a solid's surface");
+  s.add("load[].type", T::String).required()
+      .oneOf({"point_force", "body_force", "surface_patch", "moment_tensor", "surface_traction"})
       .describedAs("kind of load");
-  s.add("load[].position", T::NumberArray).withUnit("m").required().when("type = point_force")
+  s.add("load[].position", T::NumberArray).withUnit("m").required().when("type = point_force or moment_tensor")
       .describedAs("point of application, inside the geometry box");
+  s.add("load[].moment", T::NumberArray).withUnit("N m").required().when("type = moment_tensor")
+      .describedAs("the moment tensor M (body force -M grad delta), symmetric: xx, yy, xy in 2-D; xx, yy, zz, xy, xz, yz in "
+                   "3-D; scaled by time_function");
+  s.add("load[].surface", T::String).required().when("type = surface_traction")
+      .describedAs("a named surface of the scene's solid: '<shape>.<surface>' (e.g. ground.plane, hole.surface, block.+z)");
+  s.add("load[].radius", T::Number).withUnit("m").required().positive().when("type = surface_traction")
+      .describedAs("the loaded part: the surface's points within this distance of centre");
+  s.add("load[].pressure", T::Number).withUnit("Pa").when("type = surface_traction")
+      .describedAs("traction along the inward normal (give pressure or traction), scaled by time_function");
   s.add("load[].direction", T::NumberArray).withUnit("-").required().when("type = point_force")
       .describedAs("direction of the force, non-zero; normalised");
   s.add("load[].amplitude", T::Number).withUnit("N").defaultsTo("1.0").when("type = point_force")
@@ -108,13 +119,14 @@ SceneSchema SceneSchema::common() {
       .describedAs("body force per unit volume, one entry per axis, scaled by time_function");
   s.add("load[].face", T::String).required().when("type = surface_patch")
       .describedAs("box face carrying the patch: -x, +x, -y, +y, -z, +z (those of the dimension)");
-  s.add("load[].centre", T::NumberArray).withUnit("m").required().when("type = surface_patch")
-      .describedAs("centre of the rectangular patch, one entry per axis, on the face");
+  s.add("load[].centre", T::NumberArray).withUnit("m").required().when("type = surface_patch or surface_traction")
+      .describedAs("centre of the rectangular patch, one entry per axis, on the face (surface_traction: of the loaded part)");
   s.add("load[].half_width", T::NumberArray).withUnit("m").required().when("type = surface_patch")
       .describedAs("half-widths of the patch along each axis, > 0 in the face, 0 along its normal");
-  s.add("load[].traction", T::NumberArray).withUnit("Pa").required().when("type = surface_patch")
-      .describedAs("traction vector on the patch, one entry per axis, scaled by time_function");
-  s.addTimeFunction("load[].time_function", "required for point_force and surface_patch; constant 1 for body_force",
+  s.add("load[].traction", T::NumberArray).withUnit("Pa").when("type = surface_patch or surface_traction")
+      .describedAs("traction vector on the patch, one entry per axis, scaled by time_function (required for "
+                   "surface_patch; surface_traction: or pressure)");
+  s.addTimeFunction("load[].time_function", "required but for body_force (constant 1)",
                     "time function scaling the load");
 
   s.add("integrator", T::Table).required().describedAs("time integration");

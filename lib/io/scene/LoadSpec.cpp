@@ -15,6 +15,10 @@ std::string loadTypeName(LoadType type) {
       return "point_force";
     case LoadType::BodyForce:
       return "body_force";
+    case LoadType::MomentTensor:
+      return "moment_tensor";
+    case LoadType::SurfaceTraction:
+      return "surface_traction";
     default:
       return "surface_patch";
   }
@@ -64,10 +68,30 @@ std::vector<LoadSpec> readLoads(SceneReader& reader, const GeometrySpec& geometr
     const auto key = [&](const char* name) { return scene::childPath(entry, name); };
     LoadSpec load;
     const std::string type = reader.string(key("type"));
-    load.type = type == "point_force" ? LoadType::PointForce
-                : type == "body_force" ? LoadType::BodyForce
-                                       : LoadType::SurfacePatch;
-    if (load.type == LoadType::SurfacePatch) {
+    load.type = type == "point_force"        ? LoadType::PointForce
+                : type == "body_force"       ? LoadType::BodyForce
+                : type == "moment_tensor"    ? LoadType::MomentTensor
+                : type == "surface_traction" ? LoadType::SurfaceTraction
+                                             : LoadType::SurfacePatch;
+    if (load.type == LoadType::MomentTensor) {
+      load.position = reader.numbers(key("position"), d);
+      if (!geometry.contains(load.position))
+        reader.fail(key("position"), scene::formatPoint(load.position) + " lies outside the geometry box " +
+                                         geometry.describeBox());
+      load.moment = reader.numbers(key("moment"), d == 2 ? 3 : 6);
+      load.timeFunction = readTimeFunction(reader, key("time_function"), true);
+    } else if (load.type == LoadType::SurfaceTraction) {
+      load.surface = reader.string(key("surface"));
+      load.centre = reader.numbers(key("centre"), d);
+      load.radius = reader.number(key("radius"));
+      const bool pressure = reader.has(key("pressure")), vector = reader.has(key("traction"));
+      if (pressure == vector)
+        reader.fail(key(pressure ? "traction" : "pressure"),
+                    pressure ? "cannot be combined with pressure: give one" : "is missing: give pressure (along the inward normal) or traction (a vector)");
+      if (pressure) load.pressure = reader.number(key("pressure"));
+      else load.traction = reader.numbers(key("traction"), d);
+      load.timeFunction = readTimeFunction(reader, key("time_function"), true);
+    } else if (load.type == LoadType::SurfacePatch) {
       readSurfacePatch(reader, entry, geometry, load);
       load.timeFunction = readTimeFunction(reader, key("time_function"), true);
     } else if (load.type == LoadType::PointForce) {
