@@ -60,6 +60,20 @@ std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const 
     out.choice.gradientCorrection =
         root.at_path("method.kernel_gradient_correction").value<bool>().value_or(study.kernelGradientCorrection);
   }
+  // A solid other than the box: only the methods that model one (MethodSupport::solids).
+  {
+    const toml::table& root = first.root();
+    const char* key = root.contains("shape") ? "shape" : root.contains("region") ? "region"
+                      : root.at_path("geometry.solid")  ? "geometry.solid"
+                                                        : nullptr;
+    if (key && !entry->supports.solids) {
+      std::string by;
+      for (const MethodEntry& m : methodCatalogue())
+        if (m.supports.solids) by += (by.empty() ? "" : ", ") + m.name;
+      throw reader.error(key, entry->name + " does not support solids other than the box; supported by: " + by);
+    }
+    if (key) out.notes.push_back("the solid is made of shapes: the plan counts the box's lattice (an upper bound)");
+  }
   const std::vector<UnsupportedFeature> problems = unsupportedFeatures(out.scene, *entry);
   if (!problems.empty()) throw reader.error(problems.front().key, problems.front().message());
   for (const std::string& note : standInNotes(out.scene, *entry)) out.notes.push_back(note);

@@ -78,8 +78,9 @@ std::vector<MethodEntry> makeCatalogue() {
     m.supports = {{2, 3},
                   {"rectangle", "block"},
                   {B::Free, B::Fixed, B::Traction, B::Displacement, B::Transmitting, B::Symmetry},
-                  {L::SurfacePatch},
+                  {L::SurfacePatch, L::PointForce, L::MomentTensor, L::SurfaceTraction},
                   secondOrder};
+    m.supports.solids = true;  // the galerkin variant on cut cells (the solid study)
     m.addOptions = addVeryWeakSphKeys;
     m.stepRule = "cfl x 2 / omega_max of M^-1 K, omega_max from a power iteration on the assembled operator";
     m.cost.baseMiB = {0, 31.9, 35};
@@ -88,7 +89,7 @@ std::vector<MethodEntry> makeCatalogue() {
     m.cost.setupSecondsPerParticle = {0, 7e-6, 6.5e-6};
     m.cost.measured = "lamb2d.toml at dx = 0.25, 0.125, 0.0625 (galerkin; consistent at 0.25: 0.8 x the rate), "
                       "lamb3d.toml at dx = 0.5, 0.25";
-    m.programs = {"lamb2d", "lamb3d", "plate"};
+    m.programs = {"lamb2d", "lamb3d", "plate", "solid"};
     list.push_back(m);
   }
   {

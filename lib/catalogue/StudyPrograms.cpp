@@ -15,6 +15,8 @@ const std::vector<StudyProgram>& studyPrograms() {
        {"lamb3d.toml"}, false},
       {"lamb2d", "the plane-strain Lamb problem: one surface_patch load on a rectangle", {"lamb2d"}, {"lamb2d.toml"},
        false},
+      {"solid", "a scene's own solid ([[shape]], geometry.solid, [[region]]) by the very weak SPH on cut cells",
+       {"lamb2d_inclined", "lamb2d_halfplane", "layered_cavity"}, {}, false},
       {"wavefield", "any finite_difference scene: a scalar wave on a line, rectangle or block with point loads",
        {"block-ricker", "wavefield"}, {"block-ricker.toml"}, false},
       {"wave1d", "the 1-D standing wave and its step limits (finite differences)", {"wave1d"}, {"wave1d.toml"}, false},
@@ -63,6 +65,8 @@ ProgramChoice programForScene(const std::string& scenePath, const std::vector<st
       for (const std::string& f : p.sceneFiles)
         if (f == file) return {p.program, "the shipped scene " + file};
   const std::string method = root.at_path("method.name").value<std::string>().value_or("");
+  if (root.contains("shape") || root.contains("region") || root.at_path("geometry.solid"))
+    return {"solid", "the scene describes its solid ([[shape]], geometry.solid or [[region]])"};
   const std::int64_t dimension = root.at_path("scene.dimension").value<std::int64_t>().value_or(0);
   if (method == "finite_difference") return {"wavefield", "method.name = finite_difference"};
   const toml::array* loads = root.at_path("load").as_array();

@@ -230,6 +230,37 @@ CutCellGalerkin<D>::CutCellGalerkin(CutCellDomain<D> domain, const CutCellSettin
     kept.push_back(std::move(data));
   }
   if (kept.empty()) throw InputError("geometry", "the solid has no cell inside the lattice box");
+  // The staircase's surface: the faces between a kept cell and a cell left out (the box's faces are
+  // its boundary, not a surface). A pressure along each face's own normal has the resultant of the
+  // true surface's (the normals times lengths of a path sum to its chord's), which is the
+  // staircase's reading of a surface load.
+  if (settings_.cells == CutCells::Staircase) {
+    std::vector<char> inside(static_cast<std::size_t>(cellCount), 0);
+    for (const CellData& c : kept) inside[static_cast<std::size_t>(c.cell)] = 1;
+    for (const CellData& c : kept) {
+      std::array<Index, D> cell{};
+      Index rest = c.cell;
+      for (int a = 0; a < D; ++a) {
+        cell[static_cast<std::size_t>(a)] = rest % cells[static_cast<std::size_t>(a)];
+        rest /= cells[static_cast<std::size_t>(a)];
+      }
+      for (int face = 0; face < 2 * D; ++face) {
+        const int axis = faceAxis(face);
+        const auto q = static_cast<std::size_t>(axis);
+        std::array<Index, D> neighbour = cell;
+        neighbour[q] += faceSign(face);
+        if (neighbour[q] < 0 || neighbour[q] >= cells[q]) continue;
+        Index index = 0;
+        for (int a = D - 1; a >= 0; --a) index = index * cells[static_cast<std::size_t>(a)] + neighbour[static_cast<std::size_t>(a)];
+        if (inside[static_cast<std::size_t>(index)]) continue;
+        Vec<D> lower = position(cell);
+        if (faceSign(face) > 0) lower[axis] += h;
+        std::vector<std::pair<Vec<D>, Real>> gauss;
+        gaussPointsOf<D>(lower, h, axis, gauss);
+        for (const auto& [x, w] : gauss) surface_.push_back({x, faceNormal<D>(face), w});
+      }
+    }
+  }
 
   // Element matrices: K_e(a i, b k) = sum_q w [lambda dW_a/dx_i dW_b/dx_k + mu dW_a/dx_k dW_b/dx_i
   // + mu delta_ik grad W_a . grad W_b] (C_ijkl = lambda d_ij d_kl + mu (d_ik d_jl + d_il d_jk)), the

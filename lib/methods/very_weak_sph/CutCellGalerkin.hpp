@@ -94,7 +94,8 @@ class CutCellGalerkin {
   Vector surfaceTraction(const std::function<bool(const Vec<D>&)>& on,
                          const std::function<Vec<D>(const Vec<D>& x, const Vec<D>& normal)>& traction) const;
   // The solid's surface inside cut cells (2-D: segments by marching squares on the last level's
-  // sub-cells; 3-D: not available, empty), each with two Gauss points.
+  // sub-cells; 3-D: not available, empty), each with two Gauss points; with staircase cells, the
+  // faces between kept cells and cells left out (any dimension), 2^(D-1) Gauss points each.
   const std::vector<SurfacePoint<D>>& surface() const { return surface_; }
 
   // The field at x as a row over the unknown dofs: component `component` of sum_a W_a(x) u_a.

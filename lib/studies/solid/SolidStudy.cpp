@@ -1,0 +1,397 @@
+#include "studies/solid/SolidStudy.hpp"
+
+#include "analytic/LambStripLoad.hpp"
+#include "catalogue/MethodCatalogue.hpp"
+#include "catalogue/SceneSupport.hpp"
+#include "core/Error.hpp"
+#include "core/Stopwatch.hpp"
+#include "integrators/IntegratorFactory.hpp"
+#include "integrators/TimeStep.hpp"
+#include "io/run/ProgressReporter.hpp"
+#include "io/run/RunSummary.hpp"
+#include "io/scene/Format.hpp"
+#include "io/scene/ScenePath.hpp"
+#include "io/vtk/FrameOutputs.hpp"
+#include "numerics/SignalComparison.hpp"
+#include "numerics/StableTimeStep.hpp"
+#include "observers/StabilityMonitor.hpp"
+#include "observers/TimeLoop.hpp"
+#include "particles/BoxFace.hpp"
+#include "systems/LinearSecondOrderSystem.hpp"
+
+#include <cmath>
+#include <map>
+
+namespace mfwave::solid {
+
+SceneSchema solidSchema() {
+  using T = ValueType;
+  SceneSchema s = SceneSchema::common();
+  addSolidKeys(s);
+  s.at("method.name").oneOf({"very_weak_sph"});
+  s.add("method.variant", T::String).defaultsTo("\"galerkin\"").oneOf({"galerkin"})
+      .describedAs("the very weak SPH variant: galerkin (the tent kernel integrated over the solid's cells)");
+  s.add("method.cells", T::String).defaultsTo("\"cut\"").oneOf({"cut", "staircase"})
+      .describedAs("cut: the integrals over the inside of each lattice cell the surface cuts; staircase: whole cells "
+                   "whose centre is inside (the baseline)");
+  s.add("method.cut_depth", T::Integer).withUnit("-").defaultsTo("4").between(0, 8)
+      .describedAs("levels of subdivision of a cut cell (2^depth sub-cells per axis; the cut volume's error is of "
+                   "order spacing / 2^depth)");
+  s.add("method.small_cell_fraction", T::Number).withUnit("-").defaultsTo("0.25").between(0, 1, true, false)
+      .describedAs("a node whose volume in the solid is below this fraction of its uncut volume is extended from its "
+                   "neighbours (docs/theory/very-weak-sph.md, Cut cells)");
+  KeySpec& component = s.at("probe[].component");
+  component.isRequired = false;
+  component.defaultsTo("\"x\"");
+  s.add("probe[].direction", T::NumberArray).withUnit("-").defaultsToNote("the axis of component")
+      .describedAs("record the component along this vector (normalised; e.g. a surface's inward normal)");
+  s.add("study", T::Table).describedAs("the cases of the solid study");
+  s.add("study.spacings", T::NumberArray).withUnit("m").defaultsToNote("geometry.spacing")
+      .describedAs("lattice spacings, one case each (each must divide the box)");
+  s.add("study.compare_staircase", T::Boolean).defaultsTo("true")
+      .describedAs("run the staircase baseline beside the cut cells at every spacing");
+  s.add("study.reference", T::String).defaultsTo("\"none\"").oneOf({"none", "lamb_strip"})
+      .describedAs("exact reference: lamb_strip (2-D: a half-plane of any inclination loaded by a pressure on a "
+                   "strip of its plane, LambStripLoad in its own coordinates)");
+  s.add("study.error_window", T::Number).withUnit("s").defaultsToNote("integrator.end_time").positive()
+      .describedAs("errors over 0 <= t <= error_window");
+  return s;
+}
+
+namespace {
+
+template <int D>
+Vec<D> vecOf(const std::vector<Real>& v) {
+  Vec<D> x;
+  for (int a = 0; a < D; ++a) x[a] = v[static_cast<std::size_t>(a)];
+  return x;
+}
+
+// The [[shape]] entry of a name, or -1.
+long shapeIndex(SceneReader& reader, const std::string& name) {
+  for (std::size_t i = 0; i < reader.count("shape"); ++i)
+    if (reader.string(scene::childPath(scene::indexPath("shape", i), "name")) == name) return static_cast<long>(i);
+  return -1;
+}
+
+// Records the field's component along each probe's direction, interpolated at its position:
+// rows over the unknowns (CutCellGalerkin::interpolation), velocity or displacement.
+class ProbeRows final : public Observer {
+ public:
+  ProbeRows(std::vector<std::vector<std::pair<Index, Real>>> rows, std::vector<bool> velocity, std::vector<std::string> names)
+      : rows_(std::move(rows)), velocity_(std::move(velocity)), series_("t [s]", std::move(names)) {}
+  void observe(const StateView& state) override {
+    std::vector<Real> values;
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+      const Vector& field = velocity_[i] ? state.velocity : state.displacement;
+      Real value = 0;
+      for (const auto& [dof, w] : rows_[i]) value += w * field[dof];
+      values.push_back(value);
+    }
+    series_.append(state.time, values);
+  }
+  void end(const StateView& state) override {
+    if (series_.times().empty() || series_.times().back() < state.time) observe(state);
+  }
+  void saveState(StateArchive& archive) const override { series_.saveState(archive); }
+  void restoreState(const StateArchive& archive) override { series_.restoreState(archive); }
+  const TimeSeries& series() const { return series_; }
+
+ private:
+  std::vector<std::vector<std::pair<Index, Real>>> rows_;
+  std::vector<bool> velocity_;
+  TimeSeries series_;
+};
+
+}  // namespace
+
+std::vector<Real> lambHalfPlaneSeries(const HalfPlaneLamb& lamb, const Material& material, const std::vector<Real>& x,
+                                      const std::vector<Real>& times, bool velocity) {
+  const LambStripLoad exact(material.lambda(), material.mu(), material.density(), lamb.halfWidth, lamb.times, lamb.values,
+                            lamb.pressure);
+  Real offset = 0, depth = 0;
+  for (std::size_t a = 0; a < 2; ++a) {
+    offset += (x[a] - lamb.centre[a]) * lamb.tangent[a];
+    depth -= (x[a] - lamb.centre[a]) * lamb.normal[a];
+  }
+  // On the surface to round-off is on it: the interior formula at a depth of 1e-16 would see the
+  // Rayleigh pole through a peak far narrower than its quadrature (LambStripLoad.hpp, Limits).
+  if (depth < 1e-9 * std::max<Real>(1, std::abs(offset))) depth = 0;
+  std::vector<Real> out;
+  for (const Real t : times) out.push_back(velocity ? exact.velocity(offset, depth, t) : exact.displacement(offset, depth, t));
+  return out;
+}
+
+template <int D>
+SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
+  SolidPlan<D> plan;
+  plan.scene = scene;
+  if (scene.info.dimension != D || D < 2)
+    reader.fail("scene.dimension", "the solid study runs 2-D and 3-D scenes");
+  for (const UnsupportedFeature& f : unsupportedFeatures(scene, methodNamed(scene.method.name)))
+    reader.fail(f.key, f.message());
+  if (scene.integrator.kind != IntegratorKind::CentralDifference)
+    reader.fail("integrator.name", "the solid study runs central_difference (its lumped mass makes it explicit)");
+  plan.solid = readSceneSolid<D>(reader, scene);
+  const GeometrySpec& g = scene.geometry;
+
+  for (std::size_t i = 0; i < scene.boundaries.size(); ++i) {
+    const BoundaryType type = scene.boundaries[i].type;
+    if (type != BoundaryType::Free && type != BoundaryType::Transmitting)
+      reader.fail("boundary[" + std::to_string(i) + "].type",
+                  "the solid study takes free and transmitting box faces (the solid's own surfaces are free; load them "
+                  "with surface_traction)");
+  }
+  for (std::size_t i = 0; i < scene.loads.size(); ++i) {
+    const LoadSpec& load = scene.loads[i];
+    const std::string key = "load[" + std::to_string(i) + "]";
+    if (load.type == LoadType::SurfacePatch || load.type == LoadType::BodyForce)
+      reader.fail(key + ".type", "the solid study takes point_force, moment_tensor and surface_traction loads (a "
+                                 "surface_patch is a box face's: use surface_traction on '<shape>.<surface>')");
+    if (load.type != LoadType::SurfaceTraction) continue;
+    if (D != 2)
+      reader.fail(key + ".type", "surface_traction on a solid's surface runs in 2-D (its cut cells' surface is traced by "
+                                 "marching squares); in 3-D use point_force or moment_tensor");
+    const std::size_t dot = load.surface.find('.');
+    const std::string shape = load.surface.substr(0, dot);
+    if (dot == std::string::npos || (shape != "box" && shapeIndex(reader, shape) < 0))
+      reader.fail(key + ".surface", "'" + load.surface + "' is not '<shape>.<surface>' of a [[shape]] (or box)");
+  }
+
+  for (std::size_t i = 0; i < scene.probes.size(); ++i) {
+    const ProbeSpec& p = scene.probes[i];
+    const std::string key = scene::indexPath("probe", i);
+    if (!p.position) reader.fail(scene::childPath(key, "particle"), "the solid study places probes by position");
+    SolidProbe<D> probe;
+    probe.name = p.name;
+    probe.position = vecOf<D>(*p.position);
+    probe.velocity = p.quantity == ProbeQuantity::Velocity;
+    if (plan.solid.solid->signedDistance(probe.position) > 1e-9 * g.spacing)
+      reader.fail(scene::childPath(key, "position"), scene::formatPoint(*p.position) + " lies outside the solid");
+    if (reader.has(scene::childPath(key, "direction"))) {
+      const Vec<D> d = vecOf<D>(reader.numbers(scene::childPath(key, "direction"), D));
+      if (!(d.norm() > 0)) reader.fail(scene::childPath(key, "direction"), "must not be the zero vector");
+      probe.direction = d.normalized();
+    } else {
+      probe.direction = Vec<D>::Unit(p.component);
+    }
+    plan.probes.push_back(probe);
+  }
+
+  plan.spacings = reader.has("study.spacings") ? reader.numbers("study.spacings") : std::vector<Real>{g.spacing};
+  if (plan.spacings.empty()) reader.fail("study.spacings", "names no spacing");
+  for (const Real dx : plan.spacings) {
+    try {
+      (void)g.withLattice(g.lower, g.upper, dx);
+    } catch (const InputError& e) {
+      reader.fail("study.spacings", e.problem());
+    }
+  }
+  plan.cells.push_back(reader.string("method.cells") == "staircase" ? CutCells::Staircase : CutCells::Cut);
+  if (reader.boolean("study.compare_staircase") && plan.cells[0] == CutCells::Cut) plan.cells.push_back(CutCells::Staircase);
+  plan.depth = static_cast<int>(reader.integer("method.cut_depth"));
+  plan.smallCellFraction = reader.number("method.small_cell_fraction");
+  (void)reader.string("method.variant");
+  plan.errorWindow = reader.has("study.error_window") ? reader.number("study.error_window") : scene.integrator.endTime;
+
+  if (reader.string("study.reference") == "lamb_strip") {
+    const auto fail = [&reader](const std::string& k, const std::string& why) {
+      reader.fail(k, "the lamb_strip reference needs " + why);
+    };
+    if (D != 2) fail("study.reference", "a 2-D scene");
+    if (scene.loads.size() != 1 || scene.loads[0].type != LoadType::SurfaceTraction || !scene.loads[0].traction.empty())
+      fail("load", "exactly one surface_traction load given by its pressure");
+    if (!plan.solid.regions.empty()) fail("region", "one material (no [[region]])");
+    const LoadSpec& load = scene.loads[0];
+    const std::string shape = load.surface.substr(0, load.surface.find('.'));
+    const long k = shapeIndex(reader, shape);
+    const std::string entry = scene::indexPath("shape", static_cast<std::size_t>(std::max(k, 0L)));
+    if (k < 0 || reader.string(scene::childPath(entry, "type")) != "half_space" || load.surface != shape + ".plane")
+      fail("load[0].surface", "the plane of a half_space shape ('<name>.plane')");
+    HalfPlaneLamb lamb;
+    const Vec<D> normal = vecOf<D>(reader.numbers(scene::childPath(entry, "normal"), D)).normalized();
+    const Vec<D> point = vecOf<D>(reader.numbers(scene::childPath(entry, "point"), D));
+    const Vec<D> centre = vecOf<D>(load.centre);
+    if (std::abs((centre - point).dot(normal)) > 1e-9) fail("load[0].centre", "the load's centre on the half-plane's surface");
+    lamb.centre = load.centre;
+    lamb.normal = {normal[0], normal[1]};
+    lamb.tangent = {-normal[1], normal[0]};
+    lamb.halfWidth = load.radius;
+    lamb.pressure = load.pressure;
+    if (!load.timeFunction.piecewiseLinear(lamb.times, lamb.values) || lamb.values.front() != 0)
+      fail("load[0].time_function", "a piecewise-linear history starting from 0");
+    for (std::size_t i = 0; i < plan.probes.size(); ++i)
+      if (std::abs(std::abs(plan.probes[i].direction.dot(normal)) - 1) > 1e-9)
+        fail(scene::childPath(scene::indexPath("probe", i), "direction"),
+             "probes recording along the half-plane's normal (the reference is that component)");
+    plan.lamb = lamb;
+  }
+  return plan;
+}
+
+template <int D>
+SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells cells, const std::string& folder,
+                             bool frames, bool progress) {
+  const Scene& scene = plan.scene;
+  const Stopwatch setup;
+  SolidCaseResult result;
+  std::ostringstream name;
+  name << (cells == CutCells::Cut ? "cut_" : "staircase_") << spacing;
+  result.name = name.str();
+  result.spacing = spacing;
+  result.cells = cells == CutCells::Cut ? "cut" : "staircase";
+
+  // the method on the solid: its surfaces are the expression's (the box's faces are the lattice's own)
+  const SceneSolid<D>& solid = plan.solid;
+  CutCellDomain<D> domain;
+  domain.distance = [surfaces = solid.unbounded](const Vec<D>& x) { return surfaces->signedDistance(x); };
+  domain.materials = solid.materials;
+  domain.materialAt = [&solid](const Vec<D>& x) { return solid.materialAt(x); };
+  if (!solid.regions.empty()) domain.interfaceDistance = [&solid](const Vec<D>& x) { return solid.interfaceDistance(x); };
+  CutCellSettings<D> settings;
+  settings.lower = vecOf<D>(scene.geometry.lower);
+  settings.upper = vecOf<D>(scene.geometry.upper);
+  settings.spacing = spacing;
+  settings.cells = cells;
+  settings.depth = plan.depth;
+  settings.smallCellFraction = plan.smallCellFraction;
+  settings.transmittingFaces = facesWith(scene.boundaries, BoundaryType::Transmitting);
+  const CutCellGalerkin<D> method(domain, settings);
+  result.unknowns = method.unknownNodes();
+  result.extended = method.extendedNodes();
+  result.cutCells = method.cutCells();
+  result.volume = method.volume();
+  result.smallestKept = method.smallestKeptFraction();
+
+  // loads, each a fixed vector scaled by its time function
+  std::vector<std::pair<Vector, const TimeFunction*>> loads;
+  for (std::size_t i = 0; i < scene.loads.size(); ++i) {
+    const LoadSpec& load = scene.loads[i];
+    if (load.type == LoadType::PointForce) {
+      loads.emplace_back(method.pointForce(vecOf<D>(load.position), load.amplitude * vecOf<D>(load.direction)), &load.timeFunction);
+    } else if (load.type == LoadType::MomentTensor) {
+      Mat<D> m;
+      if constexpr (D == 2) {
+        m << load.moment[0], load.moment[2], load.moment[2], load.moment[1];
+      } else {
+        m << load.moment[0], load.moment[3], load.moment[4], load.moment[3], load.moment[1], load.moment[5], load.moment[4],
+            load.moment[5], load.moment[2];
+      }
+      loads.emplace_back(method.momentTensor(vecOf<D>(load.position), m), &load.timeFunction);
+    } else {
+      const Vec<D> centre = vecOf<D>(load.centre);
+      const Real radius = load.radius;
+      const std::string surface = load.surface;
+      const auto on = [&, centre, radius](const Vec<D>& x) {
+        return (x - centre).norm() <= radius && solid.solid->surfaceName(x) == surface;
+      };
+      const bool pressure = load.traction.empty();
+      const Vec<D> vector = pressure ? Vec<D>::Zero() : vecOf<D>(load.traction);
+      const Real p = load.pressure;
+      Vector f = method.surfaceTraction(on, [pressure, vector, p](const Vec<D>&, const Vec<D>& n) -> Vec<D> {
+        return pressure ? Vec<D>(-p * n) : vector;
+      });
+      if (!(f.cwiseAbs().maxCoeff() > 0))
+        throw InputError("load[" + std::to_string(i) + "].surface",
+                         "no point of surface '" + surface + "' lies within " + scene::formatNumber(radius) + " of " +
+                             scene::formatPoint(load.centre) + " (the solid's surfaces are named '<shape>.<surface>')");
+      loads.emplace_back(std::move(f), &load.timeFunction);
+    }
+  }
+  const Index n = method.size();
+  LinearSecondOrderSystem system(method.mass(), method.damping(), method.stiffness(), [&loads, n](Real t, Vector& f) {
+    f.setZero(n);
+    for (const auto& [vector, history] : loads) f += (*history)(t) * vector;
+  });
+
+  // the step: cfl of the power iteration's stable step, or the scene's fixed step
+  const StableTimeStep stable = centralDifferenceStableStep(system, 1e-6, 20000);
+  result.stableStep = stable.usable();
+  const TimeStepChoice step = chooseTimeStep(scene.integrator.stepRule(), result.stableStep);
+  result.dt = step.dt;
+
+  // initial velocities by region
+  Vector u0 = Vector::Zero(n), v0 = Vector::Zero(n);
+  for (Index a = 0; a < method.unknownNodes(); ++a) {
+    const int region = solid.regionAt(method.unknownPositions()[static_cast<std::size_t>(a)]);
+    if (region < 0 || solid.initialVelocity[static_cast<std::size_t>(region)].empty()) continue;
+    v0.template segment<D>(D * a) = vecOf<D>(solid.initialVelocity[static_cast<std::size_t>(region)]);
+  }
+  std::unique_ptr<SecondOrderIntegrator> integrator = makeSecondOrderIntegrator(scene.integrator.name, scene.integrator.options);
+  integrator->initialise(system, 0, u0, v0, step.dt);
+
+  // probes: the field's component along each direction, interpolated at the position
+  std::vector<std::vector<std::pair<Index, Real>>> rows;
+  std::vector<bool> velocity;
+  std::vector<std::string> names;
+  for (const SolidProbe<D>& p : plan.probes) {
+    std::map<Index, Real> row;
+    for (int c = 0; c < D; ++c)
+      if (p.direction[c] != 0)
+        for (const auto& [dof, w] : method.interpolation(p.position, c)) row[dof] += p.direction[c] * w;
+    rows.emplace_back(row.begin(), row.end());
+    velocity.push_back(p.velocity);
+    names.push_back(p.name);
+  }
+  ProbeRows probes(std::move(rows), std::move(velocity), names);
+  StabilityMonitor monitor(scene.stability.options(D, loadsQuietAfter(scene)));
+  ProgressReporter reporter(scene.integrator.endTime, method.unknownNodes(), progress);
+  TimeLoop loop;
+  loop.add(monitor);
+  loop.add(reporter);
+  if (!plan.probes.empty()) loop.add(probes, scene.output.probeEvery);
+  ParticleSet<D> nodes;
+  for (Index a = 0; a < method.unknownNodes(); ++a)
+    nodes.add(method.unknownPositions()[static_cast<std::size_t>(a)], method.mass().coeff(D * a, D * a));
+  ParticleFrames<D> particleFrames(nodes, folder, result.name, frameSettings<D>(scene.output, frames));
+  particleFrames.attachTo(loop, scene.output.every);
+  result.setupSeconds = setup.seconds();
+  const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
+  result.runSeconds = stats.wallSeconds;
+  result.steps = stats.steps;
+  result.peakMiB = peakMemoryMiB();
+  const FrameOutputReport report = particleFrames.report();
+  for (const std::string& f : report.files) result.files.push_back(f);
+
+  // the probes' CSV, with the exact series beside each where there is a reference, and the errors
+  const TimeSeries& recorded = probes.series();
+  std::vector<std::string> columns;
+  std::vector<std::vector<Real>> values, exact;
+  for (std::size_t i = 0; i < plan.probes.size(); ++i) {
+    columns.push_back(plan.probes[i].name);
+    values.push_back(recorded.column(i));
+    if (!plan.lamb) continue;
+    columns.push_back(plan.probes[i].name + "_exact");
+    const Real sign = plan.probes[i].direction.dot(-vecOf<D>(plan.lamb->normal)) > 0 ? 1.0 : -1.0;
+    std::vector<Real> e = lambHalfPlaneSeries(*plan.lamb, solid.materials[0],
+                                              std::vector<Real>(plan.probes[i].position.data(), plan.probes[i].position.data() + D),
+                                              recorded.times(), plan.probes[i].velocity);
+    for (Real& x : e) x *= sign;
+    const SignalErrors errors = compareSignals(recorded.times(), values.back(), e, plan.errorWindow);
+    result.relativeL2.push_back(errors.relativeL2);
+    result.peakError.push_back(errors.peakError);
+    result.arrivalError.push_back(errors.arrivalError);
+    exact.push_back(std::move(e));
+  }
+  if (!plan.probes.empty()) {
+    TimeSeries table("t [s]", columns);
+    for (std::size_t k = 0; k < recorded.rows(); ++k) {
+      std::vector<Real> row;
+      for (std::size_t i = 0; i < plan.probes.size(); ++i) {
+        row.push_back(values[i][k]);
+        if (plan.lamb) row.push_back(exact[i][k]);
+      }
+      table.append(recorded.times()[k], row);
+    }
+    table.writeCsv(folder + "/" + result.name + "-probes.csv");
+    result.files.push_back(result.name + "-probes.csv");
+  }
+  return result;
+}
+
+template SolidPlan<2> readSolidPlan<2>(SceneReader&, const Scene&);
+template SolidPlan<3> readSolidPlan<3>(SceneReader&, const Scene&);
+template SolidCaseResult runSolidCase<2>(const SolidPlan<2>&, Real, CutCells, const std::string&, bool, bool);
+template SolidCaseResult runSolidCase<3>(const SolidPlan<3>&, Real, CutCells, const std::string&, bool, bool);
+
+}  // namespace mfwave::solid

@@ -1,0 +1,264 @@
+#include "wiring/SolidScene.hpp"
+
+#include "core/Error.hpp"
+#include "geometry/Ball.hpp"
+#include "geometry/BoxSolid.hpp"
+#include "geometry/Cylinder.hpp"
+#include "geometry/ExtrudedPolygon.hpp"
+#include "geometry/HalfSpace.hpp"
+#include "geometry/Polygon.hpp"
+#include "geometry/SolidExpression.hpp"
+#include "geometry/SurfaceMeshFile.hpp"
+#include "io/scene/Format.hpp"
+#include "io/scene/ScenePath.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <memory>
+
+namespace mfwave {
+
+void addSolidKeys(SceneSchema& s) {
+  using T = ValueType;
+  s.add("geometry.solid", T::String).defaultsTo("\"box\"")
+      .describedAs("the solid: a CSG expression over [[shape]] names within the box ('box'): + union, - difference, "
+                   "& intersection, parentheses");
+  s.add("geometry.region_overlap", T::String).defaultsTo("\"error\"").oneOf({"error", "last"})
+      .describedAs("where two [[region]] entries overlap: refuse (error) or let the later one win (last)");
+  s.add("shape", T::TableArray).describedAs("named shapes the solid and the regions are made of");
+  s.add("shape[].name", T::String).required().describedAs("the shape's name in expressions and surface names");
+  s.add("shape[].type", T::String).required()
+      .oneOf({"box", "half_space", "ball", "cylinder", "polygon", "extruded_polygon", "mesh"})
+      .describedAs("kind of shape (ball is a disc in 2-D; cylinder, extruded_polygon and mesh are 3-D; polygon 2-D)");
+  s.add("shape[].lower", T::NumberArray).withUnit("m").required().when("type = box").describedAs("lower corner");
+  s.add("shape[].upper", T::NumberArray).withUnit("m").required().when("type = box").describedAs("upper corner");
+  s.add("shape[].point", T::NumberArray).withUnit("m").required().when("type = half_space")
+      .describedAs("a point of the bounding plane (line in 2-D)");
+  s.add("shape[].normal", T::NumberArray).withUnit("-").required().when("type = half_space")
+      .describedAs("the plane's normal, pointing out of the half-space");
+  s.add("shape[].centre", T::NumberArray).withUnit("m").required().when("type = ball").describedAs("centre");
+  s.add("shape[].radius", T::Number).withUnit("m").required().positive().when("type = ball or cylinder")
+      .describedAs("radius");
+  s.add("shape[].start", T::NumberArray).withUnit("m").required().when("type = cylinder")
+      .describedAs("centre of the bottom cap");
+  s.add("shape[].end", T::NumberArray).withUnit("m").required().when("type = cylinder").describedAs("centre of the top cap");
+  s.add("shape[].vertices", T::NumberArray).withUnit("m").required().when("type = polygon or extruded_polygon")
+      .describedAs("the polygon's vertices in order, x0, y0, x1, y1, ... (at least 3)");
+  s.add("shape[].z_range", T::NumberArray).withUnit("m").required().when("type = extruded_polygon")
+      .describedAs("[z0, z1]: the extrusion's bottom and top");
+  s.add("shape[].file", T::String).required().when("type = mesh")
+      .describedAs("closed triangle surface (STL, OBJ or VTP), relative to the scene file's folder");
+  s.add("region", T::TableArray).describedAs("materials by region: each an expression over shapes and a material");
+  s.add("region[].name", T::String).required().describedAs("the region's name");
+  s.add("region[].solid", T::String).required().describedAs("the region: a CSG expression over [[shape]] names");
+  s.add("region[].density", T::Number).withUnit("kg/m^3").required().positive().describedAs("rho");
+  s.add("region[].lambda", T::Number).withUnit("Pa").required().nonNegative().describedAs("Lame's first parameter");
+  s.add("region[].mu", T::Number).withUnit("Pa").required().positive().describedAs("shear modulus");
+  s.add("region[].initial_velocity", T::NumberArray).withUnit("m/s").defaultsToNote("at rest")
+      .describedAs("velocity of the region's material at t = 0, one entry per axis");
+}
+
+namespace {
+
+bool validName(const std::string& name) {
+  if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0])) != 0) return false;
+  for (const char c : name)
+    if (std::isalnum(static_cast<unsigned char>(c)) == 0 && c != '_') return false;
+  return true;
+}
+
+template <int D>
+Vec<D> vec(const std::vector<Real>& v) {
+  Vec<D> x;
+  for (int a = 0; a < D; ++a) x[a] = v[static_cast<std::size_t>(a)];
+  return x;
+}
+
+template <int D>
+SolidPtr<D> readShape(SceneReader& reader, std::size_t i, const std::string& name, const std::string& type) {
+  const std::string entry = scene::indexPath("shape", i);
+  const auto key = [&](const char* k) { return scene::childPath(entry, k); };
+  const auto d = static_cast<std::size_t>(D);
+  try {
+    if (type == "box") return std::make_shared<BoxSolid<D>>(vec<D>(reader.numbers(key("lower"), d)),
+                                                             vec<D>(reader.numbers(key("upper"), d)), name);
+    if (type == "half_space")
+      return std::make_shared<HalfSpace<D>>(vec<D>(reader.numbers(key("point"), d)), vec<D>(reader.numbers(key("normal"), d)),
+                                            name);
+    if (type == "ball")
+      return std::make_shared<Ball<D>>(vec<D>(reader.numbers(key("centre"), d)), reader.number(key("radius")), name);
+    if constexpr (D == 2) {
+      if (type == "polygon") {
+        const std::vector<Real> v = reader.numbers(key("vertices"));
+        if (v.size() % 2 != 0) reader.fail(key("vertices"), "needs x, y pairs (an even count), got " + std::to_string(v.size()));
+        std::vector<Vec2> vertices;
+        for (std::size_t k = 0; k + 1 < v.size(); k += 2) vertices.emplace_back(v[k], v[k + 1]);
+        return std::make_shared<Polygon>(std::move(vertices), name);
+      }
+    }
+    if constexpr (D == 3) {
+      if (type == "cylinder")
+        return std::make_shared<Cylinder>(vec<3>(reader.numbers(key("start"), 3)), vec<3>(reader.numbers(key("end"), 3)),
+                                          reader.number(key("radius")), name);
+      if (type == "extruded_polygon") {
+        const std::vector<Real> v = reader.numbers(key("vertices"));
+        if (v.size() % 2 != 0) reader.fail(key("vertices"), "needs x, y pairs (an even count), got " + std::to_string(v.size()));
+        std::vector<Vec2> vertices;
+        for (std::size_t k = 0; k + 1 < v.size(); k += 2) vertices.emplace_back(v[k], v[k + 1]);
+        const std::vector<Real> z = reader.numbers(key("z_range"), 2);
+        return std::make_shared<ExtrudedPolygon>(std::move(vertices), z[0], z[1], name);
+      }
+      if (type == "mesh") {
+        namespace fs = std::filesystem;
+        fs::path file(reader.string(key("file")));
+        if (file.is_relative()) file = fs::path(reader.baseDirectory()) / file;
+        return std::make_shared<TriangleMesh>(readSurfaceMesh(fs::absolute(file).lexically_normal().string(), name));
+      }
+    }
+  } catch (const InputError& e) {
+    reader.fail(key("type"), e.what());
+  }
+  reader.fail(key("type"), "'" + type + "' is not a shape of a " + std::to_string(D) + "-D scene");
+}
+
+// The lattice nodes of the scene's box (what the checks sample).
+template <int D>
+void forEachNode(const GeometrySpec& g, const std::function<void(const Vec<D>&)>& visit) {
+  std::array<Index, D> n{};
+  Index count = 1;
+  for (int a = 0; a < D; ++a) {
+    n[static_cast<std::size_t>(a)] = g.intervals[static_cast<std::size_t>(a)] + 1;
+    count *= n[static_cast<std::size_t>(a)];
+  }
+  for (Index p = 0; p < count; ++p) {
+    Index rest = p;
+    Vec<D> x;
+    for (int a = 0; a < D; ++a) {
+      const auto k = static_cast<std::size_t>(a);
+      x[a] = g.lower[k] + static_cast<Real>(rest % n[k]) * g.spacing;
+      rest /= n[k];
+    }
+    visit(x);
+  }
+}
+
+}  // namespace
+
+template <int D>
+int SceneSolid<D>::regionAt(const Vec<D>& x) const {
+  for (int r = static_cast<int>(regions.size()) - 1; r >= 0; --r)
+    if (regions[static_cast<std::size_t>(r)]->signedDistance(x) <= 0) return r;
+  return -1;
+}
+
+template <int D>
+int SceneSolid<D>::materialAt(const Vec<D>& x) const {
+  return regionAt(x) + 1;
+}
+
+template <int D>
+Real SceneSolid<D>::interfaceDistance(const Vec<D>& x) const {
+  Real d = std::numeric_limits<Real>::infinity();
+  for (const SolidPtr<D>& r : regions) d = std::min(d, std::abs(r->signedDistance(x)));
+  return d;
+}
+
+template <int D>
+SceneSolid<D> readSceneSolid(SceneReader& reader, const Scene& scene) {
+  const GeometrySpec& g = scene.geometry;
+  SceneSolid<D> out;
+  out.box = std::make_shared<BoxSolid<D>>(vec<D>(g.lower), vec<D>(g.upper), "box");
+  std::map<std::string, SolidPtr<D>> shapes{{"box", out.box}};
+  std::vector<std::string> names{"box"};
+  const std::size_t count = reader.count("shape");
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::string key = scene::childPath(scene::indexPath("shape", i), "name");
+    const std::string name = reader.string(key);
+    if (!validName(name)) reader.fail(key, "'" + name + "' is not a name (letters, digits and _, not starting with a digit)");
+    if (shapes.count(name) != 0)
+      reader.fail(key, name == "box" ? "'box' is the scene's box; give the shape another name" : "'" + name + "' names two shapes");
+    SolidPtr<D> shape = readShape<D>(reader, i, name, reader.string(scene::childPath(scene::indexPath("shape", i), "type")));
+    // a shape that no node of the box reaches is a mistake (a region outside the box)
+    bool meets = false;
+    forEachNode<D>(g, [&](const Vec<D>& x) { meets = meets || shape->signedDistance(x) <= g.spacing / 2; });
+    if (!meets)
+      reader.fail(scene::childPath(scene::indexPath("shape", i), "type"),
+                  "shape '" + name + "' lies outside the geometry box " + g.describeBox());
+    shapes[name] = shape;
+    names.push_back(name);
+  }
+  const std::function<SolidPtr<D>(const std::string&)> lookup = [&shapes](const std::string& n) -> SolidPtr<D> {
+    const auto it = shapes.find(n);
+    return it == shapes.end() ? nullptr : it->second;
+  };
+  const std::string expression = reader.string("geometry.solid");
+  try {
+    out.expression = parseSolidExpression<D>(expression, lookup, names, "geometry.solid");
+  } catch (const InputError& e) {
+    reader.fail("geometry.solid", e.problem());
+  }
+  out.solid = intersect<D>(out.box, out.expression);
+  {
+    Vec<D> far = Vec<D>::Zero();
+    for (int a = 0; a < D; ++a) far[a] = 1e6 * (std::abs(g.upper[static_cast<std::size_t>(a)]) + std::abs(g.lower[static_cast<std::size_t>(a)]) + 1);
+    const SolidPtr<D> everywhere = std::make_shared<BoxSolid<D>>(-far, far, "box");
+    const std::function<SolidPtr<D>(const std::string&)> unboundedLookup = [&](const std::string& n) -> SolidPtr<D> {
+      return n == "box" ? everywhere : lookup(n);
+    };
+    out.unbounded = parseSolidExpression<D>(expression, unboundedLookup, names, "geometry.solid");
+  }
+  Index inside = 0;
+  forEachNode<D>(g, [&](const Vec<D>& x) { inside += out.solid->signedDistance(x) <= 0 ? 1 : 0; });
+  if (inside == 0)
+    reader.fail("geometry.solid", "'" + expression + "' is empty within the box " + g.describeBox() +
+                                      " (no lattice node at spacing " + scene::formatNumber(g.spacing) + " inside it)");
+
+  out.materials.push_back(scene.material.material());
+  out.lastRegionWins = reader.string("geometry.region_overlap") == "last";
+  const std::size_t regionCount = reader.count("region");
+  for (std::size_t i = 0; i < regionCount; ++i) {
+    const std::string entry = scene::indexPath("region", i);
+    const auto key = [&](const char* k) { return scene::childPath(entry, k); };
+    out.regionNames.push_back(reader.string(key("name")));
+    SolidPtr<D> region;
+    try {
+      region = parseSolidExpression<D>(reader.string(key("solid")), lookup, names, key("solid"));
+    } catch (const InputError& e) {
+      reader.fail(key("solid"), e.problem());
+    }
+    bool meets = false;
+    forEachNode<D>(g, [&](const Vec<D>& x) { meets = meets || (region->signedDistance(x) <= 0 && out.solid->signedDistance(x) <= 0); });
+    if (!meets) reader.fail(key("solid"), "region '" + out.regionNames.back() + "' holds no point of the solid at spacing " +
+                                              scene::formatNumber(g.spacing) + " (outside the box or the solid)");
+    out.regions.push_back(region);
+    out.materials.push_back(Material::fromLame(reader.number(key("lambda")), reader.number(key("mu")), reader.number(key("density"))));
+    out.initialVelocity.push_back(reader.has(key("initial_velocity")) ? reader.numbers(key("initial_velocity"), D)
+                                                                      : std::vector<Real>{});
+  }
+  if (!out.lastRegionWins && out.regions.size() > 1) {
+    forEachNode<D>(g, [&](const Vec<D>& x) {
+      if (out.solid->signedDistance(x) > 0) return;
+      int first = -1;
+      for (std::size_t r = 0; r < out.regions.size(); ++r) {
+        if (out.regions[r]->signedDistance(x) >= 0) continue;  // strictly inside: a shared surface is no overlap
+        if (first >= 0)
+          reader.fail(scene::childPath(scene::indexPath("region", r), "solid"),
+                      "regions '" + out.regionNames[static_cast<std::size_t>(first)] + "' and '" + out.regionNames[r] +
+                          "' overlap at " + scene::formatPoint(std::vector<Real>(x.data(), x.data() + D)) +
+                          "; make them disjoint or set geometry.region_overlap = \"last\" (the later region wins)");
+        first = static_cast<int>(r);
+      }
+    });
+  }
+  return out;
+}
+
+template struct SceneSolid<2>;
+template struct SceneSolid<3>;
+template SceneSolid<2> readSceneSolid<2>(SceneReader&, const Scene&);
+template SceneSolid<3> readSceneSolid<3>(SceneReader&, const Scene&);
+
+}  // namespace mfwave
