@@ -22,6 +22,12 @@ QUICK = {
                     "--set", "study.error_window=1", "--set", "output.vtk=false"],
     "lamb3d_quarter.toml": ["--set", "study.compare_published=false", "--set", "integrator.end_time=1",
                             "--set", "study.error_window=1", "--set", "output.vtk=false"],
+    "lamb2d_inclined.toml": ["--set", "study.spacings=[0.25]", "--set", "integrator.end_time=1",
+                             "--set", "study.error_window=1"],
+    "lamb2d_halfplane.toml": ["--set", "study.spacings=[0.25]", "--set", "integrator.end_time=1",
+                              "--set", "study.error_window=1"],
+    "layered_cavity.toml": ["--set", "geometry.spacing=0.25", "--set", "integrator.end_time=1",
+                            "--set", "output.png=false", "--set", "output.vtk=false"],
     "lamb2d.toml": ["--set", "study.compare_published=false", "--set", "integrator.end_time=1",
                     "--set", "study.error_window=1", "--set", "output.vtk=false"],
     "block-ricker.toml": ["--set", "integrator.end_time=0.1", "--set", "output.png=false", "--set", "output.vtk=false"],
@@ -102,7 +108,7 @@ def main():
     block = os.path.join(args.scenes, "block-ricker.toml")
     for command, key in [
         ([args.mfwave, "plan", lamb, "--set", "method.name=vwsph"], "method.name"),
-        ([args.mfwave, "check", block, "--set", "method.name=very_weak_sph"], "load[0].type"),
+        ([args.mfwave, "check", block, "--set", "method.name=reproducing_kernel"], "load[0].type"),
         ([args.mfwave, "run", lamb, "--set", "study.spacings=[0.3]", "--quiet"], "study.spacings"),
         ([args.mfwave], "subcommand is required"),
         ([args.mfwave, "plan", os.path.join(args.scenes, "no-such-scene.toml")], "no-such-scene.toml"),

@@ -40,11 +40,9 @@ SceneSchema solidSchema() {
   s.add("method.small_cell_fraction", T::Number).withUnit("-").defaultsTo("0.25").between(0, 1, true, false)
       .describedAs("a node whose volume in the solid is below this fraction of its uncut volume is extended from its "
                    "neighbours (docs/theory/very-weak-sph.md, Cut cells)");
-  KeySpec& component = s.at("probe[].component");
-  component.isRequired = false;
-  component.defaultsTo("\"x\"");
   s.add("probe[].direction", T::NumberArray).withUnit("-").defaultsToNote("the axis of component")
-      .describedAs("record the component along this vector (normalised; e.g. a surface's inward normal)");
+      .describedAs("record the component along this vector (normalised; e.g. a surface's inward normal) in place of "
+                   "component's axis");
   s.add("study", T::Table).describedAs("the cases of the solid study");
   s.add("study.spacings", T::NumberArray).withUnit("m").defaultsToNote("geometry.spacing")
       .describedAs("lattice spacings, one case each (each must divide the box)");

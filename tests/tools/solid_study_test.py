@@ -1,0 +1,156 @@
+#!/usr/bin/python3
+"""The solid study (issue 48, docs/studies/geometry.md) as a user runs it:
+
+- the inclined Lamb problem (data/scenes/lamb2d_inclined.toml) at dx = 0.0625: the cut-cell Galerkin
+  errors at centre, receiver and buried within 1.5 times the axis-aligned half-plane's
+  (data/scenes/lamb2d_halfplane.toml) and below the staircase's at the receiver;
+- bad geometry refused before any work with exit 2 naming the key: a shape outside the box, an
+  empty solid, overlapping regions without a rule, an open surface mesh, a load on an unknown
+  surface, a probe outside the solid.
+
+    /usr/bin/python3 tests/tools/solid_study_test.py --solid BUILD/drivers/solid --scenes data/scenes
+"""
+import argparse
+import csv
+import os
+import subprocess
+import sys
+import tempfile
+
+
+def run(command):
+    done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    return done.returncode, done.stdout
+
+
+def errors(folder, case):
+    with open(os.path.join(folder, "cases.csv")) as f:
+        for row in csv.DictReader(f):
+            if row["case"] == case:
+                return {p: float(row[p + "_relative_l2"]) for p in ("centre", "receiver", "buried")}
+    raise SystemExit("no case " + case + " in " + folder)
+
+
+OPEN_STL = """solid open
+facet normal 0 0 -1
+ outer loop
+  vertex 0 0 0
+  vertex 1 0 0
+  vertex 0 1 0
+ endloop
+endfacet
+facet normal 0 -1 0
+ outer loop
+  vertex 0 0 0
+  vertex 0 0 1
+  vertex 1 0 0
+ endloop
+endfacet
+endsolid open
+"""
+
+BLOCK = """[scene]
+name = "bad"
+dimension = 3
+[geometry]
+shape = "block"
+lower = [-1.0, -1.0, -1.0]
+upper = [1.0, 1.0, 1.0]
+spacing = 0.25
+solid = "part"
+[[shape]]
+name = "part"
+type = "mesh"
+file = "open.stl"
+[material]
+density = 1.0
+lambda = 1.0
+mu = 1.0
+[method]
+name = "very_weak_sph"
+[[load]]
+type = "point_force"
+position = [0.0, 0.0, 0.0]
+direction = [0.0, 0.0, 1.0]
+time_function = { type = "ricker", peak_frequency = 1.0 }
+[integrator]
+end_time = 1.0
+"""
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--solid", required=True)
+    parser.add_argument("--scenes", required=True)
+    args = parser.parse_args()
+    failures = []
+    with tempfile.TemporaryDirectory() as work:
+        runs = {}
+        for name in ("lamb2d_inclined", "lamb2d_halfplane"):
+            out = os.path.join(work, name)
+            code, text = run([args.solid, "--scene", os.path.join(args.scenes, name + ".toml"), "--out", out, "--quiet",
+                              "--set", "study.spacings=[0.0625]"])
+            if code != 0:
+                print(text)
+                sys.exit(name + ": exit " + str(code))
+            runs[name] = out
+        inclined = errors(runs["lamb2d_inclined"], "cut_0.0625")
+        staircase = errors(runs["lamb2d_inclined"], "staircase_0.0625")
+        aligned = errors(runs["lamb2d_halfplane"], "cut_0.0625")
+        for probe in ("centre", "receiver", "buried"):
+            ratio = inclined[probe] / aligned[probe]
+            print("%-8s inclined cut %.4f, staircase %.4f, axis-aligned %.4f: %.2f times" %
+                  (probe, inclined[probe], staircase[probe], aligned[probe], ratio))
+            if ratio > 1.5:
+                failures.append("%s: the inclined error is %.2f times the axis-aligned (target 1.5)" % (probe, ratio))
+        if not inclined["receiver"] < staircase["receiver"]:
+            failures.append("the cut cells do not beat the staircase at the receiver")
+
+        with open(os.path.join(work, "open.stl"), "w") as f:
+            f.write(OPEN_STL)
+        with open(os.path.join(work, "open.toml"), "w") as f:
+            f.write(BLOCK)
+        cavity = os.path.join(args.scenes, "layered_cavity.toml")
+        inclined_scene = os.path.join(args.scenes, "lamb2d_inclined.toml")
+        cases = [
+            ([cavity, "--set", "shape[2].centre=[50.0, 50.0]"], "shape[2].type", "lies outside the geometry box"),
+            ([cavity, "--set", "geometry.solid=cavity - cavity"], "geometry.solid", "is empty"),
+            ([cavity, "--set", "region[0].solid=cavity"], "region[0].solid", "holds no point of the solid"),
+            ([os.path.join(work, "open.toml")], "shape[0].type", "open"),
+            ([inclined_scene, "--set", "load[0].surface=nothing.plane"], "load[0].surface", "not '<shape>.<surface>'"),
+            ([inclined_scene, "--set", "probe[1].position=[0.0, 3.0]"], "probe[1].position", "outside the solid"),
+            ([inclined_scene, "--set", "geometry.solid=box & grund"], "geometry.solid", "names no shape 'grund'"),
+            ([inclined_scene, "--set", "boundary[0].type=fixed"], "boundary[0].type", "free and transmitting"),
+        ]
+        for k, (scene_args, key, text) in enumerate(cases):
+            refused = os.path.join(work, "refused-%d" % k)
+            code, out = run([args.solid, "--scene"] + scene_args + ["--out", refused, "--quiet"])
+            if code != 2 or key not in out or (text and text not in out) or os.path.exists(refused):
+                failures.append("%s: exit %d (want 2 naming %s%s, nothing written)\n%s" %
+                                (" ".join(scene_args[1:]) or scene_args[0], code, key, ", " + text if text else "", out))
+            else:
+                print("refused: " + out.strip().splitlines()[-1])
+        # two overlapping regions: refused without the rule, run with it
+        with open(cavity) as f:
+            text = f.read()
+        overlapping = text + '\n[[region]]\nname = "lens"\nsolid = "cavity_halo"\ndensity = 1.0\nlambda = 2.0\nmu = 2.0\n' \
+            '\n[[shape]]\nname = "cavity_halo"\ntype = "ball"\ncentre = [-3.0, -2.0]\nradius = 1.0\n'
+        scene = os.path.join(work, "overlap.toml")
+        with open(scene, "w") as f:
+            f.write(overlapping)
+        code, out = run([args.solid, "--scene", scene, "--check"])
+        if code != 2 or "region[1].solid" not in out or "overlap" not in out:
+            failures.append("overlapping regions: exit %d (want 2 naming region[1].solid)\n%s" % (code, out))
+        else:
+            print("refused: " + out.strip().splitlines()[-1])
+        code, out = run([args.solid, "--scene", scene, "--check", "--set", "geometry.region_overlap=last"])
+        if code != 0:
+            failures.append("overlapping regions with region_overlap = last: exit %d\n%s" % (code, out))
+    if failures:
+        print("FAILED:\n" + "\n".join(failures))
+        sys.exit(1)
+    print("the solid study: inclined within 1.5 times the axis-aligned errors; bad geometry refused by key")
+
+
+if __name__ == "__main__":
+    main()
