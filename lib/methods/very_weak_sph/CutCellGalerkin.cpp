@@ -518,7 +518,7 @@ CutCellGalerkin<D>::CutCellGalerkin(CutCellDomain<D> domain, const CutCellSettin
   stiffness_ = SparseMatrix(extension.transpose() * full * extension);
   stiffness_.prune(0.0);
   // The mass stays lumped and positive: an extended node's mass goes to the unknowns it is made of
-  // in proportion to |weight| (the extrapolation's weights can be negative; their row sums of
+  // in proportion to its positive weights (the extrapolation's weights can be negative; the row sums of
   // E^T M E could make a mass negative). The total is kept.
   Vector lumped = Vector::Zero(size());
   for (Index a = 0; a < activeCount; ++a) {
@@ -528,9 +528,9 @@ CutCellGalerkin<D>::CutCellGalerkin(CutCellDomain<D> domain, const CutCellSettin
       continue;
     }
     Real norm = 0;
-    for (const auto& entry : extension_[static_cast<std::size_t>(a)]) norm += std::abs(entry.second);
+    for (const auto& entry : extension_[static_cast<std::size_t>(a)]) norm += std::max<Real>(0, entry.second);
     for (const auto& [unknown, w] : extension_[static_cast<std::size_t>(a)])
-      lumped.template segment<D>(D * unknown).array() += mass[a] * std::abs(w) / norm;
+      lumped.template segment<D>(D * unknown).array() += mass[a] * std::max<Real>(0, w) / norm;
   }
   for (Index i = 0; i < size(); ++i)
     if (!(lumped[i] > 0)) {

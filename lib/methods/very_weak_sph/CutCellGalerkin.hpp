@@ -17,7 +17,7 @@
 // `smallCellFraction` of what it has in the uncut box is therefore not an unknown: its displacement
 // is the bilinear (trilinear) extrapolation of the nearest lattice cell whose corners are all
 // unknowns, u = E u~. The system is E^T K E, E^T C E and a lumped mass: each extended node's mass
-// shared among the unknowns it is made of in proportion to |weight| (positive, the total kept;
+// shared among the unknowns it is made of in proportion to its positive weights (the total kept;
 // the row sums of E^T M E, with the extrapolation's negative weights, can be negative). E^T K E is
 // symmetric positive
 // semi-definite when K is, so the step is bounded by the unknowns' own rows: measured, the stable
