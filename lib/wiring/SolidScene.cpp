@@ -54,9 +54,11 @@ void addSolidKeys(SceneSchema& s) {
   s.add("region", T::TableArray).describedAs("materials by region: each an expression over shapes and a material");
   s.add("region[].name", T::String).required().describedAs("the region's name");
   s.add("region[].solid", T::String).required().describedAs("the region: a CSG expression over [[shape]] names");
-  s.add("region[].density", T::Number).withUnit("kg/m^3").required().positive().describedAs("rho");
-  s.add("region[].lambda", T::Number).withUnit("Pa").required().nonNegative().describedAs("Lame's first parameter");
-  s.add("region[].mu", T::Number).withUnit("Pa").required().positive().describedAs("shear modulus");
+  s.add("region[].density", T::Number).withUnit("kg/m^3").defaultsToNote("[material]'s").positive()
+      .describedAs("rho (give density, lambda and mu, or none: the region then has [material]'s)");
+  s.add("region[].lambda", T::Number).withUnit("Pa").defaultsToNote("[material]'s").nonNegative()
+      .describedAs("Lame's first parameter");
+  s.add("region[].mu", T::Number).withUnit("Pa").defaultsToNote("[material]'s").positive().describedAs("shear modulus");
   s.add("region[].initial_velocity", T::NumberArray).withUnit("m/s").defaultsToNote("at rest")
       .describedAs("velocity of the region's material at t = 0, one entry per axis");
 }
@@ -234,7 +236,16 @@ SceneSolid<D> readSceneSolid(SceneReader& reader, const Scene& scene) {
     if (!meets) reader.fail(key("solid"), "region '" + out.regionNames.back() + "' holds no point of the solid at spacing " +
                                               scene::formatNumber(g.spacing) + " (outside the box or the solid)");
     out.regions.push_back(region);
-    out.materials.push_back(Material::fromLame(reader.number(key("lambda")), reader.number(key("mu")), reader.number(key("density"))));
+    const int given = (reader.has(key("density")) ? 1 : 0) + (reader.has(key("lambda")) ? 1 : 0) + (reader.has(key("mu")) ? 1 : 0);
+    if (given == 0) {
+      out.materials.push_back(scene.material.material());  // a region for its initial velocity alone
+    } else {
+      for (const char* k : {"density", "lambda", "mu"})
+        if (!reader.has(key(k)))
+          reader.fail(key(k), "is missing: a region's material is density, lambda and mu together (or none of them)");
+      out.materials.push_back(
+          Material::fromLame(reader.number(key("lambda")), reader.number(key("mu")), reader.number(key("density"))));
+    }
     out.initialVelocity.push_back(reader.has(key("initial_velocity")) ? reader.numbers(key("initial_velocity"), D)
                                                                       : std::vector<Real>{});
   }
