@@ -13,16 +13,7 @@ using namespace mfwave;
 
 namespace {
 
-// The problem text of the InputError f throws ("" if none).
-template <class F>
-std::string polygonProblem(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.problem();
-  }
-  return "";
-}
+using testing::inputErrorProblem;
 
 }  // namespace
 
@@ -65,24 +56,24 @@ TEST(PlanarPolygon, NearestEdgeAtAVertexIsTheOneFartherOut) {
 TEST(PlanarPolygon, RefusesDegenerateAndSelfIntersectingLists) {
   using mfwave::testing::inputErrorKey;
   EXPECT_EQ(inputErrorKey([] { PlanarPolygon({Vec2(0, 0), Vec2(1, 0)}, "hole.vertices"); }), "hole.vertices");
-  EXPECT_NE(polygonProblem([] { PlanarPolygon({Vec2(0, 0), Vec2(1, 0)}, "k"); }).find("at least 3"), std::string::npos);
-  EXPECT_NE(polygonProblem([] { PlanarPolygon({Vec2(0, 0), Vec2(1, 0), Vec2(1, 0), Vec2(0, 1)}, "k"); }).find("coincide"),
+  EXPECT_NE(inputErrorProblem([] { PlanarPolygon({Vec2(0, 0), Vec2(1, 0)}, "k"); }).find("at least 3"), std::string::npos);
+  EXPECT_NE(inputErrorProblem([] { PlanarPolygon({Vec2(0, 0), Vec2(1, 0), Vec2(1, 0), Vec2(0, 1)}, "k"); }).find("coincide"),
             std::string::npos);
   // A bow tie: edges 0 and 2 cross.
   const std::string bowTie =
-      polygonProblem([] { PlanarPolygon({Vec2(0, 0), Vec2(1, 1), Vec2(1, 0), Vec2(0, 1)}, "k"); });
+      inputErrorProblem([] { PlanarPolygon({Vec2(0, 0), Vec2(1, 1), Vec2(1, 0), Vec2(0, 1)}, "k"); });
   EXPECT_NE(bowTie.find("self-intersecting"), std::string::npos) << bowTie;
   EXPECT_NE(bowTie.find("edge0 and edge2"), std::string::npos) << bowTie;
   // Two squares touching at one vertex (a figure eight through (1, 1)).
-  EXPECT_NE(polygonProblem([] {
+  EXPECT_NE(inputErrorProblem([] {
               PlanarPolygon({Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(2, 1), Vec2(2, 2), Vec2(1, 2), Vec2(1, 1), Vec2(0, 1)},
                             "k");
             }).find("self-intersecting"),
             std::string::npos);
   // Collinear points, and a spike that folds back on itself.
-  EXPECT_NE(polygonProblem([] { PlanarPolygon({Vec2(0, 0), Vec2(1, 0), Vec2(2, 0)}, "k"); }).find("self-intersecting"),
+  EXPECT_NE(inputErrorProblem([] { PlanarPolygon({Vec2(0, 0), Vec2(1, 0), Vec2(2, 0)}, "k"); }).find("self-intersecting"),
             std::string::npos);
-  EXPECT_NE(polygonProblem([] { PlanarPolygon({Vec2(0, 0), Vec2(2, 0), Vec2(1, 0), Vec2(1, 1)}, "k"); })
+  EXPECT_NE(inputErrorProblem([] { PlanarPolygon({Vec2(0, 0), Vec2(2, 0), Vec2(1, 0), Vec2(1, 1)}, "k"); })
                 .find("fold back"),
             std::string::npos);
 }

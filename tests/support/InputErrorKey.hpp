@@ -1,6 +1,6 @@
 #pragma once
-// Test helper: runs f and returns the key of the InputError it throws ("" if it throws none),
-// so a test can assert that bad input names the right parameter.
+// Test helpers: run f and return the key (or the problem text) of the InputError it throws ("" if
+// it throws none), so a test can assert that bad input names the right parameter and says why.
 
 #include "core/Error.hpp"
 
@@ -14,6 +14,16 @@ std::string inputErrorKey(F&& f) {
     f();
   } catch (const InputError& e) {
     return e.key();
+  }
+  return "";
+}
+
+template <class F>
+std::string inputErrorProblem(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.problem();
   }
   return "";
 }

@@ -22,6 +22,13 @@ Real cornerTent(const Vec<D>& t, int k) {
   return w;
 }
 
+// Corner k of `cell` (bit a of k: the upper node along axis a), as in cornerTent.
+template <int D>
+std::array<Index, D> cornerOf(std::array<Index, D> cell, int k) {
+  for (int a = 0; a < D; ++a) cell[static_cast<std::size_t>(a)] += (k >> a) & 1;
+  return cell;
+}
+
 template <int D>
 Vec<D> cornerTentGradient(const Vec<D>& t, int k, Real spacing) {
   Vec<D> g;
@@ -395,9 +402,7 @@ CutCellGalerkin<D>::CutCellGalerkin(CutCellDomain<D> domain, const CutCellSettin
       if (!inBox) continue;
       bool allUnknown = true;
       for (int kc = 0; kc < corners && allUnknown; ++kc) {
-        std::array<Index, D> corner = cell;
-        for (int ax = 0; ax < D; ++ax) corner[static_cast<std::size_t>(ax)] += (kc >> ax) & 1;
-        const Index act = active_[static_cast<std::size_t>(nodeIndex(corner))];
+        const Index act = active_[static_cast<std::size_t>(nodeIndex(cornerOf<D>(cell, kc)))];
         allUnknown = act >= 0 && unknownOf_[static_cast<std::size_t>(act)] >= 0;
       }
       if (!allUnknown) continue;
@@ -435,9 +440,7 @@ CutCellGalerkin<D>::CutCellGalerkin(CutCellDomain<D> domain, const CutCellSettin
     }
     const Vec<D> t = (x - position(bestCell)) / h;
     for (int kc = 0; kc < corners; ++kc) {
-      std::array<Index, D> corner = bestCell;
-      for (int ax = 0; ax < D; ++ax) corner[static_cast<std::size_t>(ax)] += (kc >> ax) & 1;
-      const Index act = active_[static_cast<std::size_t>(nodeIndex(corner))];
+      const Index act = active_[static_cast<std::size_t>(nodeIndex(cornerOf<D>(bestCell, kc)))];
       const Real w = cornerTent<D>(t, kc);
       if (w != 0) extension_[static_cast<std::size_t>(a)].emplace_back(unknownOf_[static_cast<std::size_t>(act)], w);
     }
@@ -585,11 +588,7 @@ template <int D>
 Vector CutCellGalerkin<D>::pointForce(const Vec<D>& x, const Vec<D>& force) const {
   const auto [cell, t] = cellAt<D>(x, settings_.lower, settings_.spacing, nodes_);
   std::vector<std::pair<Index, Vec<D>>> nodal;
-  for (int k = 0; k < (1 << D); ++k) {
-    std::array<Index, D> corner = cell;
-    for (int a = 0; a < D; ++a) corner[static_cast<std::size_t>(a)] += (k >> a) & 1;
-    nodal.emplace_back(nodeIndex(corner), cornerTent<D>(t, k) * force);
-  }
+  for (int k = 0; k < (1 << D); ++k) nodal.emplace_back(nodeIndex(cornerOf<D>(cell, k)), cornerTent<D>(t, k) * force);
   return reduce(nodal);
 }
 
@@ -597,12 +596,9 @@ template <int D>
 Vector CutCellGalerkin<D>::momentTensor(const Vec<D>& x, const Mat<D>& moment) const {
   const auto [cell, t] = cellAt<D>(x, settings_.lower, settings_.spacing, nodes_);
   std::vector<std::pair<Index, Vec<D>>> nodal;
-  for (int k = 0; k < (1 << D); ++k) {
-    std::array<Index, D> corner = cell;
-    for (int a = 0; a < D; ++a) corner[static_cast<std::size_t>(a)] += (k >> a) & 1;
-    // int (-M grad delta) W_a = M grad W_a(x)
-    nodal.emplace_back(nodeIndex(corner), moment * cornerTentGradient<D>(t, k, settings_.spacing));
-  }
+  // int (-M grad delta) W_a = M grad W_a(x)
+  for (int k = 0; k < (1 << D); ++k)
+    nodal.emplace_back(nodeIndex(cornerOf<D>(cell, k)), moment * cornerTentGradient<D>(t, k, settings_.spacing));
   return reduce(nodal);
 }
 
@@ -615,11 +611,7 @@ Vector CutCellGalerkin<D>::surfaceTraction(
     if (!on(p.x)) continue;
     const Vec<D> t = traction(p.x, p.normal) * p.weight;
     const auto [cell, local] = cellAt<D>(p.x, settings_.lower, settings_.spacing, nodes_);
-    for (int k = 0; k < (1 << D); ++k) {
-      std::array<Index, D> corner = cell;
-      for (int a = 0; a < D; ++a) corner[static_cast<std::size_t>(a)] += (k >> a) & 1;
-      nodal.emplace_back(nodeIndex(corner), cornerTent<D>(local, k) * t);
-    }
+    for (int k = 0; k < (1 << D); ++k) nodal.emplace_back(nodeIndex(cornerOf<D>(cell, k)), cornerTent<D>(local, k) * t);
   }
   return reduce(nodal);
 }
@@ -637,11 +629,9 @@ std::vector<std::pair<Index, Real>> CutCellGalerkin<D>::interpolation(const Vec<
     row.emplace_back(dof, w);
   };
   for (int k = 0; k < (1 << D); ++k) {
-    std::array<Index, D> corner = cell;
-    for (int a = 0; a < D; ++a) corner[static_cast<std::size_t>(a)] += (k >> a) & 1;
     const Real w = cornerTent<D>(t, k);
     if (w == 0) continue;
-    const Index a = active_[static_cast<std::size_t>(nodeIndex(corner))];
+    const Index a = active_[static_cast<std::size_t>(nodeIndex(cornerOf<D>(cell, k)))];
     if (a < 0) continue;
     const Index u = unknownOf_[static_cast<std::size_t>(a)];
     if (u >= 0) {
