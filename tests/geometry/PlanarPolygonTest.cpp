@@ -13,7 +13,7 @@ using namespace mfwave;
 
 namespace {
 
-using testing::inputErrorProblem;
+using mfwave::testing::inputErrorProblem;
 
 }  // namespace
 
