@@ -33,12 +33,22 @@ def finest(cases, cells):
 
 
 def probes_of(folder):
+    """The scene, and every probe (the [[probe]] entries and the receivers of [[probe_line]]) with its
+    position, from the run's receivers.csv."""
     with open(os.path.join(folder, "scene.resolved.toml"), "rb") as f:
         scene = tomllib.load(f)
-    return scene, scene.get("probe", [])
+    receivers = os.path.join(folder, "receivers.csv")
+    if not os.path.exists(receivers):
+        return scene, scene.get("probe", [])
+    probes = []
+    for row in read_table(receivers):
+        position = [float(v) for k, v in row.items() if k.startswith("x")]
+        probes.append({"name": row["name"], "position": position})
+    return scene, probes
 
 
 def traces(folder, cases, probes):
+    probes = probes[:6]  # the first few: a record section shows the rest
     has_exact = any(k.endswith("_exact") for k in read_columns(os.path.join(folder, cases[0]["case"] + "-probes.csv")))
     if not has_exact:
         return

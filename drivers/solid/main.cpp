@@ -61,6 +61,23 @@ int run(SceneReader& reader, const Scene& scene, const DriverOptions& options) {
     file.commit();
   }
   summary.files.add("cases.csv");
+  // receivers.csv: where each probe reads and along what (the record section's distances)
+  {
+    AtomicFile file(folder + "/receivers.csv");
+    std::ostream& out = file.stream();
+    out << std::setprecision(12) << "name";
+    for (int a = 0; a < D; ++a) out << ",x" << a << " [m]";
+    for (int a = 0; a < D; ++a) out << ",direction_" << a;
+    out << ",quantity\n";
+    for (const SolidProbe<D>& p : plan.probes) {
+      out << p.name;
+      for (int a = 0; a < D; ++a) out << ',' << p.position[a];
+      for (int a = 0; a < D; ++a) out << ',' << p.direction[a];
+      out << ',' << (p.velocity ? "velocity" : "displacement") << '\n';
+    }
+    file.commit();
+  }
+  summary.files.add("receivers.csv");
   for (const SolidCaseResult& r : results) {
     summary.files.addAll(r.files);
     CaseRecord record;

@@ -20,7 +20,9 @@
 #include "systems/LinearSecondOrderSystem.hpp"
 
 #include <cmath>
+#include <iomanip>
 #include <map>
+#include <sstream>
 
 namespace mfwave::solid {
 
@@ -43,6 +45,17 @@ SceneSchema solidSchema() {
   s.add("probe[].direction", T::NumberArray).withUnit("-").defaultsToNote("the axis of component")
       .describedAs("record the component along this vector (normalised; e.g. a surface's inward normal) in place of "
                    "component's axis");
+  s.add("probe_line", T::TableArray)
+      .describedAs("receiver lines: count probes evenly from `from` to `to`, named <name>_000, <name>_001, ... (written "
+                   "with the other probes, drawn as a record section)");
+  s.add("probe_line[].name", T::String).required().describedAs("the line's name, the prefix of its probes' names");
+  s.add("probe_line[].from", T::NumberArray).withUnit("m").required().describedAs("the first receiver");
+  s.add("probe_line[].to", T::NumberArray).withUnit("m").required().describedAs("the last receiver");
+  s.add("probe_line[].count", T::Integer).withUnit("-").required().between(2, 100000).describedAs("receivers on the line");
+  s.add("probe_line[].quantity", T::String).defaultsTo("\"velocity\"").oneOf({"displacement", "velocity"})
+      .describedAs("recorded field");
+  s.add("probe_line[].direction", T::NumberArray).withUnit("-").required()
+      .describedAs("every receiver records the component along this vector (normalised)");
   s.add("study", T::Table).describedAs("the cases of the solid study");
   s.add("study.spacings", T::NumberArray).withUnit("m").defaultsToNote("geometry.spacing")
       .describedAs("lattice spacings, one case each (each must divide the box)");
@@ -176,6 +189,32 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
     plan.probes.push_back(probe);
   }
 
+  for (std::size_t l = 0; l < reader.count("probe_line"); ++l) {
+    const std::string entry = scene::indexPath("probe_line", l);
+    const auto key = [&](const char* k) { return scene::childPath(entry, k); };
+    const std::string name = reader.string(key("name"));
+    const Vec<D> from = vecOf<D>(reader.numbers(key("from"), D)), to = vecOf<D>(reader.numbers(key("to"), D));
+    const auto count = static_cast<int>(reader.integer(key("count")));
+    const Vec<D> d = vecOf<D>(reader.numbers(key("direction"), D));
+    if (!(d.norm() > 0)) reader.fail(key("direction"), "must not be the zero vector");
+    const bool velocity = reader.string(key("quantity")) == "velocity";
+    for (int k = 0; k < count; ++k) {
+      SolidProbe<D> probe;
+      std::ostringstream label;
+      label << name << '_' << std::setw(3) << std::setfill('0') << k;
+      probe.name = label.str();
+      probe.position = from + (to - from) * (static_cast<Real>(k) / (count - 1));
+      probe.direction = d.normalized();
+      probe.velocity = velocity;
+      if (plan.solid.solid->signedDistance(probe.position) > 1e-9 * g.spacing)
+        reader.fail(key("to"), "receiver " + probe.name + " at " +
+                                   scene::formatPoint(std::vector<Real>(probe.position.data(), probe.position.data() + D)) +
+                                   " lies outside the solid");
+      for (const SolidProbe<D>& other : plan.probes)
+        if (other.name == probe.name) reader.fail(key("name"), "probe " + probe.name + " exists already");
+      plan.probes.push_back(probe);
+    }
+  }
   plan.spacings = reader.has("study.spacings") ? reader.numbers("study.spacings") : std::vector<Real>{g.spacing};
   if (plan.spacings.empty()) reader.fail("study.spacings", "names no spacing");
   for (const Real dx : plan.spacings) {
