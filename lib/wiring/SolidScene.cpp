@@ -61,6 +61,8 @@ void addSolidKeys(SceneSchema& s) {
   s.add("region[].mu", T::Number).withUnit("Pa").defaultsToNote("[material]'s").positive().describedAs("shear modulus");
   s.add("region[].initial_velocity", T::NumberArray).withUnit("m/s").defaultsToNote("at rest")
       .describedAs("velocity of the region's material at t = 0, one entry per axis");
+  s.add("region[].initial_displacement", T::NumberArray).withUnit("m").defaultsToNote("none")
+      .describedAs("displacement of the region's material at t = 0, one entry per axis");
 }
 
 namespace {
@@ -248,6 +250,9 @@ SceneSolid<D> readSceneSolid(SceneReader& reader, const Scene& scene) {
     }
     out.initialVelocity.push_back(reader.has(key("initial_velocity")) ? reader.numbers(key("initial_velocity"), D)
                                                                       : std::vector<Real>{});
+    out.initialDisplacement.push_back(reader.has(key("initial_displacement"))
+                                          ? reader.numbers(key("initial_displacement"), D)
+                                          : std::vector<Real>{});
   }
   if (!out.lastRegionWins && out.regions.size() > 1) {
     forEachNode<D>(g, [&](const Vec<D>& x) {

@@ -35,7 +35,8 @@ struct SceneSolid {
   std::vector<Material> materials;   // [material] first, then each region's
   std::vector<std::string> regionNames;
   std::vector<SolidPtr<D>> regions;  // region i's solid (material i + 1)
-  std::vector<std::vector<Real>> initialVelocity;  // per region (empty: at rest)
+  std::vector<std::vector<Real>> initialVelocity;      // per region (empty: at rest)
+  std::vector<std::vector<Real>> initialDisplacement;  // per region (empty: none)
   bool lastRegionWins = false;
 
   // Index into `materials` at a point of the solid: the last region holding it, else 0.

@@ -1,6 +1,7 @@
 #include "methods/very_weak_sph/CutCellGalerkin.hpp"
 
 #include "core/Error.hpp"
+#include "geometry/PlaneCut.hpp"
 #include "particles/BoxFace.hpp"
 
 #include <algorithm>
@@ -119,6 +120,26 @@ void CutCellGalerkin<D>::cellPoints(const Vec<D>& lower, Real size, int level, s
   gaussPointsOf<D>(lower, size, -1, gauss);
   for (const auto& [x, w] : gauss)
     if (domain_.distance(x) <= 0) out.push_back({x, w, domain_.materialAt(x)});
+  if constexpr (D == 3) {
+    // the surface in a last-level sub-cell as the plane tangent at the point nearest its centre
+    // (normal from the distance's gradient): its area inside the sub-cell in closed form
+    // (geometry/PlaneCut), one point at that nearest point. Exact for a flat surface; a curved one
+    // errs by the order of (curvature x side)^2 per sub-cell.
+    const Real e = 1e-3 * size;
+    Vec3 gradient;
+    for (int a = 0; a < 3; ++a) {
+      Vec3 step = Vec3::Zero();
+      step[a] = e;
+      gradient[a] = (domain_.distance(centre + step) - domain_.distance(centre - step)) / (2 * e);
+    }
+    if (gradient.norm() > 0) {
+      const Vec3 n = gradient.normalized();
+      // at the nearest point, kept in the sub-cell (near a corner it can lie just outside)
+      const Vec3 foot = (centre - d * n).cwiseMax(lower).cwiseMin(lower + Vec3::Constant(size));
+      const Real area = planeCutOfUnitCube<3>(n, -d / size).area * size * size;
+      if (area > 0) surface_.push_back({foot, n, area});
+    }
+  }
   if constexpr (D == 2) {
     // marching squares on the corners: outside where the distance is > 0
     Real s[4];

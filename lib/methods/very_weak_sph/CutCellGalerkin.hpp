@@ -93,9 +93,10 @@ class CutCellGalerkin {
   Vector momentTensor(const Vec<D>& x, const Mat<D>& moment) const;
   Vector surfaceTraction(const std::function<bool(const Vec<D>&)>& on,
                          const std::function<Vec<D>(const Vec<D>& x, const Vec<D>& normal)>& traction) const;
-  // The solid's surface inside cut cells (2-D: segments by marching squares on the last level's
-  // sub-cells; 3-D: not available, empty), each with two Gauss points; with staircase cells, the
-  // faces between kept cells and cells left out (any dimension), 2^(D-1) Gauss points each.
+  // The solid's surface inside cut cells: in 2-D segments by marching squares on the last level's
+  // sub-cells, two Gauss points each; in 3-D one point per cut sub-cell, the tangent plane's area in
+  // it (geometry/PlaneCut); with staircase cells, the faces between kept cells and cells left out,
+  // 2^(D-1) Gauss points each.
   const std::vector<SurfacePoint<D>>& surface() const { return surface_; }
 
   // The field at x as a row over the unknown dofs: component `component` of sum_a W_a(x) u_a.

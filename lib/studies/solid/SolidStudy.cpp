@@ -160,9 +160,6 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
       reader.fail(key + ".type", "the solid study takes point_force, moment_tensor and surface_traction loads (a "
                                  "surface_patch is a box face's: use surface_traction on '<shape>.<surface>')");
     if (load.type != LoadType::SurfaceTraction) continue;
-    if (D != 2)
-      reader.fail(key + ".type", "surface_traction on a solid's surface runs in 2-D (its cut cells' surface is traced by "
-                                 "marching squares); in 3-D use point_force or moment_tensor");
     const std::size_t dot = load.surface.find('.');
     const std::string shape = load.surface.substr(0, dot);
     if (dot == std::string::npos || (shape != "box" && shapeIndex(reader, shape) < 0))
@@ -347,12 +344,14 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
   const TimeStepChoice step = chooseTimeStep(scene.integrator.stepRule(), result.stableStep);
   result.dt = step.dt;
 
-  // initial velocities by region
+  // initial displacements and velocities by region
   Vector u0 = Vector::Zero(n), v0 = Vector::Zero(n);
   for (Index a = 0; a < method.unknownNodes(); ++a) {
     const int region = solid.regionAt(method.unknownPositions()[static_cast<std::size_t>(a)]);
-    if (region < 0 || solid.initialVelocity[static_cast<std::size_t>(region)].empty()) continue;
-    v0.template segment<D>(D * a) = vecOf<D>(solid.initialVelocity[static_cast<std::size_t>(region)]);
+    if (region < 0) continue;
+    const auto r = static_cast<std::size_t>(region);
+    if (!solid.initialVelocity[r].empty()) v0.template segment<D>(D * a) = vecOf<D>(solid.initialVelocity[r]);
+    if (!solid.initialDisplacement[r].empty()) u0.template segment<D>(D * a) = vecOf<D>(solid.initialDisplacement[r]);
   }
   std::unique_ptr<SecondOrderIntegrator> integrator = makeSecondOrderIntegrator(scene.integrator.name, scene.integrator.options);
   integrator->initialise(system, 0, u0, v0, step.dt);

@@ -107,9 +107,19 @@ TEST(CutCellGalerkin, DiscVolumeSurfaceAndPatchTests) {
   EXPECT_NEAR(0.5 * u.dot(disc.stiffness() * u) / (density * kPi), 1.0, 1e-3);
 }
 
-TEST(CutCellGalerkin, BallVolumeIn3d) {
+TEST(CutCellGalerkin, BallVolumeAndSurfaceIn3d) {
   const CutCellGalerkin<3> ball(solidOf<3>([](const Vec3& x) { return x.norm() - 1.0; }), boxOf<3>(1.2, 0.2));
   EXPECT_NEAR(ball.volume() / (4.0 / 3.0 * kPi), 1.0, 1e-3);
+  // the surface: one point per cut sub-cell with the tangent plane's area in it
+  Real area = 0;
+  Vec3 pressure = Vec3::Zero();
+  for (const auto& p : ball.surface()) {
+    area += p.weight;
+    pressure += p.weight * p.normal;
+    EXPECT_NEAR(p.normal.dot(p.x.normalized()), 1.0, 1e-3);
+  }
+  EXPECT_NEAR(area / (4 * kPi), 1.0, 1e-3);
+  EXPECT_LE(pressure.norm(), 1e-3 * area) << "a uniform pressure on a closed surface has no resultant";
   const Vector u = fieldOf<3>(ball, [](const Vec3& x) { return Vec3(x[1], -x[0], 0.5); });
   EXPECT_LE((ball.stiffness() * u).cwiseAbs().maxCoeff(), 1e-11);
 }
