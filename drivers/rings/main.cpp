@@ -33,6 +33,8 @@
 #include "io/scene/Format.hpp"
 #include "io/scene/IntegratorSpec.hpp"
 #include "io/scene/LoadScene.hpp"
+#include "io/scene/ScenePath.hpp"
+#include "wiring/SolidScene.hpp"
 #include "wiring/UpdatedLagrangianSphSpec.hpp"
 
 #include <algorithm>
@@ -54,15 +56,9 @@ SceneSchema ringsSchema() {
   SceneSchema schema = SceneSchema::common();
   addUpdatedLagrangianSphKeys(schema);
   useFirstOrderIntegrators(schema);
-  schema.add("study", T::Table).describedAs("the rings: their size, approach and what is measured");
-  schema.add("study.inner_radius", T::Number).withUnit("m").defaultsTo("0.03").positive()
-      .describedAs("inner radius of each ring");
-  schema.add("study.outer_radius", T::Number).withUnit("m").defaultsTo("0.04").positive()
-      .describedAs("outer radius of each ring (above inner_radius)");
-  schema.add("study.gap", T::Number).withUnit("m").defaultsTo("0.005").positive()
-      .describedAs("distance between the rings' outer edges along x at t = 0 (centres at +-(outer_radius + gap / 2), 0)");
-  schema.add("study.approach_speed", T::Number).withUnit("-").defaultsTo("0.059").positive()
-      .describedAs("speed of each ring towards the other, as a fraction of c0 = sqrt(K / rho0)");
+  // The rings themselves: two [[shape]] annuli and a [[region]] each with its initial velocity.
+  addSolidKeys(schema);
+  schema.add("study", T::Table).describedAs("the rings: what is measured");
   schema.add("study.cases", T::StringArray).defaultsTo("[\"artificial_stress\", \"no_artificial_stress\"]")
       .oneOf(kCaseNames).describedAs("runs: the scene's [method] with the artificial stress on, and off");
   schema.add("study.link_distance", T::Number).withUnit("-").defaultsTo("1.5").positive()
@@ -79,6 +75,72 @@ struct Plan {
   StudySettings study;
   std::vector<CaseSettings> cases;
 };
+
+// The two rings of the scene: [[shape]] annuli of equal radii centred on the x axis at
+// (-offset, 0) and (offset, 0), each the solid of a [[region]] whose initial velocity is along x,
+// the two opposite (each towards the other). Anything else is refused naming the key.
+void readRings(SceneReader& reader, StudySettings& study) {
+  const Scene& scene = study.scene;
+  const SceneSolid<2> solid = readSceneSolid<2>(reader, scene);
+  if (reader.count("shape") != 2 || solid.regions.size() != 2)
+    reader.fail(reader.count("shape") != 2 ? "shape" : "region",
+                "the rings study takes two [[shape]] annuli and a [[region]] for each (its initial velocity)");
+  std::array<Vec2, 2> centre{};
+  std::array<Real, 2> inner{}, outer{}, speed{};
+  for (std::size_t i = 0; i < 2; ++i) {
+    const std::string shape = scene::indexPath("shape", i);
+    const auto key = [&](const char* k) { return scene::childPath(shape, k); };
+    if (reader.string(key("type")) != "annulus") reader.fail(key("type"), "a ring is an annulus");
+    const std::vector<Real> c = reader.numbers(key("centre"), 2);
+    centre[i] = Vec2(c[0], c[1]);
+    inner[i] = reader.number(key("inner_radius"));
+    outer[i] = reader.number(key("outer_radius"));
+    const std::string region = scene::indexPath("region", i);
+    const std::string name = reader.string(key("name"));
+    if (reader.string(scene::childPath(region, "solid")) != name)
+      reader.fail(scene::childPath(region, "solid"), "region " + std::to_string(i) + " must be the ring '" + name + "'");
+    const std::vector<Real>& v = solid.initialVelocity[i];
+    if (v.empty() || v[1] != 0)
+      reader.fail(scene::childPath(region, "initial_velocity"), "each ring moves along x: give [v, 0]");
+    speed[i] = v[0];
+    if (solid.materials[i + 1].lambda() != scene.material.material().lambda() ||
+        solid.materials[i + 1].mu() != scene.material.material().mu() ||
+        solid.materials[i + 1].density() != scene.material.material().density())
+      reader.fail(scene::childPath(region, "density"), "the rings are of [material]: give the region no material");
+  }
+  const std::size_t left = centre[0][0] < centre[1][0] ? 0 : 1, right = 1 - left;
+  if (inner[0] != inner[1] || outer[0] != outer[1])
+    reader.fail("shape[1].outer_radius", "the two rings must be equal (the same inner and outer radii)");
+  if (centre[0][1] != 0 || centre[1][1] != 0 || centre[left][0] != -centre[right][0] || !(centre[right][0] > outer[0]))
+    reader.fail("shape[1].centre", "the rings sit at (-x, 0) and (x, 0) with x above the outer radius (apart)");
+  if (!(speed[left] > 0) || speed[right] != -speed[left])
+    reader.fail("region[" + std::to_string(right) + "].initial_velocity",
+                "the rings approach each other at equal speeds: [v, 0] on the left one, [-v, 0] on the right");
+  study.innerRadius = inner[0];
+  study.outerRadius = outer[0];
+  study.centreOffset = centre[right][0];
+  study.approachSpeed = speed[left];
+  if (study.outerRadius - study.innerRadius < 2 * scene.geometry.spacing)
+    reader.fail("geometry.spacing", "leaves fewer than 2 particles across the ring wall (" +
+                                        scene::formatNumber(study.outerRadius - study.innerRadius) + " m)");
+  {
+    // Two rings of pi (R^2 - r^2) / dp^2 particles; the UL-SPH in 2-D: 2.0 KiB per particle, with a margin.
+    const Real area = 3.14159265358979 * (study.outerRadius * study.outerRadius - study.innerRadius * study.innerRadius);
+    const std::string why =
+        memoryRefusal("rings at dp = " + scene::formatNumber(scene.geometry.spacing),
+                      {2 * area / (scene.geometry.spacing * scene.geometry.spacing), 3072, "the UL-SPH in 2-D, 2.0 KiB: 1.4 KiB measured and its pair table"});
+    if (!why.empty()) reader.fail("geometry.spacing", why);
+  }
+  // The rings span |x| <= offset + outer_radius, |y| <= outer_radius at t = 0: inside the window.
+  const GeometrySpec& g = scene.geometry;
+  const Real reach[2] = {study.centreOffset + study.outerRadius, study.outerRadius};
+  for (std::size_t a = 0; a < 2; ++a)
+    if (g.lower[a] > -reach[a] || g.upper[a] < reach[a])
+      reader.fail("geometry.upper", "the box " + g.describeBox() +
+                                        " (the window of the pictures) does not hold the "
+                                        "rings at t = 0: they span |x| <= " +
+                                        scene::formatNumber(reach[0]) + ", |y| <= " + scene::formatNumber(reach[1]));
+}
 
 Plan readPlan(SceneReader& reader) {
   Plan plan;
@@ -99,32 +161,7 @@ Plan readPlan(SceneReader& reader) {
   const IntegratorSpec& integrator = scene.integrator;  // first-order names (useFirstOrderIntegrators)
   // integrator.cfl is a factor on the method's own step criteria (CFL and viscous, force)
   study.integration = solidIntegrationSettings(integrator);
-  study.innerRadius = reader.number("study.inner_radius");
-  study.outerRadius = reader.number("study.outer_radius");
-  if (!(study.outerRadius > study.innerRadius))
-    reader.fail("study.outer_radius", "must exceed study.inner_radius = " + scene::formatNumber(study.innerRadius));
-  if (study.outerRadius - study.innerRadius < 2 * scene.geometry.spacing)
-    reader.fail("geometry.spacing", "leaves fewer than 2 particles across the ring wall (" +
-                                        scene::formatNumber(study.outerRadius - study.innerRadius) + " m)");
-  {
-    // Two rings of pi (R^2 - r^2) / dp^2 particles; the UL-SPH in 2-D: 2.0 KiB per particle, with a margin.
-    const Real area = 3.14159265358979 * (study.outerRadius * study.outerRadius - study.innerRadius * study.innerRadius);
-    const std::string why =
-        memoryRefusal("rings at dp = " + scene::formatNumber(scene.geometry.spacing),
-                      {2 * area / (scene.geometry.spacing * scene.geometry.spacing), 3072, "the UL-SPH in 2-D, 2.0 KiB: 1.4 KiB measured and its pair table"});
-    if (!why.empty()) reader.fail("geometry.spacing", why);
-  }
-  study.gap = reader.number("study.gap");
-  // The rings span |x| <= 2 outer_radius + gap / 2, |y| <= outer_radius at t = 0: inside the window.
-  const GeometrySpec& g = scene.geometry;
-  const Real reach[2] = {2 * study.outerRadius + 0.5 * study.gap, study.outerRadius};
-  for (std::size_t a = 0; a < 2; ++a)
-    if (g.lower[a] > -reach[a] || g.upper[a] < reach[a])
-      reader.fail("geometry.upper", "the box " + g.describeBox() +
-                                        " (the window of the pictures) does not hold the "
-                                        "rings at t = 0: they span |x| <= " +
-                                        scene::formatNumber(reach[0]) + ", |y| <= " + scene::formatNumber(reach[1]));
-  study.approachFraction = reader.number("study.approach_speed");
+  readRings(reader, study);
   study.linkDistance = reader.number("study.link_distance");
   study.zigzagThreshold = reader.number("study.zigzag_threshold");
   study.snapshots = static_cast<int>(reader.integer("study.snapshots"));

@@ -1,6 +1,7 @@
 #include "wiring/SolidScene.hpp"
 
 #include "core/Error.hpp"
+#include "geometry/Annulus.hpp"
 #include "geometry/Ball.hpp"
 #include "geometry/BoxSolid.hpp"
 #include "geometry/Cylinder.hpp"
@@ -31,15 +32,20 @@ void addSolidKeys(SceneSchema& s) {
   s.add("shape", T::TableArray).describedAs("named shapes the solid and the regions are made of");
   s.add("shape[].name", T::String).required().describedAs("the shape's name in expressions and surface names");
   s.add("shape[].type", T::String).required()
-      .oneOf({"box", "half_space", "ball", "cylinder", "polygon", "extruded_polygon", "mesh"})
-      .describedAs("kind of shape (ball is a disc in 2-D; cylinder, extruded_polygon and mesh are 3-D; polygon 2-D)");
+      .oneOf({"box", "half_space", "ball", "annulus", "cylinder", "polygon", "extruded_polygon", "mesh"})
+      .describedAs("kind of shape (ball is a disc in 2-D, annulus a spherical shell in 3-D; cylinder, extruded_polygon "
+                   "and mesh are 3-D; polygon 2-D)");
   s.add("shape[].lower", T::NumberArray).withUnit("m").required().when("type = box").describedAs("lower corner");
   s.add("shape[].upper", T::NumberArray).withUnit("m").required().when("type = box").describedAs("upper corner");
   s.add("shape[].point", T::NumberArray).withUnit("m").required().when("type = half_space")
       .describedAs("a point of the bounding plane (line in 2-D)");
   s.add("shape[].normal", T::NumberArray).withUnit("-").required().when("type = half_space")
       .describedAs("the plane's normal, pointing out of the half-space");
-  s.add("shape[].centre", T::NumberArray).withUnit("m").required().when("type = ball").describedAs("centre");
+  s.add("shape[].centre", T::NumberArray).withUnit("m").required().when("type = ball or annulus").describedAs("centre");
+  s.add("shape[].inner_radius", T::Number).withUnit("m").required().positive().when("type = annulus")
+      .describedAs("an annulus's inner radius");
+  s.add("shape[].outer_radius", T::Number).withUnit("m").required().positive().when("type = annulus")
+      .describedAs("an annulus's outer radius (above inner_radius)");
   s.add("shape[].radius", T::Number).withUnit("m").required().positive().when("type = ball or cylinder")
       .describedAs("radius");
   s.add("shape[].start", T::NumberArray).withUnit("m").required().when("type = cylinder")
@@ -94,6 +100,9 @@ SolidPtr<D> readShape(SceneReader& reader, std::size_t i, const std::string& nam
                                             name);
     if (type == "ball")
       return std::make_shared<Ball<D>>(vec<D>(reader.numbers(key("centre"), d)), reader.number(key("radius")), name);
+    if (type == "annulus")
+      return std::make_shared<Annulus<D>>(vec<D>(reader.numbers(key("centre"), d)), reader.number(key("inner_radius")),
+                                          reader.number(key("outer_radius")), name);
     if constexpr (D == 2) {
       if (type == "polygon") {
         const std::vector<Real> v = reader.numbers(key("vertices"));

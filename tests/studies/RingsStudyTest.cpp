@@ -99,14 +99,14 @@ TEST(RingsStudy, CoarseRingsReboundWholeOnlyWithTheArtificialStress) {
 TEST(RingsStudy, BadInputNamesItsKey) {
   const fs::path out = fs::temp_directory_path() / "mfwave-rings-bad";
   fs::remove_all(out);
-  Outcome run = runRings("--set study.outer_radius=0.02 --out " + out.string(), "bad-radius");
+  Outcome run = runRings("--set shape[1].outer_radius=0.035 --out " + out.string(), "bad-radius");  // unequal rings
   EXPECT_TRUE(run.exited);
   EXPECT_EQ(run.exitCode, 2) << run.log;
-  EXPECT_NE(run.log.find("study.outer_radius"), std::string::npos) << run.log;
+  EXPECT_NE(run.log.find("shape[1].outer_radius"), std::string::npos) << run.log;
   run = runRings("--set 'study.cases=[\"artificial_stress\", \"sticky\"]' --out " + out.string(), "bad-case");
   EXPECT_EQ(run.exitCode, 2) << run.log;
   EXPECT_NE(run.log.find("study.cases"), std::string::npos) << run.log;
-  run = runRings("--set study.gap=0.1 --out " + out.string(), "bad-window");  // the rings leave the window
+  run = runRings("--set shape[0].centre=[-0.07,0.0] --set shape[1].centre=[0.07,0.0] --out " + out.string(), "bad-window");  // the rings leave the window
   EXPECT_EQ(run.exitCode, 2) << run.log;
   EXPECT_NE(run.log.find("geometry.upper"), std::string::npos) << run.log;
   run = runRings("--set method.name=finite_difference --out " + out.string(), "bad-method");

@@ -39,7 +39,7 @@ constexpr int D = 2;
 // first, their outer edges `gap` apart.
 ParticleSet<D> makeRings(const StudySettings& study, Index& leftCount) {
   const Real dp = study.scene.geometry.spacing;
-  const Real offset = study.outerRadius + 0.5 * study.gap;
+  const Real offset = study.centreOffset;
   ParticleSet<D> rings = makeAnnulus(Vec2(-offset, 0), study.innerRadius, study.outerRadius, dp);
   leftCount = rings.physicalCount();
   appendParticles(rings, makeAnnulus(Vec2(offset, 0), study.innerRadius, study.outerRadius, dp));
@@ -130,9 +130,9 @@ CaseResult runCase(const StudySettings& study, const CaseSettings& settings, con
   result.links = static_cast<Index>(links.size());
   const Material& material = options.material;
   result.soundSpeed = std::sqrt(material.bulkModulus() / material.density());
-  result.approachSpeed = study.approachFraction * result.soundSpeed;
+  result.approachSpeed = study.approachSpeed;
 
-  // the rings approach each other along x, each at approachFraction c0
+  // the rings approach each other along x (the scene's regions' initial velocities)
   Vector velocity = Vector::Zero(record.particles * D);
   for (Index i = 0; i < record.particles; ++i)
     velocity[i * D] = i < leftCount ? result.approachSpeed : -result.approachSpeed;

@@ -18,10 +18,13 @@ struct StudySettings {
   Scene scene;
   UpdatedLagrangianSphOptions method;  // the scene's [method] (artificial stress switched per case)
   SolidIntegrationSettings integration;
+  // The two annuli of the scene ([[shape]] type annulus, [[region]] initial velocities): centred
+  // at (-centreOffset, 0) and (centreOffset, 0), the left one moving at +approachSpeed along x and
+  // the right one at -approachSpeed.
   Real innerRadius = 0.03;        // m
   Real outerRadius = 0.04;        // m
-  Real gap = 0.004;               // m, between the rings' outer edges along x at t = 0
-  Real approachFraction = 0.059;  // each ring moves at this fraction of c0 = sqrt(K / rho0)
+  Real centreOffset = 0.0425;     // m
+  Real approachSpeed = 237.9;     // m/s
   Real linkDistance = 1.5;        // fragments: particles closer than this many spacings are joined
   Real zigzagThreshold = 0.1;     // report the first time the zig-zag indicator exceeds this
   int snapshots = 6;              // position snapshots at evenly spaced times (t = 0 and the end included)
