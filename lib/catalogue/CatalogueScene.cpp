@@ -66,10 +66,10 @@ std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const 
     const char* key = root.contains("shape") ? "shape" : root.contains("region") ? "region"
                       : root.at_path("geometry.solid")  ? "geometry.solid"
                                                         : nullptr;
-    if (key && !entry->supports.solids) {
+    if (key && entry->supports.solidPrograms.empty()) {
       std::string by;
       for (const MethodEntry& m : methodCatalogue())
-        if (m.supports.solids) by += (by.empty() ? "" : ", ") + m.name;
+        if (!m.supports.solidPrograms.empty()) by += (by.empty() ? "" : ", ") + m.name;
       throw reader.error(key, entry->name + " does not support solids other than the box; supported by: " + by);
     }
     if (key)

@@ -80,7 +80,7 @@ std::vector<MethodEntry> makeCatalogue() {
                   {B::Free, B::Fixed, B::Traction, B::Displacement, B::Transmitting, B::Symmetry},
                   {L::SurfacePatch, L::PointForce, L::MomentTensor, L::SurfaceTraction},
                   secondOrder};
-    m.supports.solids = true;  // the galerkin variant on cut cells (the solid study)
+    m.supports.solidPrograms = {"solid"};  // the galerkin variant on cut cells
     m.addOptions = addVeryWeakSphKeys;
     m.stepRule = "cfl x 2 / omega_max of M^-1 K, omega_max from a power iteration on the assembled operator";
     m.cost.baseMiB = {0, 31.9, 35};
@@ -173,6 +173,7 @@ std::vector<MethodEntry> makeCatalogue() {
                   firstOrderIntegratorNames(),
                   true,
                   {{B::Transmitting, B::Free}}};
+    m.supports.solidPrograms = {"rings"};  // two annulus shapes with opposite initial velocities
     m.addOptions = addUpdatedLagrangianSphKeys;
     m.stepRule = "cfl x the method's own CFL, viscous and force criteria, evaluated before every step";
     m.cost.baseMiB = {33, 32.1, 35};

@@ -37,9 +37,9 @@ struct MethodSupport {
   // does and says in a note (the Lamb study: RK collocation fixes the transmitting faces, the UL-SPH
   // leaves them free): {scene's type, the type that stands in}.
   std::vector<std::pair<BoundaryType, BoundaryType>> standIns = {};
-  // Solids other than the box ([[shape]], geometry.solid, [[region]]: wiring/SolidScene), run by the
-  // programs that read them (the solid study).
-  bool solids = false;
+  // Solids other than the box ([[shape]], geometry.solid, [[region]]: wiring/SolidScene): the
+  // programs that run the method on them (empty: the method runs boxes only).
+  std::vector<std::string> solidPrograms = {};
 };
 
 // Measured cost of a whole run on one core, per dimension (index D - 1); 0 where not measured. The

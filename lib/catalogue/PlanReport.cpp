@@ -151,7 +151,10 @@ void printCatalogue(std::ostream& out) {
         << "    " << m.summary << '\n';
     if (!m.variants.empty()) out << "    variants     " << scene::joinNames(m.variants) << " (method.variant)\n";
     out << "    dimensions   " << names(s.dimensions, [](int d) { return std::to_string(d) + "-D"; }) << '\n'
-        << "    geometry     " << names(s.shapes, [](const std::string& x) { return x; }) << '\n'
+        << "    geometry     " << names(s.shapes, [](const std::string& x) { return x; })
+        << (s.solidPrograms.empty() ? std::string()
+                                    : "; solids of shapes in " + names(s.solidPrograms, [](const std::string& x) { return x; }))
+        << '\n'
         << "    boundaries   " << names(s.boundaries, boundaryTypeName) << '\n'
         << "    loads        " << names(s.loads, loadTypeName) << '\n'
         << "    integrators  " << names(s.integrators, [](const std::string& x) { return x; }) << '\n'
@@ -171,6 +174,7 @@ nlohmann::json catalogueJson() {
     e["variants"] = m.variants;
     e["dimensions"] = m.supports.dimensions;
     e["geometry"] = m.supports.shapes;
+    e["solid_programs"] = m.supports.solidPrograms;
     std::vector<std::string> b, l;
     for (BoundaryType t : m.supports.boundaries) b.push_back(boundaryTypeName(t));
     for (LoadType t : m.supports.loads) l.push_back(loadTypeName(t));
