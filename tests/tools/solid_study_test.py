@@ -130,6 +130,25 @@ def main():
                                 (" ".join(scene_args[1:]) or scene_args[0], code, key, ", " + text if text else "", out))
             else:
                 print("refused: " + out.strip().splitlines()[-1])
+        # a receiver grid across the cavity: the 2 of its 25 points inside the cavity are left out
+        with open(cavity) as f:
+            text = f.read()
+        grid = os.path.join(work, "grid.toml")
+        with open(grid, "w") as f:
+            f.write(text + '\n[[probe_grid]]\nname = "map"\nlower = [0.5, -2.5]\nupper = [2.5, -0.5]\n'
+                    'counts = [5, 5]\ndirection = [0.0, 1.0]\n')
+        out = os.path.join(work, "grid")
+        code, text_out = run([args.solid, "--scene", grid, "--out", out, "--quiet", "--set", "geometry.spacing=0.25",
+                              "--set", "integrator.end_time=1", "--set", "output.png=false", "--set", "output.vtk=false"])
+        columns = []
+        if code == 0:
+            with open(os.path.join(out, "cut_0.25-probes.csv")) as f:
+                columns = [c for c in f.readline().strip().split(",") if c.startswith("map_")]
+        if code != 0 or len(columns) != 23:
+            failures.append("probe grid: exit %d, %d receivers (want 23: 25 less the 2 in the cavity)\n%s" %
+                            (code, len(columns), text_out))
+        else:
+            print("probe grid: 23 of 25 receivers in the solid")
         # two overlapping regions: refused without the rule, run with it
         with open(cavity) as f:
             text = f.read()

@@ -56,6 +56,18 @@ SceneSchema solidSchema() {
       .describedAs("recorded field");
   s.add("probe_line[].direction", T::NumberArray).withUnit("-").required()
       .describedAs("every receiver records the component along this vector (normalised)");
+  s.add("probe_grid", T::TableArray)
+      .describedAs("receiver grids: counts[a] receivers evenly along each axis from lower to upper, named "
+                   "<name>_<i>_<j>(_<k>); points outside the solid are left out");
+  s.add("probe_grid[].name", T::String).required().describedAs("the grid's name, the prefix of its probes' names");
+  s.add("probe_grid[].lower", T::NumberArray).withUnit("m").required().describedAs("the grid's lower corner");
+  s.add("probe_grid[].upper", T::NumberArray).withUnit("m").required().describedAs("the grid's upper corner");
+  s.add("probe_grid[].counts", T::NumberArray).withUnit("-").required()
+      .describedAs("receivers along each axis (whole numbers >= 1; 1 puts them at lower)");
+  s.add("probe_grid[].quantity", T::String).defaultsTo("\"velocity\"").oneOf({"displacement", "velocity"})
+      .describedAs("recorded field");
+  s.add("probe_grid[].direction", T::NumberArray).withUnit("-").required()
+      .describedAs("every receiver records the component along this vector (normalised)");
   s.add("study", T::Table).describedAs("the cases of the solid study");
   s.add("study.spacings", T::NumberArray).withUnit("m").defaultsToNote("geometry.spacing")
       .describedAs("lattice spacings, one case each (each must divide the box)");
@@ -211,6 +223,44 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
         if (other.name == probe.name) reader.fail(key("name"), "probe " + probe.name + " exists already");
       plan.probes.push_back(probe);
     }
+  }
+  for (std::size_t l = 0; l < reader.count("probe_grid"); ++l) {
+    const std::string entry = scene::indexPath("probe_grid", l);
+    const auto key = [&](const char* k) { return scene::childPath(entry, k); };
+    const std::string name = reader.string(key("name"));
+    const Vec<D> lower = vecOf<D>(reader.numbers(key("lower"), D)), upper = vecOf<D>(reader.numbers(key("upper"), D));
+    const std::vector<int> counts = reader.wholeNumbers(key("counts"));
+    if (counts.size() != static_cast<std::size_t>(D)) reader.fail(key("counts"), "needs one count per axis");
+    Index total = 1;
+    for (const int c : counts) {
+      if (c < 1) reader.fail(key("counts"), "every count must be at least 1");
+      total *= c;
+    }
+    if (total > 100000) reader.fail(key("counts"), "more than 100000 receivers in one grid");
+    const Vec<D> d = vecOf<D>(reader.numbers(key("direction"), D));
+    if (!(d.norm() > 0)) reader.fail(key("direction"), "must not be the zero vector");
+    const bool velocity = reader.string(key("quantity")) == "velocity";
+    Index kept = 0;
+    for (Index p = 0; p < total; ++p) {
+      Index rest = p;
+      SolidProbe<D> probe;
+      std::ostringstream label;
+      label << name;
+      for (int a = 0; a < D; ++a) {
+        const int c = counts[static_cast<std::size_t>(a)];
+        const Index i = rest % c;
+        rest /= c;
+        probe.position[a] = c == 1 ? lower[a] : lower[a] + (upper[a] - lower[a]) * static_cast<Real>(i) / (c - 1);
+        label << '_' << i;
+      }
+      if (plan.solid.solid->signedDistance(probe.position) > 1e-9 * g.spacing) continue;  // outside the solid
+      probe.name = label.str();
+      probe.direction = d.normalized();
+      probe.velocity = velocity;
+      plan.probes.push_back(probe);
+      ++kept;
+    }
+    if (kept == 0) reader.fail(key("lower"), "no receiver of grid '" + name + "' lies in the solid");
   }
   plan.spacings = reader.has("study.spacings") ? reader.numbers("study.spacings") : std::vector<Real>{g.spacing};
   if (plan.spacings.empty()) reader.fail("study.spacings", "names no spacing");
