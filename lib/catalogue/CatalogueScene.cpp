@@ -6,6 +6,7 @@
 #include "io/scene/Format.hpp"
 #include "io/scene/LoadScene.hpp"
 #include "io/scene/SceneError.hpp"
+#include "wiring/SolidScene.hpp"
 #include "wiring/UpdatedLagrangianSphSpec.hpp"
 
 #include <toml++/toml.h>
@@ -13,6 +14,29 @@
 #include <algorithm>
 
 namespace mfwave {
+
+namespace {
+
+// The share of the box's lattice nodes inside the scene's solid (readSceneSolid also checks it).
+template <int D>
+Real solidFractionOf(SceneReader& reader, const Scene& scene) {
+  const SceneSolid<D> solid = readSceneSolid<D>(reader, scene);
+  const GeometrySpec& g = scene.geometry;
+  Index inside = 0, total = g.particleCount();
+  for (Index p = 0; p < total; ++p) {
+    Index rest = p;
+    Vec<D> x;
+    for (int a = 0; a < D; ++a) {
+      const auto k = static_cast<std::size_t>(a);
+      x[a] = g.lower[k] + static_cast<Real>(rest % (g.intervals[k] + 1)) * g.spacing;
+      rest /= g.intervals[k] + 1;
+    }
+    if (solid.solid->signedDistance(x) <= 0) ++inside;
+  }
+  return static_cast<Real>(inside) / static_cast<Real>(total);
+}
+
+}  // namespace
 
 std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const std::vector<std::string>& overrides) {
   const SceneReader first = loadScene(path, overrides);
@@ -60,7 +84,8 @@ std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const 
     out.choice.gradientCorrection =
         root.at_path("method.kernel_gradient_correction").value<bool>().value_or(study.kernelGradientCorrection);
   }
-  // A solid other than the box: only the methods that model one (MethodSupport::solids).
+  // A solid other than the box: only the methods that model one (MethodSupport::solidPrograms); the
+  // plan counts the nodes inside it.
   {
     const toml::table& root = first.root();
     const char* key = root.contains("shape") ? "shape" : root.contains("region") ? "region"
@@ -72,10 +97,14 @@ std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const 
         if (!m.supports.solidPrograms.empty()) by += (by.empty() ? "" : ", ") + m.name;
       throw reader.error(key, entry->name + " does not support solids other than the box; supported by: " + by);
     }
-    if (key)
-      out.notes.push_back("the solid is made of shapes: the plan counts the box's lattice (an upper bound) at the lattice "
-                          "storage's cost; the solid study's cut cells are sparse matrices, measured about 2.6 kB per "
-                          "node and 1.5e6 node-steps/s (docs/studies/geometry.md): expect more memory and time");
+    if (key) {
+      SceneSchema schema = catalogueSchema(*entry);
+      addSolidKeys(schema);
+      SceneReader solidReader = loadScene(path, sets, schema);
+      const Scene scene = readScene(solidReader);
+      out.choice.solidFraction = scene.geometry.dimension == 3 ? solidFractionOf<3>(solidReader, scene)
+                                                               : solidFractionOf<2>(solidReader, scene);
+    }
   }
   const std::vector<UnsupportedFeature> problems = unsupportedFeatures(out.scene, *entry);
   if (!problems.empty()) throw reader.error(problems.front().key, problems.front().message());

@@ -81,6 +81,12 @@ std::vector<MethodEntry> makeCatalogue() {
                   {L::SurfacePatch, L::PointForce, L::MomentTensor, L::SurfaceTraction},
                   secondOrder};
     m.supports.solidPrograms = {"solid"};  // the galerkin variant on cut cells
+    m.cost.solidBaseMiB = {0, 40, 150};
+    m.cost.solidBytesPerParticle = {0, 3100, 23500};
+    m.cost.solidParticleStepsPerSecond = {0, 3.0e7, 4.0e6};
+    m.cost.solidSetupSecondsPerParticle = {0, 1.0e-5, 1.5e-4};
+    m.cost.solidMeasured = "the solid study, cut cells and staircase in one run: lamb2d_inclined.toml at dx = 0.0625 "
+                           "and 0.03125 (2-D); a half-space with a ball cavity at dx = 0.125 and 0.0625 (3-D)";
     m.addOptions = addVeryWeakSphKeys;
     m.stepRule = "cfl x 2 / omega_max of M^-1 K, omega_max from a power iteration on the assembled operator";
     m.cost.baseMiB = {0, 31.9, 35};

@@ -58,6 +58,14 @@ struct MethodCost {
   std::array<double, 3> growthNodes{1, 1, 1};
   double growthExponent = 1;
   std::string measured;  // where the figures come from (scene, spacings, date)
+  // On a scene's own solid (the program that runs the method on shapes assembles differently: the
+  // cut-cell Galerkin's sparse matrices): per node inside the solid; 0 where not measured (the box
+  // figures then serve).
+  std::array<double, 3> solidBaseMiB{};
+  std::array<double, 3> solidBytesPerParticle{};
+  std::array<double, 3> solidParticleStepsPerSecond{};
+  std::array<double, 3> solidSetupSecondsPerParticle{};
+  std::string solidMeasured;
 };
 
 // How the plan reaches the method's spectrum.

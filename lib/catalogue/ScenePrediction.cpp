@@ -165,13 +165,30 @@ Prediction predictScene(const Scene& scene, const MethodChoice& c, Real spacing,
   p.particles = g.particleCount();
   const bool ghosts = m.name == "very_weak_sph" && c.variant != "galerkin";
   if (ghosts) p.particles += ghostParticles(g);
+  const std::size_t dim = static_cast<std::size_t>(d - 1);
+  MethodCost cost = m.cost;
+  if (c.solidFraction > 0) {
+    p.particles = static_cast<Index>(std::llround(c.solidFraction * static_cast<Real>(g.particleCount())));
+    if (cost.solidBytesPerParticle[dim] > 0) {
+      cost.baseMiB[dim] = cost.solidBaseMiB[dim];
+      cost.bytesPerParticle[dim] = cost.solidBytesPerParticle[dim];
+      cost.particleStepsPerSecond[dim] = cost.solidParticleStepsPerSecond[dim];
+      cost.setupSecondsPerParticle[dim] = cost.solidSetupSecondsPerParticle[dim];
+      cost.fillMiB[dim] = 0;
+      cost.growthExponent = 1;
+      p.notes.push_back("the solid's share of the box's lattice (" + std::to_string(std::lround(100 * c.solidFraction)) +
+                        " %) at the cost measured on solids (" + cost.solidMeasured + ")");
+    } else {
+      p.notes.push_back("the solid's share of the box's lattice (" + std::to_string(std::lround(100 * c.solidFraction)) +
+                        " %), at the method's cost on boxes (none measured on solids)");
+    }
+  }
 
   p.hasSource = source.found;
   p.frequency = source.frequency;
   p.frequencySource = source.found ? source.source + " (" + source.rule + ")" : "";
 
-  const std::size_t di = static_cast<std::size_t>(d - 1);
-  const MethodCost& cost = m.cost;
+  const std::size_t di = dim;
   const double n = static_cast<double>(p.particles);
   p.memoryBytes = (cost.baseMiB[di] + cost.fillMiB[di] * std::pow(n / cost.fillNodes, cost.fillExponent)) * 1048576.0 +
                   cost.bytesPerParticle[di] * n;

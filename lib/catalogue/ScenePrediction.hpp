@@ -36,6 +36,9 @@ struct MethodChoice {
   bool gradientCorrection = false;      // UL-SPH kernel-gradient correction
   Real courant = 0.3;                   // UL-SPH Courant number
   Real viscosityAlpha = 0.1;            // UL-SPH Monaghan alpha (its step shrinks by 1 + 1.2 alpha)
+  // A scene's own solid: the fraction of the box's lattice nodes inside it (0: the box itself). The
+  // plan counts that share of the nodes, at the method's cost on solids where measured.
+  Real solidFraction = 0;
 
   std::string label() const;  // "very_weak_sph (galerkin)", "reproducing_kernel (m = 2, a/h = 2.2)"
 };
