@@ -2,7 +2,8 @@
 // interface between two materials of impedance ratio Z2 / Z1 = 3 (and wave-speed ratio 2) splits
 // into a reflected pulse of displacement amplitude (Z1 - Z2) / (Z1 + Z2) = -1/2 and a transmitted one
 // of 2 Z1 / (Z1 + Z2) = 1/2, stretched by c2 / c1. Measured on a box periodic across the pulse (a
-// 1-D problem in a 2-D and a 3-D mesh), each amplitude fitted to the exact shape, within 1 % of the
+// 1-D problem in a 2-D and a 3-D mesh, the 3-D one with a narrower pulse in a shorter box), each
+// amplitude fitted to the exact shape, within 1 % of the
 // exact coefficient, the shapes within 2 %, and the energy conserved. One material in both layers
 // reflects nothing, and an element no region covers is refused by name.
 
@@ -28,17 +29,22 @@ Real bumpSlope(Real s, Real w) {
   return std::abs(r) < 1 ? -8 * r / w * std::pow(1 - r * r, 3) : 0.0;
 }
 
-constexpr Real kTop = 6, kBottom = -10, kStart = 4, kHalfWidth = 1;  // interface at y = 0
+// The box along y (interface at y = 0) and the pulse: its start and half-width. The 3-D case runs a
+// pulse half as wide in a box half as tall (a quarter of the work; the same code path).
+struct Layout {
+  Real top, bottom, start, halfWidth;
+};
+constexpr Layout kWide{6, -10, 4, 1}, kNarrow{3, -5, 2, 0.5};
 
 template <int D>
-SpectralElementSettings<D> layeredBox(const Material& upper, const Material& lower) {
+SpectralElementSettings<D> layeredBox(const Material& upper, const Material& lower, const Layout& layout = kWide) {
   SpectralElementSettings<D> s;
   s.elementSize = 0.25;
   s.order = 4;
   s.lower = Vec<D>::Zero();
   s.upper = Vec<D>::Constant(0.5);  // two elements across, periodic
-  s.lower[1] = kBottom;
-  s.upper[1] = kTop;
+  s.lower[1] = layout.bottom;
+  s.upper[1] = layout.top;
   s.faces = SpectralElementSettings<D>::uniformFaces(SpectralElementFace::Periodic);
   s.faces[2] = s.faces[3] = SpectralElementFace::Free;
   s.regionMaterials = {upper, lower};
@@ -56,8 +62,9 @@ struct Split {
 // differences to t = 2 y0 / c1, when the exact reflected pulse is R g(y0 - y) and the transmitted
 // one T g(y c1 / c2 + y0).
 template <int D>
-Split splitPulse(const Material& upper, const Material& lower) {
-  SpectralElementElasticity<D> system(layeredBox<D>(upper, lower));
+Split splitPulse(const Material& upper, const Material& lower, const Layout& layout = kWide) {
+  SpectralElementElasticity<D> system(layeredBox<D>(upper, lower, layout));
+  const Real kStart = layout.start, kHalfWidth = layout.halfWidth;
   const Real c1 = upper.pWaveSpeed(), c2 = lower.pWaveSpeed();
   const Index n = system.nodeCount();
   const Real end = 2 * kStart / c1, dt = 0.002;
@@ -122,12 +129,12 @@ const Material kUpper = Material::fromLame(1.0, 1.0, 1.0);  // c_p = sqrt 3, Z1 
 const Material kLower = Material::fromLame(6.0, 6.0, 1.5);  // c_p = 2 sqrt 3, Z2 = 3 sqrt 3
 
 template <int D>
-void expectImpedanceRatioThree() {
+void expectImpedanceRatioThree(const Layout& layout) {
   SCOPED_TRACE(std::to_string(D) + "-D");
   const Real z1 = kUpper.density() * kUpper.pWaveSpeed(), z2 = kLower.density() * kLower.pWaveSpeed();
   ASSERT_NEAR(z2 / z1, 3.0, 1e-12);
   const Real reflection = (z1 - z2) / (z1 + z2), transmission = 2 * z1 / (z1 + z2);
-  const Split split = splitPulse<D>(kUpper, kLower);
+  const Split split = splitPulse<D>(kUpper, kLower, layout);
   std::printf("%d-D: reflected %.5f (exact %.5f), transmitted %.5f (exact %.5f), shape misfit %.2e / %.2e, energy drift %.1e\n",
               D, split.reflected, reflection, split.transmitted, transmission, split.reflectedShape,
               split.transmittedShape, split.energyDrift);
@@ -139,9 +146,9 @@ void expectImpedanceRatioThree() {
   EXPECT_LT(split.energyDrift, 1e-3);
 }
 
-TEST(SpectralElementInterface, ImpedanceRatioThreeIn2d) { expectImpedanceRatioThree<2>(); }
+TEST(SpectralElementInterface, ImpedanceRatioThreeIn2d) { expectImpedanceRatioThree<2>(kWide); }
 
-TEST(SpectralElementInterface, ImpedanceRatioThreeIn3d) { expectImpedanceRatioThree<3>(); }
+TEST(SpectralElementInterface, ImpedanceRatioThreeIn3d) { expectImpedanceRatioThree<3>(kNarrow); }
 
 TEST(SpectralElementInterface, OneMaterialReflectsNothing) {
   const Split split = splitPulse<2>(kUpper, kUpper);
