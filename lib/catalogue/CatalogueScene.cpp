@@ -15,29 +15,6 @@
 
 namespace mfwave {
 
-namespace {
-
-// The share of the box's lattice nodes inside the scene's solid (readSceneSolid also checks it).
-template <int D>
-Real solidFractionOf(SceneReader& reader, const Scene& scene) {
-  const SceneSolid<D> solid = readSceneSolid<D>(reader, scene);
-  const GeometrySpec& g = scene.geometry;
-  Index inside = 0, total = g.particleCount();
-  for (Index p = 0; p < total; ++p) {
-    Index rest = p;
-    Vec<D> x;
-    for (int a = 0; a < D; ++a) {
-      const auto k = static_cast<std::size_t>(a);
-      x[a] = g.lower[k] + static_cast<Real>(rest % (g.intervals[k] + 1)) * g.spacing;
-      rest /= g.intervals[k] + 1;
-    }
-    if (solid.solid->signedDistance(x) <= 0) ++inside;
-  }
-  return static_cast<Real>(inside) / static_cast<Real>(total);
-}
-
-}  // namespace
-
 std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const std::vector<std::string>& overrides) {
   const SceneReader first = loadScene(path, overrides);
   if (!first.root().contains("scene")) return std::nullopt;
@@ -68,9 +45,28 @@ std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const 
                         "criteria, Monaghan alpha 1, corrected kernel gradients, unless the scene's "
                         "method.viscosity_alpha / method.kernel_gradient_correction say otherwise)");
   }
-  SceneReader reader = loadScene(path, sets, catalogueSchema(*entry));
+  // A solid other than the box ([[shape]], [[region]], geometry.solid): only the methods that model
+  // one (MethodSupport::solidPrograms); the scene is then read with the solid's keys, and the plan
+  // counts the lattice nodes inside the solid.
+  const toml::table& firstRoot = first.root();
+  const char* solidKey = firstRoot.contains("shape")            ? "shape"
+                         : firstRoot.contains("region")         ? "region"
+                         : firstRoot.at_path("geometry.solid") ? "geometry.solid"
+                                                               : nullptr;
+  if (solidKey && entry->supports.solidPrograms.empty()) {
+    std::string by;
+    for (const MethodEntry& m : methodCatalogue())
+      if (!m.supports.solidPrograms.empty()) by += (by.empty() ? "" : ", ") + m.name;
+    throw first.error(solidKey, entry->name + " does not support solids other than the box; supported by: " + by);
+  }
+  SceneSchema schema = catalogueSchema(*entry);
+  if (solidKey) addSolidKeys(schema);
+  SceneReader reader = loadScene(path, sets, schema);
   out.scene = readScene(reader);
   out.choice = readMethodChoice(reader, *entry, out.scene.geometry.dimension);
+  if (solidKey)
+    out.choice.solidFraction = out.scene.geometry.dimension == 3 ? readSceneSolid<3>(reader, out.scene).latticeFraction
+                                                                 : readSceneSolid<2>(reader, out.scene).latticeFraction;
   if (asTheLambStudy) {
     // What the scene itself sets (the first reader's table holds no defaults filled in).
     const toml::table& root = first.root();
@@ -83,28 +79,6 @@ std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const 
     out.choice.viscosityAlpha = root.at_path("method.viscosity_alpha").value<double>().value_or(study.viscosityAlpha);
     out.choice.gradientCorrection =
         root.at_path("method.kernel_gradient_correction").value<bool>().value_or(study.kernelGradientCorrection);
-  }
-  // A solid other than the box: only the methods that model one (MethodSupport::solidPrograms); the
-  // plan counts the nodes inside it.
-  {
-    const toml::table& root = first.root();
-    const char* key = root.contains("shape") ? "shape" : root.contains("region") ? "region"
-                      : root.at_path("geometry.solid")  ? "geometry.solid"
-                                                        : nullptr;
-    if (key && entry->supports.solidPrograms.empty()) {
-      std::string by;
-      for (const MethodEntry& m : methodCatalogue())
-        if (!m.supports.solidPrograms.empty()) by += (by.empty() ? "" : ", ") + m.name;
-      throw reader.error(key, entry->name + " does not support solids other than the box; supported by: " + by);
-    }
-    if (key) {
-      SceneSchema schema = catalogueSchema(*entry);
-      addSolidKeys(schema);
-      SceneReader solidReader = loadScene(path, sets, schema);
-      const Scene scene = readScene(solidReader);
-      out.choice.solidFraction = scene.geometry.dimension == 3 ? solidFractionOf<3>(solidReader, scene)
-                                                               : solidFractionOf<2>(solidReader, scene);
-    }
   }
   const std::vector<UnsupportedFeature> problems = unsupportedFeatures(out.scene, *entry);
   if (!problems.empty()) throw reader.error(problems.front().key, problems.front().message());

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 namespace mfwave {
 namespace {
@@ -15,6 +16,23 @@ void checkCsgOperands(const std::vector<SolidPtr<D>>& operands, const char* key)
     if (!operands[i]) throw InputError(key, "solid " + std::to_string(i) + " is missing (null)");
 }
 
+// The operand whose signed distance at x is the smallest (a union's) or the largest (an
+// intersection's), and that distance: the combination's distance and its active surface at once.
+template <int D>
+std::pair<const Solid<D>*, Real> extremeOperand(const std::vector<SolidPtr<D>>& operands, const Vec<D>& x,
+                                                bool largest) {
+  const Solid<D>* best = operands.front().get();
+  Real bestDistance = best->signedDistance(x);
+  for (std::size_t i = 1; i < operands.size(); ++i) {
+    const Real d = operands[i]->signedDistance(x);
+    if (largest ? d > bestDistance : d < bestDistance) {
+      bestDistance = d;
+      best = operands[i].get();
+    }
+  }
+  return {best, bestDistance};
+}
+
 }  // namespace
 
 template <int D>
@@ -24,23 +42,12 @@ SolidUnion<D>::SolidUnion(std::vector<SolidPtr<D>> operands) : operands_(std::mo
 
 template <int D>
 const Solid<D>& SolidUnion<D>::active(const Vec<D>& x) const {
-  const Solid<D>* best = operands_.front().get();
-  Real bestDistance = best->signedDistance(x);
-  for (std::size_t i = 1; i < operands_.size(); ++i) {
-    const Real d = operands_[i]->signedDistance(x);
-    if (d < bestDistance) {
-      bestDistance = d;
-      best = operands_[i].get();
-    }
-  }
-  return *best;
+  return *extremeOperand<D>(operands_, x, false).first;
 }
 
 template <int D>
 Real SolidUnion<D>::signedDistance(const Vec<D>& x) const {
-  Real d = operands_.front()->signedDistance(x);
-  for (std::size_t i = 1; i < operands_.size(); ++i) d = std::min(d, operands_[i]->signedDistance(x));
-  return d;
+  return extremeOperand<D>(operands_, x, false).second;
 }
 
 template <int D>
@@ -67,23 +74,12 @@ SolidIntersection<D>::SolidIntersection(std::vector<SolidPtr<D>> operands) : ope
 
 template <int D>
 const Solid<D>& SolidIntersection<D>::active(const Vec<D>& x) const {
-  const Solid<D>* best = operands_.front().get();
-  Real bestDistance = best->signedDistance(x);
-  for (std::size_t i = 1; i < operands_.size(); ++i) {
-    const Real d = operands_[i]->signedDistance(x);
-    if (d > bestDistance) {
-      bestDistance = d;
-      best = operands_[i].get();
-    }
-  }
-  return *best;
+  return *extremeOperand<D>(operands_, x, true).first;
 }
 
 template <int D>
 Real SolidIntersection<D>::signedDistance(const Vec<D>& x) const {
-  Real d = operands_.front()->signedDistance(x);
-  for (std::size_t i = 1; i < operands_.size(); ++i) d = std::max(d, operands_[i]->signedDistance(x));
-  return d;
+  return extremeOperand<D>(operands_, x, true).second;
 }
 
 template <int D>

@@ -81,27 +81,20 @@ bool validName(const std::string& name) {
 }
 
 template <int D>
-Vec<D> vec(const std::vector<Real>& v) {
-  Vec<D> x;
-  for (int a = 0; a < D; ++a) x[a] = v[static_cast<std::size_t>(a)];
-  return x;
-}
-
-template <int D>
 SolidPtr<D> readShape(SceneReader& reader, std::size_t i, const std::string& name, const std::string& type) {
   const std::string entry = scene::indexPath("shape", i);
   const auto key = [&](const char* k) { return scene::childPath(entry, k); };
   const auto d = static_cast<std::size_t>(D);
   try {
-    if (type == "box") return std::make_shared<BoxSolid<D>>(vec<D>(reader.numbers(key("lower"), d)),
-                                                             vec<D>(reader.numbers(key("upper"), d)), name);
+    if (type == "box") return std::make_shared<BoxSolid<D>>(scene::vectorOf<D>(reader.numbers(key("lower"), d)),
+                                                             scene::vectorOf<D>(reader.numbers(key("upper"), d)), name);
     if (type == "half_space")
-      return std::make_shared<HalfSpace<D>>(vec<D>(reader.numbers(key("point"), d)), vec<D>(reader.numbers(key("normal"), d)),
+      return std::make_shared<HalfSpace<D>>(scene::vectorOf<D>(reader.numbers(key("point"), d)), scene::vectorOf<D>(reader.numbers(key("normal"), d)),
                                             name);
     if (type == "ball")
-      return std::make_shared<Ball<D>>(vec<D>(reader.numbers(key("centre"), d)), reader.number(key("radius")), name);
+      return std::make_shared<Ball<D>>(scene::vectorOf<D>(reader.numbers(key("centre"), d)), reader.number(key("radius")), name);
     if (type == "annulus")
-      return std::make_shared<Annulus<D>>(vec<D>(reader.numbers(key("centre"), d)), reader.number(key("inner_radius")),
+      return std::make_shared<Annulus<D>>(scene::vectorOf<D>(reader.numbers(key("centre"), d)), reader.number(key("inner_radius")),
                                           reader.number(key("outer_radius")), name);
     if constexpr (D == 2) {
       if (type == "polygon") {
@@ -114,7 +107,7 @@ SolidPtr<D> readShape(SceneReader& reader, std::size_t i, const std::string& nam
     }
     if constexpr (D == 3) {
       if (type == "cylinder")
-        return std::make_shared<Cylinder>(vec<3>(reader.numbers(key("start"), 3)), vec<3>(reader.numbers(key("end"), 3)),
+        return std::make_shared<Cylinder>(scene::vectorOf<3>(reader.numbers(key("start"), 3)), scene::vectorOf<3>(reader.numbers(key("end"), 3)),
                                           reader.number(key("radius")), name);
       if (type == "extruded_polygon") {
         const std::vector<Real> v = reader.numbers(key("vertices"));
@@ -183,7 +176,7 @@ template <int D>
 SceneSolid<D> readSceneSolid(SceneReader& reader, const Scene& scene) {
   const GeometrySpec& g = scene.geometry;
   SceneSolid<D> out;
-  out.box = std::make_shared<BoxSolid<D>>(vec<D>(g.lower), vec<D>(g.upper), "box");
+  out.box = std::make_shared<BoxSolid<D>>(scene::vectorOf<D>(g.lower), scene::vectorOf<D>(g.upper), "box");
   std::map<std::string, SolidPtr<D>> shapes{{"box", out.box}};
   std::vector<std::string> names{"box"};
   const std::size_t count = reader.count("shape");
@@ -225,6 +218,7 @@ SceneSolid<D> readSceneSolid(SceneReader& reader, const Scene& scene) {
   }
   Index inside = 0;
   forEachNode<D>(g, [&](const Vec<D>& x) { inside += out.solid->signedDistance(x) <= 0 ? 1 : 0; });
+  out.latticeFraction = static_cast<Real>(inside) / static_cast<Real>(g.particleCount());
   if (inside == 0)
     reader.fail("geometry.solid", "'" + expression + "' is empty within the box " + g.describeBox() +
                                       " (no lattice node at spacing " + scene::formatNumber(g.spacing) + " inside it)");

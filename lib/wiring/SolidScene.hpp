@@ -38,6 +38,8 @@ struct SceneSolid {
   std::vector<std::vector<Real>> initialVelocity;      // per region (empty: at rest)
   std::vector<std::vector<Real>> initialDisplacement;  // per region (empty: none)
   bool lastRegionWins = false;
+  // The share of the box's lattice nodes (at geometry.spacing) inside the solid.
+  Real latticeFraction = 0;
 
   // Index into `materials` at a point of the solid: the last region holding it, else 0.
   int materialAt(const Vec<D>& x) const;

@@ -1,18 +1,11 @@
 #include "wiring/VeryWeakSphScene.hpp"
 
 #include "core/Error.hpp"
+#include "io/scene/Format.hpp"
 
 namespace mfwave {
-namespace {
 
-template <int D>
-Vec<D> vectorOf(const std::vector<Real>& values) {
-  Vec<D> v = Vec<D>::Zero();
-  for (int i = 0; i < D && i < static_cast<int>(values.size()); ++i) v[i] = values[static_cast<std::size_t>(i)];
-  return v;
-}
-
-}  // namespace
+using scene::vectorOf;
 
 void checkVeryWeakSphScene(const SceneReader& reader, const Scene& scene, const VeryWeakSphSpec& spec,
                            const std::string& program) {

@@ -27,6 +27,13 @@ template <int D>
 std::string formatPoint(const Vec<D>& x) {
   return formatPoint(std::vector<Real>(x.data(), x.data() + D));
 }
+// A scene's number array (a point, a vector) as a D-vector: its first D entries, missing ones 0.
+template <int D>
+Vec<D> vectorOf(const std::vector<Real>& values) {
+  Vec<D> v = Vec<D>::Zero();
+  for (int i = 0; i < D && i < static_cast<int>(values.size()); ++i) v[i] = values[static_cast<std::size_t>(i)];
+  return v;
+}
 // "a, b, c".
 std::string joinNames(const std::vector<std::string>& names, const std::string& separator = ", ");
 

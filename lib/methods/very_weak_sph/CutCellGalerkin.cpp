@@ -517,8 +517,6 @@ CutCellGalerkin<D>::CutCellGalerkin(CutCellDomain<D> domain, const CutCellSettin
           anyDashpot = true;
         }
       };
-      if (settings_.cells == CutCells::Staircase && domain_.distance(position(lowerNode) + Vec<D>::Constant(h / 2)) > 0)
-        continue;
       facePoints(onFace, h, 0);
     }
   }

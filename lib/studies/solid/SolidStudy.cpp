@@ -83,11 +83,12 @@ SceneSchema solidSchema() {
 
 namespace {
 
+// A direction the scene gives (a probe's, a receiver line's or grid's), normalised.
 template <int D>
-Vec<D> vecOf(const std::vector<Real>& v) {
-  Vec<D> x;
-  for (int a = 0; a < D; ++a) x[a] = v[static_cast<std::size_t>(a)];
-  return x;
+Vec<D> readDirection(SceneReader& reader, const std::string& key) {
+  const Vec<D> d = scene::vectorOf<D>(reader.numbers(key, D));
+  if (!(d.norm() > 0)) reader.fail(key, "must not be the zero vector");
+  return d.normalized();
 }
 
 // The [[shape]] entry of a name, or -1.
@@ -184,14 +185,12 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
     if (!p.position) reader.fail(scene::childPath(key, "particle"), "the solid study places probes by position");
     SolidProbe<D> probe;
     probe.name = p.name;
-    probe.position = vecOf<D>(*p.position);
+    probe.position = scene::vectorOf<D>(*p.position);
     probe.velocity = p.quantity == ProbeQuantity::Velocity;
     if (plan.solid.solid->signedDistance(probe.position) > 1e-9 * g.spacing)
       reader.fail(scene::childPath(key, "position"), scene::formatPoint(*p.position) + " lies outside the solid");
     if (reader.has(scene::childPath(key, "direction"))) {
-      const Vec<D> d = vecOf<D>(reader.numbers(scene::childPath(key, "direction"), D));
-      if (!(d.norm() > 0)) reader.fail(scene::childPath(key, "direction"), "must not be the zero vector");
-      probe.direction = d.normalized();
+      probe.direction = readDirection<D>(reader, scene::childPath(key, "direction"));
     } else {
       probe.direction = Vec<D>::Unit(p.component);
     }
@@ -202,10 +201,9 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
     const std::string entry = scene::indexPath("probe_line", l);
     const auto key = [&](const char* k) { return scene::childPath(entry, k); };
     const std::string name = reader.string(key("name"));
-    const Vec<D> from = vecOf<D>(reader.numbers(key("from"), D)), to = vecOf<D>(reader.numbers(key("to"), D));
+    const Vec<D> from = scene::vectorOf<D>(reader.numbers(key("from"), D)), to = scene::vectorOf<D>(reader.numbers(key("to"), D));
     const auto count = static_cast<int>(reader.integer(key("count")));
-    const Vec<D> d = vecOf<D>(reader.numbers(key("direction"), D));
-    if (!(d.norm() > 0)) reader.fail(key("direction"), "must not be the zero vector");
+    const Vec<D> direction = readDirection<D>(reader, key("direction"));
     const bool velocity = reader.string(key("quantity")) == "velocity";
     for (int k = 0; k < count; ++k) {
       SolidProbe<D> probe;
@@ -213,7 +211,7 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
       label << name << '_' << std::setw(3) << std::setfill('0') << k;
       probe.name = label.str();
       probe.position = from + (to - from) * (static_cast<Real>(k) / (count - 1));
-      probe.direction = d.normalized();
+      probe.direction = direction;
       probe.velocity = velocity;
       if (plan.solid.solid->signedDistance(probe.position) > 1e-9 * g.spacing)
         reader.fail(key("to"), "receiver " + probe.name + " at " +
@@ -228,7 +226,7 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
     const std::string entry = scene::indexPath("probe_grid", l);
     const auto key = [&](const char* k) { return scene::childPath(entry, k); };
     const std::string name = reader.string(key("name"));
-    const Vec<D> lower = vecOf<D>(reader.numbers(key("lower"), D)), upper = vecOf<D>(reader.numbers(key("upper"), D));
+    const Vec<D> lower = scene::vectorOf<D>(reader.numbers(key("lower"), D)), upper = scene::vectorOf<D>(reader.numbers(key("upper"), D));
     const std::vector<int> counts = reader.wholeNumbers(key("counts"));
     if (counts.size() != static_cast<std::size_t>(D)) reader.fail(key("counts"), "needs one count per axis");
     Index total = 1;
@@ -237,8 +235,7 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
       total *= c;
     }
     if (total > 100000) reader.fail(key("counts"), "more than 100000 receivers in one grid");
-    const Vec<D> d = vecOf<D>(reader.numbers(key("direction"), D));
-    if (!(d.norm() > 0)) reader.fail(key("direction"), "must not be the zero vector");
+    const Vec<D> direction = readDirection<D>(reader, key("direction"));
     const bool velocity = reader.string(key("quantity")) == "velocity";
     Index kept = 0;
     for (Index p = 0; p < total; ++p) {
@@ -255,7 +252,7 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
       }
       if (plan.solid.solid->signedDistance(probe.position) > 1e-9 * g.spacing) continue;  // outside the solid
       probe.name = label.str();
-      probe.direction = d.normalized();
+      probe.direction = direction;
       probe.velocity = velocity;
       plan.probes.push_back(probe);
       ++kept;
@@ -293,9 +290,9 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
     if (k < 0 || reader.string(scene::childPath(entry, "type")) != "half_space" || load.surface != shape + ".plane")
       fail("load[0].surface", "the plane of a half_space shape ('<name>.plane')");
     HalfPlaneLamb lamb;
-    const Vec<D> normal = vecOf<D>(reader.numbers(scene::childPath(entry, "normal"), D)).normalized();
-    const Vec<D> point = vecOf<D>(reader.numbers(scene::childPath(entry, "point"), D));
-    const Vec<D> centre = vecOf<D>(load.centre);
+    const Vec<D> normal = scene::vectorOf<D>(reader.numbers(scene::childPath(entry, "normal"), D)).normalized();
+    const Vec<D> point = scene::vectorOf<D>(reader.numbers(scene::childPath(entry, "point"), D));
+    const Vec<D> centre = scene::vectorOf<D>(load.centre);
     if (std::abs((centre - point).dot(normal)) > 1e-9) fail("load[0].centre", "the load's centre on the half-plane's surface");
     lamb.centre = load.centre;
     lamb.normal = {normal[0], normal[1]};
@@ -333,8 +330,8 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
   domain.materialAt = [&solid](const Vec<D>& x) { return solid.materialAt(x); };
   if (!solid.regions.empty()) domain.interfaceDistance = [&solid](const Vec<D>& x) { return solid.interfaceDistance(x); };
   CutCellSettings<D> settings;
-  settings.lower = vecOf<D>(scene.geometry.lower);
-  settings.upper = vecOf<D>(scene.geometry.upper);
+  settings.lower = scene::vectorOf<D>(scene.geometry.lower);
+  settings.upper = scene::vectorOf<D>(scene.geometry.upper);
   settings.spacing = spacing;
   settings.cells = cells;
   settings.depth = plan.depth;
@@ -352,7 +349,7 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
   for (std::size_t i = 0; i < scene.loads.size(); ++i) {
     const LoadSpec& load = scene.loads[i];
     if (load.type == LoadType::PointForce) {
-      loads.emplace_back(method.pointForce(vecOf<D>(load.position), load.amplitude * vecOf<D>(load.direction)), &load.timeFunction);
+      loads.emplace_back(method.pointForce(scene::vectorOf<D>(load.position), load.amplitude * scene::vectorOf<D>(load.direction)), &load.timeFunction);
     } else if (load.type == LoadType::MomentTensor) {
       Mat<D> m;
       if constexpr (D == 2) {
@@ -361,16 +358,16 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
         m << load.moment[0], load.moment[3], load.moment[4], load.moment[3], load.moment[1], load.moment[5], load.moment[4],
             load.moment[5], load.moment[2];
       }
-      loads.emplace_back(method.momentTensor(vecOf<D>(load.position), m), &load.timeFunction);
+      loads.emplace_back(method.momentTensor(scene::vectorOf<D>(load.position), m), &load.timeFunction);
     } else {
-      const Vec<D> centre = vecOf<D>(load.centre);
+      const Vec<D> centre = scene::vectorOf<D>(load.centre);
       const Real radius = load.radius;
       const std::string surface = load.surface;
       const auto on = [&, centre, radius](const Vec<D>& x) {
         return (x - centre).norm() <= radius && solid.solid->surfaceName(x) == surface;
       };
       const bool pressure = load.traction.empty();
-      const Vec<D> vector = pressure ? Vec<D>::Zero() : vecOf<D>(load.traction);
+      const Vec<D> vector = pressure ? Vec<D>::Zero() : scene::vectorOf<D>(load.traction);
       const Real p = load.pressure;
       Vector f = method.surfaceTraction(on, [pressure, vector, p](const Vec<D>&, const Vec<D>& n) -> Vec<D> {
         return pressure ? Vec<D>(-p * n) : vector;
@@ -400,8 +397,8 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
     const int region = solid.regionAt(method.unknownPositions()[static_cast<std::size_t>(a)]);
     if (region < 0) continue;
     const auto r = static_cast<std::size_t>(region);
-    if (!solid.initialVelocity[r].empty()) v0.template segment<D>(D * a) = vecOf<D>(solid.initialVelocity[r]);
-    if (!solid.initialDisplacement[r].empty()) u0.template segment<D>(D * a) = vecOf<D>(solid.initialDisplacement[r]);
+    if (!solid.initialVelocity[r].empty()) v0.template segment<D>(D * a) = scene::vectorOf<D>(solid.initialVelocity[r]);
+    if (!solid.initialDisplacement[r].empty()) u0.template segment<D>(D * a) = scene::vectorOf<D>(solid.initialDisplacement[r]);
   }
   std::unique_ptr<SecondOrderIntegrator> integrator = makeSecondOrderIntegrator(scene.integrator.name, scene.integrator.options);
   integrator->initialise(system, 0, u0, v0, step.dt);
@@ -448,7 +445,7 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
     values.push_back(recorded.column(i));
     if (!plan.lamb) continue;
     columns.push_back(plan.probes[i].name + "_exact");
-    const Real sign = plan.probes[i].direction.dot(-vecOf<D>(plan.lamb->normal)) > 0 ? 1.0 : -1.0;
+    const Real sign = plan.probes[i].direction.dot(-scene::vectorOf<D>(plan.lamb->normal)) > 0 ? 1.0 : -1.0;
     std::vector<Real> e = lambHalfPlaneSeries(*plan.lamb, solid.materials[0],
                                               std::vector<Real>(plan.probes[i].position.data(), plan.probes[i].position.data() + D),
                                               recorded.times(), plan.probes[i].velocity);
