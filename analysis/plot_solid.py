@@ -5,9 +5,10 @@
 
 - solid-traces.png: each probe's trace of every case at the finest spacing against the exact one
   (when the scene has a reference);
-- solid-errors.png: the relative L2 error of each probe against the spacing, cut cells and
-  staircase (and, with --compare, the other run's, e.g. the axis-aligned half-plane);
-- solid-record.png: a record section, every probe's trace of the finest cut case against its
+- solid-errors.png: the relative L2 error of each probe against the spacing, cut cells, staircase
+  and RK collocation's nodes, whichever ran (and, with --compare, the other run's, e.g. the
+  axis-aligned half-plane);
+- solid-record.png: a record section, every probe's trace of the finest cut case (else RK) against its
   distance from the first probe, with the P, S and Rayleigh moveout of the scene's [material] from
   the first load's position.
 """
@@ -25,6 +26,11 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 def cases_of(folder):
     return read_table(os.path.join(folder, "cases.csv"))
+
+
+# The cases' kinds (cases.csv's cells column) and their line styles: the very weak SPH's cut cells and
+# staircase, RK collocation's nodes.
+CASE_STYLES = (("cut", "-"), ("staircase", ":"), ("nodes", "-."))
 
 
 def finest(cases, cells):
@@ -54,15 +60,17 @@ def traces(folder, cases, probes):
         return
     fig, axes = plt.subplots(len(probes), 1, figsize=(7, 2.4 * len(probes)), sharex=True)
     axes = axes if len(probes) > 1 else [axes]
-    for cells, style in (("cut", "-"), ("staircase", ":")):
+    drawn_exact = False
+    for cells, style in CASE_STYLES:
         case = finest(cases, cells)
         if not case:
             continue
         series = read_columns(os.path.join(folder, case["case"] + "-probes.csv"))
         for ax, probe in zip(axes, probes):
             ax.plot(series["t [s]"], series[probe["name"]], style, label=case["case"])
-            if cells == "cut":
+            if not drawn_exact:
                 ax.plot(series["t [s]"], series[probe["name"] + "_exact"], "k--", lw=0.8, label="exact")
+        drawn_exact = True
     for ax, probe in zip(axes, probes):
         ax.set_ylabel(probe["name"] + " [m/s]")
         ax.grid(True, alpha=0.3)
@@ -81,14 +89,15 @@ def errors(folder, cases, probes, compare):
     runs = [(folder, "")] + ([(compare, " (" + os.path.basename(os.path.normpath(compare)) + ")")] if compare else [])
     for run, suffix in runs:
         rows = cases_of(run)
-        for cells, marker in (("cut", "o-"), ("staircase", "s:")):
+        for cells, marker in (("cut", "o-"), ("staircase", "s:"), ("nodes", "^-.")):
             chosen = sorted((c for c in rows if c["cells"] == cells), key=lambda c: float(c["spacing [m]"]))
             if not chosen:
                 continue
+            label = "rk collocation" if cells == "nodes" else cells
             for ax, probe in zip(axes, probes):
                 key = probe["name"] + "_relative_l2"
                 ax.loglog([float(c["spacing [m]"]) for c in chosen], [float(c[key]) for c in chosen], marker,
-                          label=cells + suffix)
+                          label=label + suffix)
     for ax, probe in zip(axes, probes):
         ax.set_title(probe["name"])
         ax.set_xlabel("dx [m]")
@@ -101,7 +110,7 @@ def errors(folder, cases, probes, compare):
 
 
 def record(folder, cases, scene, probes):
-    case = finest(cases, "cut") or cases[0]
+    case = finest(cases, "cut") or finest(cases, "nodes") or cases[0]
     series = read_columns(os.path.join(folder, case["case"] + "-probes.csv"))
     if len(probes) < 2:
         return

@@ -7,6 +7,8 @@
 //
 //   solid --scene data/scenes/lamb2d_inclined.toml [--set key=value ...] [--out DIR]
 
+#include "catalogue/MethodCatalogue.hpp"
+#include "catalogue/SceneSupport.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "io/run/DriverCommandLine.hpp"
@@ -18,6 +20,7 @@
 #include "io/scene/Scene.hpp"
 #include "studies/solid/SolidStudy.hpp"
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 
@@ -35,23 +38,28 @@ int run(SceneReader& reader, const Scene& scene, const DriverOptions& options) {
 
   std::vector<SolidCaseResult> results;
   bool first = true;
-  for (const Real dx : plan.spacings)
+  for (const Real dx : plan.spacings) {
     for (const CutCells cells : plan.cells) {
       results.push_back(runSolidCase<D>(plan, dx, cells, folder, first, !options.quiet));
       first = false;
     }
+    if (std::find(plan.methods.begin(), plan.methods.end(), "reproducing_kernel") != plan.methods.end()) {
+      results.push_back(runSolidCollocationCase<D>(plan, dx, folder, first, !options.quiet));
+      first = false;
+    }
+  }
 
   // cases.csv: one row per case, the errors of every probe
   {
     AtomicFile file(folder + "/cases.csv");
     std::ostream& out = file.stream();
-    out << std::setprecision(10) << "case,cells,spacing [m],unknowns,extended,cut_cells,volume [m^" << D
+    out << std::setprecision(10) << "case,method,cells,spacing [m],unknowns,extended,cut_cells,volume [m^" << D
         << "],smallest_kept_fraction,stable_step [s],dt [s],steps,setup [s],run [s],peak_memory [MiB]";
     for (const SolidProbe<D>& p : plan.probes)
       if (plan.lamb) out << ',' << p.name << "_relative_l2," << p.name << "_peak_error," << p.name << "_arrival_error [s]";
     out << '\n';
     for (const SolidCaseResult& r : results) {
-      out << r.name << ',' << r.cells << ',' << r.spacing << ',' << r.unknowns << ',' << r.extended << ',' << r.cutCells
+      out << r.name << ',' << r.method << ',' << r.cells << ',' << r.spacing << ',' << r.unknowns << ',' << r.extended << ',' << r.cutCells
           << ',' << r.volume << ',' << r.smallestKept << ',' << r.stableStep << ',' << r.dt << ',' << r.steps << ','
           << r.setupSeconds << ',' << r.runSeconds << ',' << r.peakMiB;
       for (std::size_t i = 0; i < r.relativeL2.size(); ++i)
@@ -106,9 +114,16 @@ int run(SceneReader& reader, const Scene& scene, const DriverOptions& options) {
   summary.notes.add("particles and dt of the first case (" + results.front().name + "); steps and wall time summed over " +
                     std::to_string(results.size()) + " cases");
   if (!plan.lamb) summary.notes.add("no reference solution for this scene: no error reported");
-  summary.notes.add("method: the Galerkin very weak SPH on cut lattice cells (depth " + std::to_string(plan.depth) +
-                    ", small-cell fraction " + mfwave::scene::formatNumber(plan.smallCellFraction) + ")" +
-                    (plan.cells.size() > 1 ? ", with the staircase baseline" : ""));
+  if (!plan.cells.empty())
+    summary.notes.add("very_weak_sph: the Galerkin variant on cut lattice cells (depth " + std::to_string(plan.depth) +
+                      ", small-cell fraction " + mfwave::scene::formatNumber(plan.smallCellFraction) + ")" +
+                      (plan.cells.size() > 1 ? ", with the staircase baseline" : ""));
+  if (std::find(plan.methods.begin(), plan.methods.end(), "reproducing_kernel") != plan.methods.end()) {
+    summary.notes.add("reproducing_kernel: RK collocation (" + plan.collocation.describe() +
+                      ") on the lattice nodes at least half a spacing inside the solid and nodes on its surfaces with "
+                      "traction rows (cases rk_<spacing>; cut_cells counts its surface nodes)");
+    for (const std::string& note : standInNotes(scene, methodNamed("reproducing_kernel"))) summary.notes.add(note);
+  }
   summary.conclude(folder, &std::cout);
   return 0;
 }

@@ -40,6 +40,8 @@ struct MethodSupport {
   // Solids other than the box ([[shape]], geometry.solid, [[region]]: wiring/SolidScene): the
   // programs that run the method on them (empty: the method runs boxes only).
   std::vector<std::string> solidPrograms = {};
+  // Materials by region ([[region]] with its own material) on those solids, interfaces honoured.
+  bool materialRegions = false;
 };
 
 // Measured cost of a whole run on one core, per dimension (index D - 1); 0 where not measured. The

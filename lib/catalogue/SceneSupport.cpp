@@ -59,6 +59,14 @@ std::vector<UnsupportedFeature> unsupportedFeatures(const Scene& scene, const Me
   return out;
 }
 
+std::vector<UnsupportedFeature> unsupportedRegions(const MethodEntry& method, bool regions) {
+  if (!regions || method.supports.materialRegions) return {};
+  std::vector<std::string> supportedBy;
+  for (const MethodEntry& m : methodCatalogue())
+    if (m.supports.materialRegions) supportedBy.push_back(m.name);
+  return {{"region", "materials by region", supportedBy, method.name}};
+}
+
 std::vector<std::string> standInNotes(const Scene& scene, const MethodEntry& method) {
   std::vector<std::string> notes;
   for (std::size_t i = 0; i < scene.boundaries.size(); ++i) {

@@ -10,11 +10,11 @@ namespace mfwave {
 namespace {
 // 1 / (S_d int_0^1 z^{d-1} phi dz): 2, 60/(7 pi), 12/pi. Equivalently the cubic spline's sigma_d
 // times (3/2) 2^d, from phi(z) = 2/3 f(2z).
-constexpr std::array<Real, 3> kSigma = {2.0, 60.0 / (7.0 * kPi), 12.0 / kPi};
+constexpr std::array<Real, 3> kCubicBSplineSigma = {2.0, 60.0 / (7.0 * kPi), 12.0 / kPi};
 }  // namespace
 
 CubicBSplineKernel::CubicBSplineKernel(int dimension, Real supportRadius)
-    : Kernel(dimension, supportRadius, 1.0, kSigma, "support_radius") {}
+    : Kernel(dimension, supportRadius, 1.0, kCubicBSplineSigma, "support_radius") {}
 
 Real CubicBSplineKernel::shape(Real z) const { return CubicBSplineProfile{}.shape(z); }
 

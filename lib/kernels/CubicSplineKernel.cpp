@@ -9,11 +9,11 @@ namespace mfwave {
 
 namespace {
 // Li primer eq. (8): 2/3 (1-D), 10/(7 pi) (2-D), 1/pi (3-D).
-constexpr std::array<Real, 3> kSigma = {2.0 / 3.0, 10.0 / (7.0 * kPi), 1.0 / kPi};
+constexpr std::array<Real, 3> kCubicSplineSigma = {2.0 / 3.0, 10.0 / (7.0 * kPi), 1.0 / kPi};
 }  // namespace
 
 CubicSplineKernel::CubicSplineKernel(int dimension, Real h)
-    : Kernel(dimension, h, 2.0, kSigma, "smoothing_length") {}
+    : Kernel(dimension, h, 2.0, kCubicSplineSigma, "smoothing_length") {}
 
 // f = 1 - 3/2 q^2 + 3/4 q^3 (q <= 1), 1/4 (2 - q)^3 (1 < q <= 2).
 Real CubicSplineKernel::shape(Real q) const { return CubicSplineProfile{}.shape(q); }

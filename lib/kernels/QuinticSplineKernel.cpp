@@ -10,12 +10,12 @@ namespace mfwave {
 namespace {
 
 // 1 / (S_d int_0^3 q^{d-1} f dq): 1/120, 7/(478 pi), 1/(120 pi); checked by quadrature in the tests.
-constexpr std::array<Real, 3> kSigma = {1.0 / 120.0, 7.0 / (478.0 * kPi), 1.0 / (120.0 * kPi)};
+constexpr std::array<Real, 3> kQuinticSplineSigma = {1.0 / 120.0, 7.0 / (478.0 * kPi), 1.0 / (120.0 * kPi)};
 
 }  // namespace
 
 QuinticSplineKernel::QuinticSplineKernel(int dimension, Real h)
-    : Kernel(dimension, h, 3.0, kSigma, "smoothing_length") {}
+    : Kernel(dimension, h, 3.0, kQuinticSplineSigma, "smoothing_length") {}
 
 Real QuinticSplineKernel::shape(Real q) const { return QuinticSplineProfile{}.shape(q); }
 

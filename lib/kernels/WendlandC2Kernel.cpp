@@ -10,11 +10,11 @@ namespace mfwave {
 namespace {
 // Derived analytically (1 / (S_d int_0^2 q^{d-1} f dq)) and checked by quadrature in the tests:
 // 5/8 for the 1-D function, 7/(4 pi) and 21/(16 pi) for the 2-D/3-D one.
-constexpr std::array<Real, 3> kSigma = {5.0 / 8.0, 7.0 / (4.0 * kPi), 21.0 / (16.0 * kPi)};
+constexpr std::array<Real, 3> kWendlandC2Sigma = {5.0 / 8.0, 7.0 / (4.0 * kPi), 21.0 / (16.0 * kPi)};
 }  // namespace
 
 WendlandC2Kernel::WendlandC2Kernel(int dimension, Real h)
-    : Kernel(dimension, h, 2.0, kSigma, "smoothing_length"), oneD_(dimension == 1) {}
+    : Kernel(dimension, h, 2.0, kWendlandC2Sigma, "smoothing_length"), oneD_(dimension == 1) {}
 
 // With s = 1 - q/2:
 //   1-D:    f = s^3 (3/2 q + 1),  f'/q = -3 s^2,  f'' = 3/2 s (3 q - 2)

@@ -10,11 +10,11 @@ namespace mfwave {
 namespace {
 // Derived analytically and checked by quadrature in the tests: 3/4 for the 1-D function,
 // 9/(4 pi) and 495/(256 pi) for the 2-D/3-D one.
-constexpr std::array<Real, 3> kSigma = {3.0 / 4.0, 9.0 / (4.0 * kPi), 495.0 / (256.0 * kPi)};
+constexpr std::array<Real, 3> kWendlandC4Sigma = {3.0 / 4.0, 9.0 / (4.0 * kPi), 495.0 / (256.0 * kPi)};
 }  // namespace
 
 WendlandC4Kernel::WendlandC4Kernel(int dimension, Real h)
-    : Kernel(dimension, h, 2.0, kSigma, "smoothing_length"), oneD_(dimension == 1) {}
+    : Kernel(dimension, h, 2.0, kWendlandC4Sigma, "smoothing_length"), oneD_(dimension == 1) {}
 
 // With s = 1 - q/2:
 //   1-D:    f = s^5 (2 q^2 + 5/2 q + 1),      f'/q = -7/2 s^4 (2 q + 1),

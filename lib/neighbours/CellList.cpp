@@ -12,7 +12,7 @@ namespace mfwave {
 namespace {
 
 // Below this many particles the OpenMP fork costs more than the loop.
-constexpr Index kParallelThreshold = 16384;
+constexpr Index kBinningParallelThreshold = 16384;
 // Cells are made at least this much larger than R, so that rounding in the cell coordinate of
 // two particles at distance just below R can never put them two cells apart.
 constexpr Real kCellMargin = 1e-9;
@@ -80,7 +80,7 @@ void CellList<D>::rebuild(const Coordinates<D>& coordinates) {
       throw InputError("positions", "coordinate arrays of different lengths");
     }
   }
-  const bool parallel = count >= kParallelThreshold;
+  const bool parallel = count >= kBinningParallelThreshold;
 
   // Bounding box of the current positions (recomputed every build: particles move).
   Vec<D> lower = Vec<D>::Zero();

@@ -19,7 +19,7 @@ namespace mfwave {
 namespace {
 
 // Below this many particles the OpenMP fork costs more than the search.
-constexpr Index kParallelThreshold = 4096;
+constexpr Index kPairListParallelThreshold = 4096;
 
 // Rows arrive as runs sorted per cell; when particles are numbered spatially (lattices) the
 // whole row is nearly sorted. Insertion sort is linear then, and no slower than std::sort at
@@ -118,7 +118,7 @@ void buildNeighbourList(const CellList<D>& cells, NeighbourList& list, Index row
                                  std::to_string(total) + " particles");
   }
   const Index cellCount = cells.cellCount();
-  const bool parallel = total >= kParallelThreshold;
+  const bool parallel = total >= kPairListParallelThreshold;
   const Index* start = cells.cellStart().data();
   const Index* particle = cells.sortedIndex().data();
 

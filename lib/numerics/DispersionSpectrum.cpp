@@ -14,7 +14,7 @@ namespace mfwave {
 
 namespace {
 
-constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
+constexpr Real kNoValue = std::numeric_limits<Real>::quiet_NaN();
 
 // Eigenpairs of T = M^{-1} S with left eigenvectors: V^{-1} T V = diag(lambda).
 struct Decomposition {
@@ -206,7 +206,7 @@ std::vector<LatticeMode> DispersionSpectrum<D>::modes(const std::array<int, D>& 
     LatticeMode mode;
     mode.omegaSquared = eig.values(b).real();
     mode.complexPair = std::abs(eig.values(b).imag()) > 1e-9 * std::max<Real>(1, std::abs(eig.values(b)));
-    mode.omega = mode.omegaSquared >= 0 && !mode.complexPair ? std::sqrt(mode.omegaSquared) : kNaN;
+    mode.omega = mode.omegaSquared >= 0 && !mode.complexPair ? std::sqrt(mode.omegaSquared) : kNoValue;
     mode.phaseSpeed = wavenumber > 0 ? mode.omega / wavenumber : 0;
     mode.groupSpeed = wavenumber > 0 ? dLambda(b, b).real() / (2 * mode.omega) : 0;
     const Eigen::VectorXcd v = eig.right.col(b);

@@ -15,7 +15,7 @@ namespace mfwave {
 
 namespace {
 
-constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
+constexpr Real kNoRatio = std::numeric_limits<Real>::quiet_NaN();
 constexpr Real kInf = std::numeric_limits<Real>::infinity();
 constexpr Real kTwoPi = 6.28318530717958647692;
 
@@ -91,7 +91,7 @@ std::vector<EigenPair> eigenPairs(const Eigen::MatrixXd& matrix, const Eigen::Ma
 
 template <int D>
 Real alignmentOf(const Eigen::VectorXd& v, const Vec<D>& n, int components) {
-  if (components != D) return components == 1 && D == 1 ? 1 : kNaN;
+  if (components != D) return components == 1 && D == 1 ? 1 : kNoRatio;
   const Real norm = v.norm();
   if (!(norm > 0)) return 0;
   Real dot = 0;
@@ -278,9 +278,9 @@ std::vector<LatticeMode> latticeModes(const LatticeStencil<D>& stencil, const Ve
     LatticeMode m;
     m.omegaSquared = p.value;
     m.complexPair = p.complexPair;
-    m.omega = (p.value >= 0 && !p.complexPair) ? std::sqrt(p.value) : kNaN;
+    m.omega = (p.value >= 0 && !p.complexPair) ? std::sqrt(p.value) : kNoRatio;
     m.phaseSpeed = m.omega / wavenumber;
-    m.groupSpeed = m.omega > 0 ? p.derivative / (2 * m.omega) : kNaN;
+    m.groupSpeed = m.omega > 0 ? p.derivative / (2 * m.omega) : kNoRatio;
     m.polarisation = p.vector;
     m.alignment = alignmentOf<D>(p.vector, n, c);
     modes.push_back(m);
@@ -320,8 +320,8 @@ LongWaveLimit longWaveLimit(const LatticeStencil<D>& stencil, const Vec<D>& dire
   const Real gapSquared = pairs[j].derivative;
   // Round-off in the row sum of an exact row leaves |v . S0 v| ~ 1e-16 scale: a gap of zero.
   if (std::abs(gapSquared) <= 1e-12 * scale) limit.gap = 0;
-  else limit.gap = gapSquared > 0 ? std::sqrt(gapSquared) : kNaN;
-  limit.speed = (pairs[j].value >= 0 && !pairs[j].complexPair) ? std::sqrt(pairs[j].value) : kNaN;
+  else limit.gap = gapSquared > 0 ? std::sqrt(gapSquared) : kNoRatio;
+  limit.speed = (pairs[j].value >= 0 && !pairs[j].complexPair) ? std::sqrt(pairs[j].value) : kNoRatio;
   limit.alignment = branches[j].alignment;
   return limit;
 }

@@ -15,7 +15,7 @@ namespace mfwave {
 
 namespace {
 
-constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
+constexpr Real kNoFrequency = std::numeric_limits<Real>::quiet_NaN();
 
 // A unit vector normal to n on which the S part is read: (-n_y, n_x) in 2-D, (0, 1, 0) on the
 // 3-D axis and (1, -1, 0) / sqrt(2) on the 3-D diagonal.
@@ -61,7 +61,7 @@ Real peakBin(const ComplexVector& signal, int edgeBins) {
   std::size_t best = 1;
   for (std::size_t b = 1; b <= T / 2; ++b)
     if (std::abs(spectrum[b]) > std::abs(spectrum[best])) best = b;
-  if (best < static_cast<std::size_t>(edgeBins) || best + static_cast<std::size_t>(edgeBins) > T / 2) return kNaN;
+  if (best < static_cast<std::size_t>(edgeBins) || best + static_cast<std::size_t>(edgeBins) > T / 2) return kNoFrequency;
   // Golden-section search for the maximum of the continuous transform within one bin either side.
   const Real golden = (std::sqrt(5.0) - 1) / 2;
   Real a = static_cast<Real>(best) - 1, b = static_cast<Real>(best) + 1;
@@ -90,9 +90,9 @@ Real peakBin(const ComplexVector& signal, int edgeBins) {
 Real integratorFrequency(const std::string& integrator, Real omega, Real dt) {
   const Real half = omega * dt / 2;
   if (integrator == "central_difference" || integrator == "leapfrog")
-    return half <= 1 ? 2 * std::asin(half) / dt : kNaN;
+    return half <= 1 ? 2 * std::asin(half) / dt : kNoFrequency;
   if (integrator == "newmark") return 2 * std::atan(half) / dt;
-  return kNaN;
+  return kNoFrequency;
 }
 
 template <int D>

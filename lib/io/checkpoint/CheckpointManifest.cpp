@@ -12,7 +12,7 @@
 namespace mfwave {
 namespace {
 
-constexpr const char* kMagic = "mfwave-checkpoint-manifest";
+constexpr const char* kManifestMagic = "mfwave-checkpoint-manifest";
 constexpr int kManifestVersion = 1;
 
 std::string pathOf(const std::string& folder) {
@@ -28,7 +28,7 @@ std::string rankCheckpointFolderName(int rank, int ranks) {
 void writeCheckpointManifest(const std::string& folder, const CheckpointManifest& manifest) {
   AtomicFile file(pathOf(folder));
   std::ostream& out = file.stream();
-  out << kMagic << ' ' << kManifestVersion << '\n'
+  out << kManifestMagic << ' ' << kManifestVersion << '\n'
       << "ranks " << manifest.ranks << '\n'
       << "scene_digest " << manifest.sceneDigest << '\n'
       << "loop " << manifest.loop << '\n'
@@ -59,7 +59,7 @@ std::optional<CheckpointManifest> readCheckpointManifest(const std::string& fold
     };
     if (number == 1) {
       int version = 0;
-      if (key != kMagic || !(words >> version)) throw bad("not a checkpoint manifest");
+      if (key != kManifestMagic || !(words >> version)) throw bad("not a checkpoint manifest");
       if (version != kManifestVersion)
         throw bad("manifest version " + std::to_string(version) + ", this build reads " +
                   std::to_string(kManifestVersion));

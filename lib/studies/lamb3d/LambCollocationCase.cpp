@@ -8,6 +8,7 @@
 #include "io/scene/BuildParticles.hpp"
 #include "io/scene/Format.hpp"
 #include "io/scene/StepLimitCheck.hpp"
+#include "methods/collocation/CollocationSampler.hpp"
 #include "methods/collocation/CollocationSystem.hpp"
 #include "methods/collocation/ConstrainedCollocationSystem.hpp"
 #include "observers/ReportedProbes.hpp"
@@ -31,51 +32,44 @@ namespace mfwave::lamb3d {
 namespace {
 
 // The probes of a collocation run: the interpolated field at each probe's node, u^h(x_p) = sum_J
-// psi_J(x_p) d_J (Luo-Liu-Huang eq. (7)), or its rate with d'. With d = C^{-1} [U; b_B(t)] and
-// d' = C^{-1} [V; b_B'(t)] (ConstrainedCollocationSystem) a sample would cost a solve with the
-// constraint matrix; instead the probe's row r (psi_J(x_p) on its component) is carried over to the
-// right-hand side once, g = C^{-T} r (constraintAdjoint), and a sample is g . [U; b_B(t)] or
-// g . [V; b_B'(t)]. At an interior node u^h is the state itself (U = Psi_I d); on the loaded face it
-// is what the traction rows make of the load. Raw and reported are the same value (collocation has
-// nothing like the very weak SPH's deconvolution).
+// psi_J(x_p) d_J (Luo-Liu-Huang eq. (7)), or its rate with d', sampled without a solve
+// (CollocationSampler). At an interior node u^h is the state itself (U = Psi_I d); on the loaded face
+// it is what the traction rows make of the load. Raw and reported are the same value (collocation
+// has nothing like the very weak SPH's deconvolution).
+template <int D>
+Eigen::MatrixXd probeFunctionals(const std::vector<Probe>& probes, const ShapeFunctions<D>& shapes,
+                                 const ParticleSet<D>& particles, Index columns) {
+  Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(columns, static_cast<Index>(probes.size()));
+  ShapeFunctionValues<D> values;
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    const Probe& p = probes[i];
+    shapes.evaluate(particles.position(p.particle), 0, values);
+    for (Index k = 0; k < values.size(); ++k)
+      rows(values.nodes[static_cast<std::size_t>(k)] * D + p.component, static_cast<Index>(i)) =
+          values.value[static_cast<std::size_t>(k)];
+  }
+  return rows;
+}
+
 template <int D>
 class CollocationProbes : public ReportedProbes {
  public:
   CollocationProbes(std::vector<Probe> probes, const ShapeFunctions<D>& shapes, const ParticleSet<D>& particles,
                     const ConstrainedCollocationSystem& system)
-      : ReportedProbes(std::move(probes)), system_(system) {
-    Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(system.system().cols(), static_cast<Index>(this->probes().size()));
-    ShapeFunctionValues<D> values;
-    for (std::size_t i = 0; i < this->probes().size(); ++i) {
-      const Probe& p = this->probes()[i];
-      shapes.evaluate(particles.position(p.particle), 0, values);
-      for (Index k = 0; k < values.size(); ++k)
-        rows(values.nodes[static_cast<std::size_t>(k)] * D + p.component, static_cast<Index>(i)) =
-            values.value[static_cast<std::size_t>(k)];
-      velocity_ = velocity_ || p.quantity == ProbeQuantity::Velocity;
-      displacement_ = displacement_ || p.quantity == ProbeQuantity::Displacement;
-    }
-    adjoint_ = system.constraintAdjoint(rows);
+      : ReportedProbes(std::move(probes)),
+        sampler_(system, probeFunctionals<D>(this->probes(), shapes, particles, system.system().cols())) {
+    for (const Probe& p : this->probes()) rate_.push_back(p.quantity == ProbeQuantity::Velocity);
   }
 
   void observe(const StateView& s) override {
     if (!beginSample(s.time)) return;
-    const Index interior = system_.size();
-    const Vector data = displacement_ ? system_.boundaryData(s.time) : Vector();
-    const Vector rate = velocity_ ? system_.boundaryDataRate(s.time, 1) : Vector();
-    for (std::size_t i = 0; i < probes().size(); ++i) {
-      const bool velocity = probes()[i].quantity == ProbeQuantity::Velocity;
-      const auto g = adjoint_.col(static_cast<Index>(i));
-      const Real value = g.head(interior).dot(velocity ? s.velocity : s.displacement) +
-                         g.tail(g.size() - interior).dot(velocity ? rate : data);
-      add(i, value, value);
-    }
+    const std::vector<Real> values = sampler_.sample(s.time, s.displacement, s.velocity, rate_);
+    for (std::size_t i = 0; i < values.size(); ++i) add(i, values[i], values[i]);
   }
 
  private:
-  const ConstrainedCollocationSystem& system_;
-  Eigen::MatrixXd adjoint_;  // column i: C^{-T} r_i for probe i
-  bool velocity_ = false, displacement_ = false;
+  CollocationSampler sampler_;
+  std::vector<bool> rate_;
 };
 
 // The load's share at a node of the loaded face: w = 1 inside the patch, 1/2 on its edges, 1/4 at

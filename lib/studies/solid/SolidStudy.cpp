@@ -1,5 +1,7 @@
 #include "studies/solid/SolidStudy.hpp"
 
+#include "studies/solid/SolidCase.hpp"
+
 #include "analytic/LambStripLoad.hpp"
 #include "catalogue/MethodCatalogue.hpp"
 #include "catalogue/SceneSupport.hpp"
@@ -19,6 +21,7 @@
 #include "particles/BoxFace.hpp"
 #include "systems/LinearSecondOrderSystem.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <map>
@@ -31,6 +34,10 @@ SceneSchema solidSchema() {
   SceneSchema s = SceneSchema::common();
   addSolidKeys(s);
   s.at("method.name").oneOf({"very_weak_sph"});
+  CollocationKeyDefaults collocation;  // adds reproducing_kernel to method.name's choices
+  collocation.supportNote = "2.5 in 2-D, 2.2 in 3-D (the widest supports whose interior rows do not grow)";
+  collocation.supportAdvice = "from about 2.77 in 2-D and 2.5 in 3-D the interior rows grow";
+  addCollocationKeys(s, collocation);
   s.add("method.variant", T::String).defaultsTo("\"galerkin\"").oneOf({"galerkin"})
       .describedAs("the very weak SPH variant: galerkin (the tent kernel integrated over the solid's cells)");
   s.add("method.cells", T::String).defaultsTo("\"cut\"").oneOf({"cut", "staircase"})
@@ -71,6 +78,9 @@ SceneSchema solidSchema() {
   s.add("study", T::Table).describedAs("the cases of the solid study");
   s.add("study.spacings", T::NumberArray).withUnit("m").defaultsToNote("geometry.spacing")
       .describedAs("lattice spacings, one case each (each must divide the box)");
+  s.add("study.methods", T::StringArray).defaultsToNote("[method.name]").oneOf({"very_weak_sph", "reproducing_kernel"})
+      .describedAs("the methods run at each spacing, each scored the same way; [method] keys apply to method.name's "
+                   "cases, the others run with their defaults");
   s.add("study.compare_staircase", T::Boolean).defaultsTo("true")
       .describedAs("run the staircase baseline beside the cut cells at every spacing");
   s.add("study.reference", T::String).defaultsTo("\"none\"").oneOf({"none", "lamb_strip"})
@@ -98,35 +108,6 @@ long shapeIndex(SceneReader& reader, const std::string& name) {
   return -1;
 }
 
-// Records the field's component along each probe's direction, interpolated at its position:
-// rows over the unknowns (CutCellGalerkin::interpolation), velocity or displacement.
-class ProbeRows final : public Observer {
- public:
-  ProbeRows(std::vector<std::vector<std::pair<Index, Real>>> rows, std::vector<bool> velocity, std::vector<std::string> names)
-      : rows_(std::move(rows)), velocity_(std::move(velocity)), series_("t [s]", std::move(names)) {}
-  void observe(const StateView& state) override {
-    std::vector<Real> values;
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-      const Vector& field = velocity_[i] ? state.velocity : state.displacement;
-      Real value = 0;
-      for (const auto& [dof, w] : rows_[i]) value += w * field[dof];
-      values.push_back(value);
-    }
-    series_.append(state.time, values);
-  }
-  void end(const StateView& state) override {
-    if (series_.times().empty() || series_.times().back() < state.time) observe(state);
-  }
-  void saveState(StateArchive& archive) const override { series_.saveState(archive); }
-  void restoreState(const StateArchive& archive) override { series_.restoreState(archive); }
-  const TimeSeries& series() const { return series_; }
-
- private:
-  std::vector<std::vector<std::pair<Index, Real>>> rows_;
-  std::vector<bool> velocity_;
-  TimeSeries series_;
-};
-
 }  // namespace
 
 std::vector<Real> lambHalfPlaneSeries(const HalfPlaneLamb& lamb, const Material& material, const std::vector<Real>& x,
@@ -147,16 +128,76 @@ std::vector<Real> lambHalfPlaneSeries(const HalfPlaneLamb& lamb, const Material&
 }
 
 template <int D>
+void writeAndScoreProbes(const SolidPlan<D>& plan, const TimeSeries& recorded, const std::string& folder,
+                         SolidCaseResult& result) {
+  if (plan.probes.empty()) return;
+  std::vector<std::string> columns;
+  std::vector<std::vector<Real>> values, exact;
+  for (std::size_t i = 0; i < plan.probes.size(); ++i) {
+    columns.push_back(plan.probes[i].name);
+    values.push_back(recorded.column(i));
+    if (!plan.lamb) continue;
+    columns.push_back(plan.probes[i].name + "_exact");
+    const Real sign = plan.probes[i].direction.dot(-scene::vectorOf<D>(plan.lamb->normal)) > 0 ? 1.0 : -1.0;
+    std::vector<Real> e = lambHalfPlaneSeries(*plan.lamb, plan.solid.materials[0],
+                                              std::vector<Real>(plan.probes[i].position.data(), plan.probes[i].position.data() + D),
+                                              recorded.times(), plan.probes[i].velocity);
+    for (Real& x : e) x *= sign;
+    const SignalErrors errors = compareSignals(recorded.times(), values.back(), e, plan.errorWindow);
+    result.relativeL2.push_back(errors.relativeL2);
+    result.peakError.push_back(errors.peakError);
+    result.arrivalError.push_back(errors.arrivalError);
+    exact.push_back(std::move(e));
+  }
+  TimeSeries table("t [s]", columns);
+  for (std::size_t k = 0; k < recorded.rows(); ++k) {
+    std::vector<Real> row;
+    for (std::size_t i = 0; i < plan.probes.size(); ++i) {
+      row.push_back(values[i][k]);
+      if (plan.lamb) row.push_back(exact[i][k]);
+    }
+    table.append(recorded.times()[k], row);
+  }
+  table.writeCsv(folder + "/" + result.name + "-probes.csv");
+  result.files.push_back(result.name + "-probes.csv");
+}
+
+template <int D>
 SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
   SolidPlan<D> plan;
   plan.scene = scene;
   if (scene.info.dimension != D || D < 2)
     reader.fail("scene.dimension", "the solid study runs 2-D and 3-D scenes");
-  for (const UnsupportedFeature& f : unsupportedFeatures(scene, methodNamed(scene.method.name)))
-    reader.fail(f.key, f.message());
+  plan.methods = reader.has("study.methods") ? reader.strings("study.methods") : std::vector<std::string>{scene.method.name};
+  if (plan.methods.empty()) reader.fail("study.methods", "names no method");
+  for (std::size_t i = 0; i < plan.methods.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (plan.methods[i] == plan.methods[j]) reader.fail("study.methods", "names " + plan.methods[i] + " twice");
+  for (const std::string& name : plan.methods)
+    for (const UnsupportedFeature& f : unsupportedFeatures(scene, methodNamed(name))) reader.fail(f.key, f.message());
   if (scene.integrator.kind != IntegratorKind::CentralDifference)
     reader.fail("integrator.name", "the solid study runs central_difference (its lumped mass makes it explicit)");
   plan.solid = readSceneSolid<D>(reader, scene);
+  for (const std::string& name : plan.methods)
+    for (const UnsupportedFeature& f : unsupportedRegions(methodNamed(name), !plan.solid.regions.empty()))
+      reader.fail(f.key, f.message());
+  const auto runs = [&plan](const char* name) {
+    return std::find(plan.methods.begin(), plan.methods.end(), name) != plan.methods.end();
+  };
+  if (runs("reproducing_kernel")) {
+    if (scene.method.name == "reproducing_kernel") {
+      plan.collocation = readCollocationSpec(reader, scene.method.name, kProgram);
+    } else {
+      plan.collocation.supportRatio = D == 2 ? 2.5 : 2.2;  // the widest supports whose interior rows do not grow
+    }
+    const CollocationGrowingModes growth =
+        rkGrowingModes(D, plan.collocation.order, plan.collocation.supportRatio, plan.solid.materials[0]);
+    if (growth.growing()) reader.fail("method.support_ratio", growth.what + "; " + growth.advice);
+    for (std::size_t i = 0; i < plan.solid.regions.size(); ++i)
+      if (!plan.solid.initialVelocity[i].empty() || !plan.solid.initialDisplacement[i].empty())
+        reader.fail(scene::childPath(scene::indexPath("region", i), "initial_velocity"),
+                    "RK collocation in the solid study starts from rest");
+  }
   const GeometrySpec& g = scene.geometry;
 
   for (std::size_t i = 0; i < scene.boundaries.size(); ++i) {
@@ -268,11 +309,16 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
       reader.fail("study.spacings", e.problem());
     }
   }
-  plan.cells.push_back(reader.string("method.cells") == "staircase" ? CutCells::Staircase : CutCells::Cut);
-  if (reader.boolean("study.compare_staircase") && plan.cells[0] == CutCells::Cut) plan.cells.push_back(CutCells::Staircase);
+  // the very weak SPH's keys (read whether or not it runs: a scene may name them for a later run)
+  const CutCells cells = reader.string("method.cells") == "staircase" ? CutCells::Staircase : CutCells::Cut;
+  const bool staircaseToo = reader.boolean("study.compare_staircase") && cells == CutCells::Cut;
   plan.depth = static_cast<int>(reader.integer("method.cut_depth"));
   plan.smallCellFraction = reader.number("method.small_cell_fraction");
   (void)reader.string("method.variant");
+  if (runs("very_weak_sph")) {
+    plan.cells.push_back(cells);
+    if (staircaseToo) plan.cells.push_back(CutCells::Staircase);
+  }
   plan.errorWindow = reader.has("study.error_window") ? reader.number("study.error_window") : scene.integrator.endTime;
 
   if (reader.string("study.reference") == "lamb_strip") {
@@ -319,6 +365,7 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
   std::ostringstream name;
   name << (cells == CutCells::Cut ? "cut_" : "staircase_") << spacing;
   result.name = name.str();
+  result.method = "very_weak_sph";
   result.spacing = spacing;
   result.cells = cells == CutCells::Cut ? "cut" : "staircase";
 
@@ -406,7 +453,6 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
   // probes: the field's component along each direction, interpolated at the position
   std::vector<std::vector<std::pair<Index, Real>>> rows;
   std::vector<bool> velocity;
-  std::vector<std::string> names;
   for (const SolidProbe<D>& p : plan.probes) {
     std::map<Index, Real> row;
     for (int c = 0; c < D; ++c)
@@ -414,9 +460,17 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
         for (const auto& [dof, w] : method.interpolation(p.position, c)) row[dof] += p.direction[c] * w;
     rows.emplace_back(row.begin(), row.end());
     velocity.push_back(p.velocity);
-    names.push_back(p.name);
   }
-  ProbeRows probes(std::move(rows), std::move(velocity), names);
+  SampledProbes probes(probeNames(plan), [rows = std::move(rows), velocity = std::move(velocity)](const StateView& state) {
+    std::vector<Real> values;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const Vector& field = velocity[i] ? state.velocity : state.displacement;
+      Real value = 0;
+      for (const auto& [dof, w] : rows[i]) value += w * field[dof];
+      values.push_back(value);
+    }
+    return values;
+  });
   StabilityMonitor monitor(scene.stability.options(D, loadsQuietAfter(scene)));
   ProgressReporter reporter(scene.integrator.endTime, method.unknownNodes(), progress);
   TimeLoop loop;
@@ -436,45 +490,15 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
   const FrameOutputReport report = particleFrames.report();
   for (const std::string& f : report.files) result.files.push_back(f);
 
-  // the probes' CSV, with the exact series beside each where there is a reference, and the errors
-  const TimeSeries& recorded = probes.series();
-  std::vector<std::string> columns;
-  std::vector<std::vector<Real>> values, exact;
-  for (std::size_t i = 0; i < plan.probes.size(); ++i) {
-    columns.push_back(plan.probes[i].name);
-    values.push_back(recorded.column(i));
-    if (!plan.lamb) continue;
-    columns.push_back(plan.probes[i].name + "_exact");
-    const Real sign = plan.probes[i].direction.dot(-scene::vectorOf<D>(plan.lamb->normal)) > 0 ? 1.0 : -1.0;
-    std::vector<Real> e = lambHalfPlaneSeries(*plan.lamb, solid.materials[0],
-                                              std::vector<Real>(plan.probes[i].position.data(), plan.probes[i].position.data() + D),
-                                              recorded.times(), plan.probes[i].velocity);
-    for (Real& x : e) x *= sign;
-    const SignalErrors errors = compareSignals(recorded.times(), values.back(), e, plan.errorWindow);
-    result.relativeL2.push_back(errors.relativeL2);
-    result.peakError.push_back(errors.peakError);
-    result.arrivalError.push_back(errors.arrivalError);
-    exact.push_back(std::move(e));
-  }
-  if (!plan.probes.empty()) {
-    TimeSeries table("t [s]", columns);
-    for (std::size_t k = 0; k < recorded.rows(); ++k) {
-      std::vector<Real> row;
-      for (std::size_t i = 0; i < plan.probes.size(); ++i) {
-        row.push_back(values[i][k]);
-        if (plan.lamb) row.push_back(exact[i][k]);
-      }
-      table.append(recorded.times()[k], row);
-    }
-    table.writeCsv(folder + "/" + result.name + "-probes.csv");
-    result.files.push_back(result.name + "-probes.csv");
-  }
+  writeAndScoreProbes(plan, probes.series(), folder, result);
   return result;
 }
 
 template SolidPlan<2> readSolidPlan<2>(SceneReader&, const Scene&);
 template SolidPlan<3> readSolidPlan<3>(SceneReader&, const Scene&);
 template SolidCaseResult runSolidCase<2>(const SolidPlan<2>&, Real, CutCells, const std::string&, bool, bool);
+template void writeAndScoreProbes<2>(const SolidPlan<2>&, const TimeSeries&, const std::string&, SolidCaseResult&);
+template void writeAndScoreProbes<3>(const SolidPlan<3>&, const TimeSeries&, const std::string&, SolidCaseResult&);
 template SolidCaseResult runSolidCase<3>(const SolidPlan<3>&, Real, CutCells, const std::string&, bool, bool);
 
 }  // namespace mfwave::solid

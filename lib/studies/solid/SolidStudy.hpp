@@ -1,7 +1,8 @@
 #pragma once
 // The solid study (issue 48): any scene whose solid is described by shapes (wiring/SolidScene) run by
 // the Galerkin very weak SPH on cut lattice cells (methods/very_weak_sph/CutCellGalerkin), or on a
-// staircase of whole cells as the baseline, at each of study.spacings; loads anywhere (point forces,
+// staircase of whole cells as the baseline, and by RK collocation on lattice and surface nodes
+// (methods/collocation/SolidCollocationNodes), at each of study.spacings; loads anywhere (point forces,
 // moment tensors, tractions on a named surface), probes anywhere recording a component along any
 // direction, and the exact 2-D Lamb response where the scene is a loaded half-plane of any
 // inclination (study.reference = "lamb_strip": LambStripLoad in the half-plane's own coordinates).
@@ -10,6 +11,7 @@
 #include "io/scene/SceneSchema.hpp"
 #include "methods/very_weak_sph/CutCellGalerkin.hpp"
 #include "observers/TimeSeries.hpp"
+#include "wiring/CollocationSpec.hpp"
 #include "wiring/SolidScene.hpp"
 
 #include <optional>
@@ -46,7 +48,9 @@ struct SolidPlan {
   SceneSolid<D> solid;
   std::vector<SolidProbe<D>> probes;
   std::vector<Real> spacings;  // the scene's first
-  std::vector<CutCells> cells; // cut, then staircase when compared
+  std::vector<std::string> methods;  // study.methods: very_weak_sph and / or reproducing_kernel
+  std::vector<CutCells> cells; // very_weak_sph: cut, then staircase when compared
+  CollocationSpec collocation; // reproducing_kernel: its shape functions
   int depth = 4;
   Real smallCellFraction = 0.25;
   Real errorWindow = 0;
@@ -61,8 +65,9 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene);
 
 struct SolidCaseResult {
   std::string name;
+  std::string method;  // very_weak_sph or reproducing_kernel
   Real spacing = 0;
-  std::string cells;
+  std::string cells;   // cut, staircase; nodes (collocation: lattice and surface nodes)
   Index unknowns = 0, extended = 0, cutCells = 0;
   Real volume = 0, smallestKept = 0;
   Real stableStep = 0, dt = 0;
@@ -78,6 +83,14 @@ struct SolidCaseResult {
 template <int D>
 SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells cells, const std::string& folder,
                              bool frames, bool progress);
+
+// One RK collocation case (reproducing_kernel) of `plan` at `spacing`: the lattice nodes well inside
+// the solid, nodes on its surfaces with traction rows, the box faces fixed where they transmit
+// (methods/collocation/SolidCollocationNodes); written and scored as runSolidCase's. Named
+// rk_<spacing>. Throws InstabilityError (naming the node) when the run blows up.
+template <int D>
+SolidCaseResult runSolidCollocationCase(const SolidPlan<D>& plan, Real spacing, const std::string& folder, bool frames,
+                                        bool progress);
 
 // The exact velocity (or displacement) along the inward normal of the half-plane at `x`.
 std::vector<Real> lambHalfPlaneSeries(const HalfPlaneLamb& lamb, const Material& material, const std::vector<Real>& x,
