@@ -47,6 +47,8 @@ int run(SceneReader& reader, const Scene& scene, const DriverOptions& options) {
       results.push_back(runSolidCollocationCase<D>(plan, dx, folder, first, !options.quiet));
       first = false;
     }
+    if (std::find(plan.methods.begin(), plan.methods.end(), "updated_lagrangian_sph") != plan.methods.end())
+      results.push_back(runSolidSphCase<D>(plan, dx, folder, !options.quiet));
   }
 
   // cases.csv: one row per case, the errors of every probe
@@ -123,6 +125,14 @@ int run(SceneReader& reader, const Scene& scene, const DriverOptions& options) {
                       ") on the lattice nodes at least half a spacing inside the solid and nodes on its surfaces with "
                       "traction rows (cases rk_<spacing>; cut_cells counts its surface nodes)");
     for (const std::string& note : standInNotes(scene, methodNamed("reproducing_kernel"))) summary.notes.add(note);
+  }
+  if (std::find(plan.methods.begin(), plan.methods.end(), "updated_lagrangian_sph") != plan.methods.end()) {
+    summary.notes.add("updated_lagrangian_sph: the SPH for solids on a body-fitted fill (cases ulsph_<spacing>; "
+                      "cut_cells counts its surface particles), the Lamb study's small-amplitude choices (alpha = 1, "
+                      "kernel-gradient correction), traction times " + mfwave::scene::formatNumber(kSmallAmplitude) +
+                      " and probes over it; leapfrog at its own step (integrator.name = " + scene.integrator.name +
+                      " and cfl not used)");
+    for (const std::string& note : standInNotes(scene, methodNamed("updated_lagrangian_sph"))) summary.notes.add(note);
   }
   summary.conclude(folder, &std::cout);
   return 0;

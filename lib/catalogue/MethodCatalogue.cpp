@@ -179,11 +179,12 @@ std::vector<MethodEntry> makeCatalogue() {
     m.supports = {{1, 2, 3},
                   {"line", "rectangle", "block"},
                   {B::Free, B::Fixed, B::Traction},
-                  {L::SurfacePatch, L::BodyForce},
+                  {L::SurfacePatch, L::BodyForce, L::SurfaceTraction},
                   firstOrderIntegratorNames(),
                   true,
                   {{B::Transmitting, B::Free}}};
-    m.supports.solidPrograms = {"rings"};  // two annulus shapes with opposite initial velocities
+    // the rings: two annulus shapes with opposite initial velocities; solid: a body-fitted fill at small amplitude
+    m.supports.solidPrograms = {"rings", "solid"};
     m.addOptions = addUpdatedLagrangianSphKeys;
     m.stepRule = "cfl x the method's own CFL, viscous and force criteria, evaluated before every step";
     m.cost.baseMiB = {33, 32.1, 35};
@@ -191,7 +192,7 @@ std::vector<MethodEntry> makeCatalogue() {
     m.cost.particleStepsPerSecond = {1.2e7, 3.1e6, 6.5e5};
     m.cost.setupSecondsPerParticle = {1.2e-6, 1.2e-6, 5e-6};
     m.cost.measured = "bar1d-sph.toml at 800 particles; lamb2d.toml at dx = 0.25, 0.125; lamb3d.toml at dx = 0.5";
-    m.programs = {"bar1d_sph", "plate", "rings", "lamb2d", "lamb3d"};
+    m.programs = {"bar1d_sph", "plate", "rings", "lamb2d", "lamb3d", "solid"};
     list.push_back(m);
   }
   {

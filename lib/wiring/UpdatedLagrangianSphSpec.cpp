@@ -26,6 +26,16 @@ UpdatedLagrangianSphKeyDefaults smallAmplitudeWaveDefaults() {
   return d;
 }
 
+UpdatedLagrangianSphOptions smallAmplitudeWaveOptions(const Material& material) {
+  UpdatedLagrangianSphOptions options;
+  options.material = material;
+  const UpdatedLagrangianSphKeyDefaults keys = smallAmplitudeWaveDefaults();
+  options.viscosity.alpha = keys.viscosityAlpha;
+  options.viscosity.beta = keys.viscosityBeta;
+  options.kernelGradientCorrection = keys.kernelGradientCorrection;
+  return options;
+}
+
 void addUpdatedLagrangianSphKeys(SceneSchema& schema) {
   using T = ValueType;
   const std::string when = "name = updated_lagrangian_sph";

@@ -36,6 +36,9 @@ void addUpdatedLagrangianSphViscosityKeys(SceneSchema& schema, const UpdatedLagr
 // it runs it): alpha 1, measured best on lamb2d.toml at every spacing (it damps the particle-scale
 // ringing of the free surface; 0 and 0.1 ring, 2 is no better), and the kernel-gradient correction on.
 UpdatedLagrangianSphKeyDefaults smallAmplitudeWaveDefaults();
+// The method's options for elastic waves at small amplitude in `material`: the options' defaults
+// with smallAmplitudeWaveDefaults' viscosity and correction (the Lamb study's, the solid study's).
+UpdatedLagrangianSphOptions smallAmplitudeWaveOptions(const Material& material);
 
 // Reads the options when method.name is updated_lagrangian_sph; `material` from the scene's
 // [material]. method.body_force has scene.dimension entries or 3 (then those beyond the dimension

@@ -26,11 +26,7 @@ struct LambSolidSpec {
   // The lamb2d and lamb3d defaults for `material` (measured on lamb2d; lamb3d keeps them: LambSolidCase.hpp).
   static LambSolidSpec linearDefaults(const Material& material) {
     LambSolidSpec spec;
-    spec.options.material = material;
-    const UpdatedLagrangianSphKeyDefaults keys = smallAmplitudeWaveDefaults();  // the keys' defaults, declared once
-    spec.options.viscosity.alpha = keys.viscosityAlpha;
-    spec.options.viscosity.beta = keys.viscosityBeta;
-    spec.options.kernelGradientCorrection = keys.kernelGradientCorrection;
+    spec.options = smallAmplitudeWaveOptions(material);  // the keys' defaults, declared once
     return spec;
   }
 };

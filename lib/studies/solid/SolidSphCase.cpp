@@ -1,0 +1,174 @@
+// The solid study's updated-Lagrangian SPH case (runSolidSphCase, SolidStudy.hpp): the SPH for solids
+// of Li's primer on a body-fitted fill of the scene's solid (geometry/ParticleFill), at small
+// amplitude so that the large-deformation method answers the linear problem, as in the Lamb study
+// (studies/lamb3d/LambSolidCase.hpp: its choices and why).
+//
+//   particles   one per lattice cell that meets the solid, at the centroid of the cell's inside part
+//               where the surface cuts it, with that part's volume (m = rho0 V; the volumes add up
+//               to the solid's; slivers below 0.1 of a cell merged into a neighbour)
+//   options     smallAmplitudeWaveOptions: cubic spline, h = 1.3 dx, continuity density, gamma = 1
+//               EOS, Jaumann rate, artificial viscosity alpha = 1, the kernel-gradient correction on
+//               (which makes a surface particle's cut support first-order consistent)
+//   load        a surface_traction load's pressure (along the particle's inward normal) or vector,
+//               eps times the scene's, on the surface particles of its named surface: each carries
+//               its share of the surface (ParticleFill's area) times w = clamp((r - |p - c|) / s +
+//               1/2, 0, 1), p the particle projected onto the surface, s its surface spacing (the
+//               area in 2-D, its square root in 3-D); the probes record v / eps
+//   faces       the box's faces free (the method has no dashpot: transmitting faces run free, the
+//               catalogue's stand-in); the solid's own surfaces are free
+//   integrator  leapfrog at the method's own step criteria, every step (the scene's integrator.name
+//               and cfl are not used: the summary says so)
+//   probes      u^h or v^h along each direction at any point: linear reproducing-kernel (moving
+//               least squares, m = 1) interpolation over the particles' initial positions (support
+//               2.5 dx), exact for a linear field, so a probe on the surface is not biased by the
+//               particles' lying on one side of it.
+
+#include "studies/solid/SolidStudy.hpp"
+
+#include "core/Error.hpp"
+#include "core/Stopwatch.hpp"
+#include "geometry/ParticleFill.hpp"
+#include "io/run/ProgressReporter.hpp"
+#include "io/run/RunSummary.hpp"
+#include "io/scene/Format.hpp"
+#include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
+#include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
+#include "observers/StabilityMonitor.hpp"
+#include "observers/TimeLoop.hpp"
+#include "studies/solid/SolidCase.hpp"
+#include "wiring/SolidIntegration.hpp"
+#include "wiring/SolidStateAdapter.hpp"
+#include "wiring/UpdatedLagrangianSphSpec.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace mfwave::solid {
+
+template <int D>
+SolidCaseResult runSolidSphCase(const SolidPlan<D>& plan, Real spacing, const std::string& folder, bool progress) {
+  const Scene& scene = plan.scene;
+  const Stopwatch setup;
+  SolidCaseResult result;
+  std::ostringstream name;
+  name << "ulsph_" << spacing;
+  result.name = name.str();
+  result.method = "updated_lagrangian_sph";
+  result.cells = "fill";
+  result.spacing = spacing;
+  const Real eps = kSmallAmplitude;
+
+  // the body-fitted fill of the solid within the box: cells centred on the lattice's nodes
+  const SceneSolid<D>& solid = plan.solid;
+  const Vec<D> lower = scene::vectorOf<D>(scene.geometry.lower);
+  const SolidParticles<D> filled = fill<D>(*solid.solid, spacing, lower);
+  ParticleSet<D> particles;
+  for (Index i = 0; i < filled.size(); ++i)
+    particles.add(filled.position[static_cast<std::size_t>(i)], filled.volume[static_cast<std::size_t>(i)]);
+  result.unknowns = filled.size();
+  for (Index i = 0; i < filled.size(); ++i) {
+    result.volume += filled.volume[static_cast<std::size_t>(i)];
+    result.cutCells += filled.surface[static_cast<std::size_t>(i)];
+  }
+
+  UpdatedLagrangianSphOptions options = smallAmplitudeWaveOptions(solid.materials[0]);
+  // the method measures its spacing from the mean volume, which the cut cells make smaller than dx
+  options.smoothingLengthRatio *= spacing / std::pow(result.volume / static_cast<Real>(filled.size()), Real(1) / D);
+  UpdatedLagrangianSph<D> system(particles, options);
+
+  // the loads on the surface particles of their named surfaces
+  for (std::size_t l = 0; l < scene.loads.size(); ++l) {
+    const LoadSpec& load = scene.loads[l];  // surface_traction: the catalogue refuses the others
+    const Vec<D> centre = scene::vectorOf<D>(load.centre);
+    const bool pressure = load.traction.empty();
+    Real total = 0;
+    for (Index i = 0; i < filled.size(); ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      if (!filled.surface[k]) continue;
+      const Vec<D> x = filled.position[k];
+      const Vec<D> p = x - solid.solid->signedDistance(x) * solid.solid->normal(x);
+      if (solid.solid->surfaceName(p) != load.surface) continue;
+      const Real area = filled.area[k];
+      const Real s = D == 2 ? area : std::sqrt(area);
+      if (!(s > 0)) continue;
+      const Real w = std::clamp((load.radius - (p - centre).norm()) / s + 0.5, 0.0, 1.0);
+      if (w == 0) continue;
+      const Vec<D> traction = pressure ? Vec<D>(-load.pressure * filled.normal[k]) : scene::vectorOf<D>(load.traction);
+      system.addTraction({i}, eps * traction, load.timeFunction, w * area);
+      total += w * area;
+    }
+    if (!(total > 0))
+      throw InputError("load[" + std::to_string(l) + "].surface",
+                       "no surface particle of '" + load.surface + "' lies within " + scene::formatNumber(load.radius) +
+                           " of " + scene::formatPoint(load.centre) + " at spacing " + scene::formatNumber(spacing));
+  }
+  const Vector y0 = system.initialState();
+  SolidIntegrationSettings integration;
+  integration.integrator = "leapfrog";
+  integration.cfl = 1;  // the method's criteria carry their Courant number
+  const std::unique_ptr<FirstOrderIntegrator> integrator =
+      makeSolidIntegrator(system, y0, integration, scene.integrator.endTime);
+  result.stableStep = system.stableStep(y0);
+  result.dt = result.stableStep;
+
+  // probes: linear RK interpolation over the initial positions, along each direction, over eps
+  const ReproducingKernelShapeFunctions<D> shapes(particles, 1, 2.5 * spacing);
+  std::vector<std::vector<std::pair<Index, Real>>> rows;
+  std::vector<bool> velocity;
+  ShapeFunctionValues<D> values;
+  for (const SolidProbe<D>& p : plan.probes) {
+    shapes.evaluate(p.position, 0, values);
+    std::vector<std::pair<Index, Real>> row;
+    for (Index k = 0; k < values.size(); ++k)
+      for (int c = 0; c < D; ++c)
+        if (p.direction[c] != 0)
+          row.emplace_back(D * values.nodes[static_cast<std::size_t>(k)] + c,
+                           p.direction[c] * values.value[static_cast<std::size_t>(k)] / eps);
+    rows.push_back(std::move(row));
+    velocity.push_back(p.velocity);
+  }
+  SampledProbes probes(probeNames(plan), [rows = std::move(rows), velocity = std::move(velocity)](const StateView& state) {
+    std::vector<Real> out;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const Vector& field = velocity[i] ? state.velocity : state.displacement;
+      Real value = 0;
+      for (const auto& [dof, w] : rows[i]) value += w * field[dof];
+      out.push_back(value);
+    }
+    return out;
+  });
+
+  SolidStateAdapter<D> adapter(system, particles);
+  StabilityMonitor monitor(scene.stability.options(D, loadsQuietAfter(scene)));
+  adapter.add(monitor, 1);
+  if (!plan.probes.empty()) adapter.add(probes, scene.output.probeEvery);
+  ProgressReporter reporter(scene.integrator.endTime, filled.size(), progress);
+  TimeLoop loop;
+  loop.add(reporter);
+  loop.add(adapter);
+  result.setupSeconds = setup.seconds();
+  RunStatistics stats;
+  try {
+    stats = loop.run(*integrator, scene.integrator.endTime);
+  } catch (const InstabilityError& e) {
+    writeAndScoreProbes(plan, probes.series(), folder, result);
+    if (e.particle() < 0 || e.particle() >= filled.size()) throw;
+    const Vec<D> x = filled.position[static_cast<std::size_t>(e.particle())];
+    throw InstabilityError(std::string(e.what()) + " [updated-Lagrangian SPH on the solid, case " + result.name +
+                               ": the particle starts at " + scene::formatPoint(std::vector<Real>(x.data(), x.data() + D)) +
+                               "; " + result.name + "-probes.csv holds the probes up to the stop]",
+                           e.step(), e.time(), e.particle());
+  }
+  result.runSeconds = stats.wallSeconds;
+  result.steps = stats.steps;
+  if (stats.steps > 0) result.dt = (stats.endTime - stats.startTime) / static_cast<Real>(stats.steps);
+  result.peakMiB = peakMemoryMiB();
+  writeAndScoreProbes(plan, probes.series(), folder, result);
+  return result;
+}
+
+template SolidCaseResult runSolidSphCase<2>(const SolidPlan<2>&, Real, const std::string&, bool);
+template SolidCaseResult runSolidSphCase<3>(const SolidPlan<3>&, Real, const std::string&, bool);
+
+}  // namespace mfwave::solid
