@@ -47,6 +47,18 @@ TEST(SceneSupport, AnUnsupportedLoadNamesItsKeyAndTheMethodsThatTakeIt) {
   }
 }
 
+TEST(SceneSupport, MaterialsByRegionAreRefusedByNameForTheMethodsThatRunSolidsWithOneMaterial) {
+  EXPECT_TRUE(unsupportedRegions(methodNamed("very_weak_sph"), true).empty());
+  EXPECT_TRUE(unsupportedRegions(methodNamed("reproducing_kernel"), false).empty());
+  for (const char* method : {"reproducing_kernel", "updated_lagrangian_sph"}) {
+    const auto problems = unsupportedRegions(methodNamed(method), true);
+    ASSERT_EQ(problems.size(), 1u) << method;
+    EXPECT_EQ(problems[0].key, "region");
+    EXPECT_EQ(problems[0].message(), std::string(method) + " does not support materials by region; supported by: "
+                                                           "very_weak_sph");
+  }
+}
+
 TEST(SceneSupport, DimensionAndIntegratorAreCheckedToo) {
   const Scene line = sceneOf("radial_basis", "", 1);
   EXPECT_TRUE(unsupportedFeatures(line, methodNamed("radial_basis")).empty());

@@ -91,7 +91,7 @@ def main():
         for name in ("lamb2d_inclined", "lamb2d_halfplane"):
             out = os.path.join(work, name)
             code, text = run([args.solid, "--scene", os.path.join(args.scenes, name + ".toml"), "--out", out, "--quiet",
-                              "--set", "study.spacings=[0.0625]"])
+                              "--set", "study.spacings=[0.0625]", "--set", 'study.methods=["very_weak_sph"]'])
             if code != 0:
                 print(text)
                 sys.exit(name + ": exit " + str(code))

@@ -3,12 +3,16 @@
 // gives the function that samples its field along each probe's direction) and the probes' CSV with
 // the exact series beside them, scored against the reference.
 
+#include "core/Error.hpp"
 #include "integrators/Integrator.hpp"
+#include "io/run/RunSummary.hpp"
 #include "observers/Observer.hpp"
+#include "observers/TimeLoop.hpp"
 #include "observers/TimeSeries.hpp"
 #include "studies/solid/SolidStudy.hpp"
 
 #include <functional>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,6 +37,60 @@ class SampledProbes final : public Observer {
   Sampler sampler_;
   TimeSeries series_;
 };
+
+// A case's result before it runs: named <prefix>_<spacing>, its method and kind of cells.
+inline SolidCaseResult startCase(const std::string& prefix, const std::string& method, const std::string& cells,
+                                 Real spacing) {
+  SolidCaseResult result;
+  std::ostringstream name;
+  name << prefix << '_' << spacing;
+  result.name = name.str();
+  result.method = method;
+  result.cells = cells;
+  result.spacing = spacing;
+  return result;
+}
+
+// What the loop measured: its wall time and steps, and the process's peak memory so far.
+inline void recordRun(SolidCaseResult& result, const RunStatistics& stats) {
+  result.runSeconds = stats.wallSeconds;
+  result.steps = stats.steps;
+  result.peakMiB = peakMemoryMiB();
+}
+
+// Runs `loop` to `endTime`. On a blow-up the probes recorded up to the stop are written (and scored)
+// first, then the InstabilityError is thrown again with `where(particle)` appended (the method's
+// word for the state's particle: a node, a particle's start), when the particle is one it knows
+// (where returns "" otherwise: the error then goes on as it came).
+template <int D, class Where>
+RunStatistics runCase(TimeLoop& loop, Integrator& integrator, Real endTime, const SolidPlan<D>& plan,
+                      const SampledProbes& probes, const std::string& folder, SolidCaseResult& result, Where where) {
+  try {
+    return loop.run(integrator, endTime);
+  } catch (const InstabilityError& e) {
+    writeAndScoreProbes(plan, probes.series(), folder, result);
+    const std::string place = e.particle() < 0 ? std::string() : where(e.particle());
+    if (place.empty()) throw;
+    throw InstabilityError(std::string(e.what()) + " [" + place + "; " + result.name +
+                               "-probes.csv holds the probes up to the stop]",
+                           e.step(), e.time(), e.particle());
+  }
+}
+
+// The sampler of probes that are fixed linear combinations of the state's entries: probe i reads
+// sum_k w_k field[dof_k] over rows[i], the velocity where velocity[i], else the displacement.
+inline SampledProbes::Sampler rowSampler(std::vector<std::vector<std::pair<Index, Real>>> rows, std::vector<bool> velocity) {
+  return [rows = std::move(rows), velocity = std::move(velocity)](const StateView& state) {
+    std::vector<Real> values;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const Vector& field = velocity[i] ? state.velocity : state.displacement;
+      Real value = 0;
+      for (const auto& [dof, w] : rows[i]) value += w * field[dof];
+      values.push_back(value);
+    }
+    return values;
+  };
+}
 
 template <int D>
 std::vector<std::string> probeNames(const SolidPlan<D>& plan) {

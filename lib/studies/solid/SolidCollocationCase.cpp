@@ -46,13 +46,7 @@ SolidCaseResult runSolidCollocationCase(const SolidPlan<D>& plan, Real spacing, 
                                         bool progress) {
   const Scene& scene = plan.scene;
   const Stopwatch setup;
-  SolidCaseResult result;
-  std::ostringstream name;
-  name << "rk_" << spacing;
-  result.name = name.str();
-  result.method = "reproducing_kernel";
-  result.cells = "nodes";
-  result.spacing = spacing;
+  SolidCaseResult result = startCase("rk", "reproducing_kernel", "nodes", spacing);
 
   // nodes: the solid's own surfaces carry traction rows, the box's faces are the lattice's
   const SceneSolid<D>& solid = plan.solid;
@@ -138,24 +132,16 @@ SolidCaseResult runSolidCollocationCase(const SolidPlan<D>& plan, Real spacing, 
   ParticleFrames<D> particleFrames(interior, folder, result.name, frameSettings<D>(scene.output, frames));
   particleFrames.attachTo(loop, scene.output.every);
   result.setupSeconds = setup.seconds();
-  RunStatistics stats;
-  try {
-    stats = loop.run(*integrator, scene.integrator.endTime);
-  } catch (const InstabilityError& e) {
-    // the probes recorded up to the stop stay readable, the node is named by its position
-    writeAndScoreProbes(plan, probes.series(), folder, result);
-    if (e.particle() < 0 || D * e.particle() >= system.size()) throw;
-    const Index node = system.interiorRows()[static_cast<std::size_t>(D * e.particle())] / D;
+  const RunStatistics stats = runCase(loop, *integrator, scene.integrator.endTime, plan, probes, folder, result,
+                                      [&](long particle) -> std::string {
+    // the monitor's particle is the interior unknown's point: said as the node it is
+    if (D * particle >= system.size()) return "";
+    const Index node = system.interiorRows()[static_cast<std::size_t>(D * particle)] / D;
     const Vec<D> x = nodes.position(node);
-    throw InstabilityError(std::string(e.what()) + " [RK collocation on the solid, case " + result.name + ": node " +
-                               std::to_string(node) + " at " +
-                               scene::formatPoint(std::vector<Real>(x.data(), x.data() + D)) + "; " + result.name +
-                               "-probes.csv holds the probes up to the stop]",
-                           e.step(), e.time(), static_cast<long>(node));
-  }
-  result.runSeconds = stats.wallSeconds;
-  result.steps = stats.steps;
-  result.peakMiB = peakMemoryMiB();
+    return "RK collocation on the solid, case " + result.name + ": node " + std::to_string(node) + " at " +
+           scene::formatPoint(std::vector<Real>(x.data(), x.data() + D));
+  });
+  recordRun(result, stats);
   writeAndScoreProbes(plan, probes.series(), folder, result);
   return result;
 }

@@ -50,13 +50,7 @@ template <int D>
 SolidCaseResult runSolidSphCase(const SolidPlan<D>& plan, Real spacing, const std::string& folder, bool progress) {
   const Scene& scene = plan.scene;
   const Stopwatch setup;
-  SolidCaseResult result;
-  std::ostringstream name;
-  name << "ulsph_" << spacing;
-  result.name = name.str();
-  result.method = "updated_lagrangian_sph";
-  result.cells = "fill";
-  result.spacing = spacing;
+  SolidCaseResult result = startCase("ulsph", "updated_lagrangian_sph", "fill", spacing);
   const Real eps = kSmallAmplitude;
 
   // the body-fitted fill of the solid within the box: cells centred on the lattice's nodes
@@ -128,16 +122,7 @@ SolidCaseResult runSolidSphCase(const SolidPlan<D>& plan, Real spacing, const st
     rows.push_back(std::move(row));
     velocity.push_back(p.velocity);
   }
-  SampledProbes probes(probeNames(plan), [rows = std::move(rows), velocity = std::move(velocity)](const StateView& state) {
-    std::vector<Real> out;
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      const Vector& field = velocity[i] ? state.velocity : state.displacement;
-      Real value = 0;
-      for (const auto& [dof, w] : rows[i]) value += w * field[dof];
-      out.push_back(value);
-    }
-    return out;
-  });
+  SampledProbes probes(probeNames(plan), rowSampler(std::move(rows), std::move(velocity)));
 
   SolidStateAdapter<D> adapter(system, particles);
   StabilityMonitor monitor(scene.stability.options(D, loadsQuietAfter(scene)));
@@ -148,22 +133,15 @@ SolidCaseResult runSolidSphCase(const SolidPlan<D>& plan, Real spacing, const st
   loop.add(reporter);
   loop.add(adapter);
   result.setupSeconds = setup.seconds();
-  RunStatistics stats;
-  try {
-    stats = loop.run(*integrator, scene.integrator.endTime);
-  } catch (const InstabilityError& e) {
-    writeAndScoreProbes(plan, probes.series(), folder, result);
-    if (e.particle() < 0 || e.particle() >= filled.size()) throw;
-    const Vec<D> x = filled.position[static_cast<std::size_t>(e.particle())];
-    throw InstabilityError(std::string(e.what()) + " [updated-Lagrangian SPH on the solid, case " + result.name +
-                               ": the particle starts at " + scene::formatPoint(std::vector<Real>(x.data(), x.data() + D)) +
-                               "; " + result.name + "-probes.csv holds the probes up to the stop]",
-                           e.step(), e.time(), e.particle());
-  }
-  result.runSeconds = stats.wallSeconds;
-  result.steps = stats.steps;
+  const RunStatistics stats = runCase(loop, *integrator, scene.integrator.endTime, plan, probes, folder, result,
+                                      [&](long particle) -> std::string {
+    if (particle >= filled.size()) return "";
+    const Vec<D> x = filled.position[static_cast<std::size_t>(particle)];
+    return "updated-Lagrangian SPH on the solid, case " + result.name + ": the particle starts at " +
+           scene::formatPoint(std::vector<Real>(x.data(), x.data() + D));
+  });
+  recordRun(result, stats);
   if (stats.steps > 0) result.dt = (stats.endTime - stats.startTime) / static_cast<Real>(stats.steps);
-  result.peakMiB = peakMemoryMiB();
   writeAndScoreProbes(plan, probes.series(), folder, result);
   return result;
 }

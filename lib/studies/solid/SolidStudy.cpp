@@ -367,13 +367,8 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
                              bool frames, bool progress) {
   const Scene& scene = plan.scene;
   const Stopwatch setup;
-  SolidCaseResult result;
-  std::ostringstream name;
-  name << (cells == CutCells::Cut ? "cut_" : "staircase_") << spacing;
-  result.name = name.str();
-  result.method = "very_weak_sph";
-  result.spacing = spacing;
-  result.cells = cells == CutCells::Cut ? "cut" : "staircase";
+  const bool cut = cells == CutCells::Cut;
+  SolidCaseResult result = startCase(cut ? "cut" : "staircase", "very_weak_sph", cut ? "cut" : "staircase", spacing);
 
   // the method on the solid: its surfaces are the expression's (the box's faces are the lattice's own)
   const SceneSolid<D>& solid = plan.solid;
@@ -467,16 +462,7 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
     rows.emplace_back(row.begin(), row.end());
     velocity.push_back(p.velocity);
   }
-  SampledProbes probes(probeNames(plan), [rows = std::move(rows), velocity = std::move(velocity)](const StateView& state) {
-    std::vector<Real> values;
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      const Vector& field = velocity[i] ? state.velocity : state.displacement;
-      Real value = 0;
-      for (const auto& [dof, w] : rows[i]) value += w * field[dof];
-      values.push_back(value);
-    }
-    return values;
-  });
+  SampledProbes probes(probeNames(plan), rowSampler(std::move(rows), std::move(velocity)));
   StabilityMonitor monitor(scene.stability.options(D, loadsQuietAfter(scene)));
   ProgressReporter reporter(scene.integrator.endTime, method.unknownNodes(), progress);
   TimeLoop loop;
@@ -489,10 +475,7 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
   ParticleFrames<D> particleFrames(nodes, folder, result.name, frameSettings<D>(scene.output, frames));
   particleFrames.attachTo(loop, scene.output.every);
   result.setupSeconds = setup.seconds();
-  const RunStatistics stats = loop.run(*integrator, scene.integrator.endTime);
-  result.runSeconds = stats.wallSeconds;
-  result.steps = stats.steps;
-  result.peakMiB = peakMemoryMiB();
+  recordRun(result, loop.run(*integrator, scene.integrator.endTime));
   const FrameOutputReport report = particleFrames.report();
   for (const std::string& f : report.files) result.files.push_back(f);
 
