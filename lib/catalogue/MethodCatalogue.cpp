@@ -185,6 +185,7 @@ std::vector<MethodEntry> makeCatalogue() {
                   {{B::Transmitting, B::Free}}};
     // the rings: two annulus shapes with opposite initial velocities; solid: a body-fitted fill at small amplitude
     m.supports.solidPrograms = {"rings", "solid"};
+    m.supports.cracks = true;  // pairs across a crack are cut (the visibility criterion)
     m.addOptions = addUpdatedLagrangianSphKeys;
     m.stepRule = "cfl x the method's own CFL, viscous and force criteria, evaluated before every step";
     m.cost.baseMiB = {33, 32.1, 35};

@@ -42,6 +42,8 @@ struct MethodSupport {
   std::vector<std::string> solidPrograms = {};
   // Materials by region ([[region]] with its own material) on those solids, interfaces honoured.
   bool materialRegions = false;
+  // Cracks ([[crack]]) on those solids: the material's interactions cut across them.
+  bool cracks = false;
 };
 
 // Measured cost of a whole run on one core, per dimension (index D - 1); 0 where not measured. The

@@ -59,12 +59,18 @@ std::vector<UnsupportedFeature> unsupportedFeatures(const Scene& scene, const Me
   return out;
 }
 
-std::vector<UnsupportedFeature> unsupportedRegions(const MethodEntry& method, bool regions) {
-  if (!regions || method.supports.materialRegions) return {};
-  std::vector<std::string> supportedBy;
-  for (const MethodEntry& m : methodCatalogue())
-    if (m.supports.materialRegions) supportedBy.push_back(m.name);
-  return {{"region", "materials by region", supportedBy, method.name}};
+std::vector<UnsupportedFeature> unsupportedSolidFeatures(const MethodEntry& method, bool regions, bool cracks) {
+  std::vector<UnsupportedFeature> out;
+  const auto require = [&](bool asked, bool MethodSupport::*field, const char* key, const char* feature) {
+    if (!asked || method.supports.*field) return;
+    std::vector<std::string> supportedBy;
+    for (const MethodEntry& m : methodCatalogue())
+      if (m.supports.*field) supportedBy.push_back(m.name);
+    out.push_back({key, feature, supportedBy, method.name});
+  };
+  require(regions, &MethodSupport::materialRegions, "region", "materials by region");
+  require(cracks, &MethodSupport::cracks, "crack", "cracks");
+  return out;
 }
 
 std::vector<std::string> standInNotes(const Scene& scene, const MethodEntry& method) {

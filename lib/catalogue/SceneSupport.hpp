@@ -24,9 +24,10 @@ struct UnsupportedFeature {
 // Every feature of `scene` that `method` does not support (empty: it can run the scene).
 std::vector<UnsupportedFeature> unsupportedFeatures(const Scene& scene, const MethodEntry& method);
 
-// Whether `method` can run a solid with materials by region (MethodSupport::materialRegions): the
-// feature at key "region" when `regions` and it cannot, else nothing.
-std::vector<UnsupportedFeature> unsupportedRegions(const MethodEntry& method, bool regions);
+// What of a scene's own solid `method` cannot represent: materials by region (key "region",
+// MethodSupport::materialRegions) when `regions`, cracks (key "crack", MethodSupport::cracks) when
+// `cracks`.
+std::vector<UnsupportedFeature> unsupportedSolidFeatures(const MethodEntry& method, bool regions, bool cracks);
 
 // What the method runs in place of what the scene asks, where it has a stand-in (MethodSupport::standIns):
 // one note per boundary entry, e.g. "boundary[0]: transmitting faces run fixed by reproducing_kernel

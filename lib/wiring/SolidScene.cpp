@@ -69,6 +69,14 @@ void addSolidKeys(SceneSchema& s) {
       .describedAs("velocity of the region's material at t = 0, one entry per axis");
   s.add("region[].initial_displacement", T::NumberArray).withUnit("m").defaultsToNote("none")
       .describedAs("displacement of the region's material at t = 0, one entry per axis");
+  s.add("crack", T::TableArray)
+      .describedAs("cracks: surfaces of zero thickness across which the material does not interact (the particle "
+                   "methods cut every pair whose segment crosses one)");
+  s.add("crack[].from", T::NumberArray).withUnit("m").describedAs("2-D: one end of the crack's segment");
+  s.add("crack[].to", T::NumberArray).withUnit("m").describedAs("2-D: the other end");
+  s.add("crack[].corner", T::NumberArray).withUnit("m").describedAs("3-D: a corner of the crack's rectangle");
+  s.add("crack[].edge1", T::NumberArray).withUnit("m").describedAs("3-D: the rectangle's first edge from the corner");
+  s.add("crack[].edge2", T::NumberArray).withUnit("m").describedAs("3-D: its second edge from the corner");
 }
 
 namespace {
@@ -256,6 +264,30 @@ SceneSolid<D> readSceneSolid(SceneReader& reader, const Scene& scene) {
     out.initialDisplacement.push_back(reader.has(key("initial_displacement"))
                                           ? reader.numbers(key("initial_displacement"), D)
                                           : std::vector<Real>{});
+  }
+  // cracks: a segment (2-D) or a rectangle (3-D) with its points in the box
+  for (std::size_t i = 0; i < reader.count("crack"); ++i) {
+    const auto key = [i](const char* k) { return scene::childPath(scene::indexPath("crack", i), k); };
+    std::vector<Vec<D>> points;
+    const char* first = D == 2 ? "from" : "corner";
+    try {
+      if constexpr (D == 2) {
+        const Vec<D> a = scene::vectorOf<D>(reader.numbers(key("from"), D)), b = scene::vectorOf<D>(reader.numbers(key("to"), D));
+        out.cracks.add(Crack<2>(a, b));
+        points = {a, b};
+      } else {
+        const Vec<D> c = scene::vectorOf<D>(reader.numbers(key("corner"), D));
+        const Vec<D> e1 = scene::vectorOf<D>(reader.numbers(key("edge1"), D)), e2 = scene::vectorOf<D>(reader.numbers(key("edge2"), D));
+        out.cracks.add(Crack<3>::rectangle(c, e1, e2));
+        points = {c, Vec<D>(c + e1), Vec<D>(c + e2), Vec<D>(c + e1 + e2)};
+      }
+    } catch (const InputError& e) {
+      reader.fail(key(first), e.problem());
+    }
+    for (const Vec<D>& x : points)
+      if (out.box->signedDistance(x) > 1e-9 * g.spacing)
+        reader.fail(key(first), "the crack reaches " + scene::formatPoint(std::vector<Real>(x.data(), x.data() + D)) +
+                                    ", outside the geometry box " + g.describeBox());
   }
   if (!out.lastRegionWins && out.regions.size() > 1) {
     forEachNode<D>(g, [&](const Vec<D>& x) {

@@ -1,5 +1,6 @@
 #pragma once
-// The solid a scene describes (issue 48): named shapes ([[shape]]: box, half_space, ball, cylinder,
+// The solid a scene describes (issue 48): cracks ([[crack]]: a segment in 2-D, a rectangle in 3-D,
+// inside the box), named shapes ([[shape]]: box, half_space, ball, cylinder,
 // polygon, extruded_polygon, mesh), the solid as a CSG expression over them within the scene's box
 // (geometry.solid; the box itself is 'box'), and materials by region ([[region]]: an expression and
 // a material; where no region covers the solid, [material]). Overlapping regions are refused unless
@@ -11,6 +12,7 @@
 // does not register these keys, so a scene with them is refused there by its unknown keys.
 
 #include "core/Material.hpp"
+#include "geometry/Cracks.hpp"
 #include "geometry/Csg.hpp"
 #include "io/scene/Scene.hpp"
 #include "io/scene/SceneSchema.hpp"
@@ -38,6 +40,7 @@ struct SceneSolid {
   std::vector<std::vector<Real>> initialVelocity;      // per region (empty: at rest)
   std::vector<std::vector<Real>> initialDisplacement;  // per region (empty: none)
   bool lastRegionWins = false;
+  Cracks<D> cracks;  // [[crack]]: the particle methods' visibility criterion
   // The share of the box's lattice nodes (at geometry.spacing) inside the solid.
   Real latticeFraction = 0;
 

@@ -44,6 +44,20 @@ void SkinnedNeighbours<D>::rebuild(const Real* x, Index count) {
   }
   cells_.rebuild(built_);
   buildNeighbourList(cells_, list_);
+  if (interacts_) {
+    // drop the pairs the filter separates, rows kept in order (so sums stay thread-independent)
+    std::size_t kept = 0, start = 0;
+    for (Index i = 0; i < list_.rowCount(); ++i) {
+      const std::size_t end = static_cast<std::size_t>(list_.offsets[static_cast<std::size_t>(i) + 1]);
+      for (std::size_t k = start; k < end; ++k) {
+        const Index j = list_.indices[k];
+        if (j == i || interacts_(i, j)) list_.indices[kept++] = j;
+      }
+      start = end;
+      list_.offsets[static_cast<std::size_t>(i) + 1] = static_cast<Index>(kept);
+    }
+    list_.indices.resize(kept);
+  }
   ++rebuilds_;
 }
 

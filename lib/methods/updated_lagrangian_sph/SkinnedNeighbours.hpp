@@ -10,12 +10,17 @@
 #include "neighbours/CellList.hpp"
 #include "neighbours/NeighbourList.hpp"
 
+#include <functional>
+
 namespace mfwave {
 
 template <int D>
 class SkinnedNeighbours {
  public:
   SkinnedNeighbours(Real supportRadius, Real skin);
+  // Keeps only the pairs (i, j) for which interacts(i, j) is true at every rebuild (the self pair
+  // always): a crack's visibility criterion. Empty (the default): every pair within the radius.
+  void setPairFilter(std::function<bool(Index, Index)> interacts) { interacts_ = std::move(interacts); }
 
   // Makes the lists valid for positions x (particle-major, count * D entries). Returns true when it
   // rebuilt them.
@@ -40,6 +45,7 @@ class SkinnedNeighbours {
   NeighbourList list_;
   Coordinates<D> built_;  // positions at the last build
   long rebuilds_ = 0;
+  std::function<bool(Index, Index)> interacts_;
 };
 
 extern template class SkinnedNeighbours<1>;

@@ -80,6 +80,7 @@ struct UpdatedLagrangianSph<D>::Impl {
         neighbours(kernel->supportRadius(), owner.options_.neighbourSkin),
         spacing(dp),
         initialPositions(positions) {
+    if (owner.options_.interacts) neighbours.setPairFilter(owner.options_.interacts);
     const Index n = owner.layout_.particles;
     const Material& material = owner.options_.material;
     eos.rho0 = material.density();

@@ -7,6 +7,7 @@
 #include "core/Types.hpp"
 
 #include <array>
+#include <functional>
 #include <string>
 
 namespace mfwave {
@@ -59,6 +60,10 @@ struct UpdatedLagrangianSphOptions {
   // has moved more than skin kappa h / 2 since the last build, so every pair within the support is
   // always listed.
   Real neighbourSkin = 0.2;
+  // Which pairs of particles the material connects (by index): false across a crack, the visibility
+  // criterion on the particles' reference positions (geometry/Cracks). Asked for every listed pair
+  // at each rebuild of the lists, so a crack costs nothing between rebuilds. Empty: every pair.
+  std::function<bool(Index, Index)> interacts;
   // Time-step criteria (Monaghan): dt = min(courant h / (c + 1.2 (alpha c + beta max mu)),
   // forceFactor sqrt(h / max |a|)).
   Real courant = 0.3;

@@ -14,6 +14,8 @@
 //               its share of the surface (ParticleFill's area) times w = clamp((r - |p - c|) / s +
 //               1/2, 0, 1), p the particle projected onto the surface, s its surface spacing (the
 //               area in 2-D, its square root in 3-D); the probes record v / eps
+//   cracks      pairs whose segment (between the particles' initial positions) crosses a [[crack]]
+//               are cut from the neighbour lists at every rebuild (the visibility criterion)
 //   faces       the box's faces free (the method has no dashpot: transmitting faces run free, the
 //               catalogue's stand-in); the solid's own surfaces are free
 //   integrator  leapfrog at the method's own step criteria, every step (the scene's integrator.name
@@ -69,6 +71,11 @@ SolidCaseResult runSolidSphCase(const SolidPlan<D>& plan, Real spacing, const st
   UpdatedLagrangianSphOptions options = smallAmplitudeWaveOptions(solid.materials[0]);
   // the method measures its spacing from the mean volume, which the cut cells make smaller than dx
   options.smoothingLengthRatio *= spacing / std::pow(result.volume / static_cast<Real>(filled.size()), Real(1) / D);
+  if (!solid.cracks.empty())
+    // the visibility criterion on the reference positions (at small amplitude the current ones)
+    options.interacts = [&filled, &solid](Index i, Index j) {
+      return solid.cracks.visible(filled.position[static_cast<std::size_t>(i)], filled.position[static_cast<std::size_t>(j)]);
+    };
   UpdatedLagrangianSph<D> system(particles, options);
 
   // the loads on the surface particles of their named surfaces

@@ -185,7 +185,8 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
     reader.fail("integrator.name", "the solid study runs central_difference (its lumped mass makes it explicit)");
   plan.solid = readSceneSolid<D>(reader, scene);
   for (const std::string& name : plan.methods)
-    for (const UnsupportedFeature& f : unsupportedRegions(methodNamed(name), !plan.solid.regions.empty()))
+    for (const UnsupportedFeature& f :
+         unsupportedSolidFeatures(methodNamed(name), !plan.solid.regions.empty(), !plan.solid.cracks.empty()))
       reader.fail(f.key, f.message());
   const auto runs = [&plan](const char* name) {
     return std::find(plan.methods.begin(), plan.methods.end(), name) != plan.methods.end();

@@ -52,3 +52,37 @@ TEST(UlsphNeighbourSkin, StaleListsGiveTheSameRatesAndLargeMovesRebuild) {
   aged.rhs(0, y, agedRate);
   EXPECT_EQ(aged.neighbourRebuilds(), 2);
 }
+
+// A pair filter (a crack's visibility criterion) cuts the material in two: the rates of the
+// particles on one side do not see the other side's velocities, and the lists keep only the
+// pairs on one side, at the first build and at every rebuild.
+TEST(UlsphNeighbourSkin, APairFilterSeparatesTheTwoSidesOfACrack) {
+  const ParticleSet<2> set = makeLattice<2>(Vec2::Zero(), Vec2::Ones(), 0.05);
+  const auto left = [&set](Index i) { return set.position(i)[0] < 0.5; };
+  UpdatedLagrangianSphOptions options;
+  options.interacts = [left](Index i, Index j) { return left(i) == left(j); };
+  UpdatedLagrangianSph<2> cracked(set, options);
+  for (Index i = 0; i < cracked.particleCount(); ++i)
+    for (const Index j : cracked.neighbours().row(i)) ASSERT_EQ(left(i), left(j)) << i << " sees " << j;
+
+  // the left half stretches: the right half, at rest, sees nothing of it
+  Vector y = cracked.initialState();
+  const auto& layout = cracked.layout();
+  for (Index i = 0; i < cracked.particleCount(); ++i)
+    if (left(i)) y[layout.velocity(i, 0)] = 0.3 * set.position(i)[0];
+  Vector rate(cracked.size());
+  cracked.rhs(0, y, rate);
+  Real rightChange = 0, leftChange = 0;
+  for (Index i = 0; i < cracked.particleCount(); ++i) {
+    const Real density = std::abs(rate[layout.density(i)]);
+    (left(i) ? leftChange : rightChange) = std::max(left(i) ? leftChange : rightChange, density);
+  }
+  EXPECT_EQ(rightChange, 0.0);
+  EXPECT_GT(leftChange, 0.0);
+  // a move beyond half the skin rebuilds the lists: still no pair across
+  for (Index i = 0; i < cracked.particleCount(); ++i) y[layout.position(i, 1)] += 0.02;  // beyond skin h = 0.013
+  cracked.rhs(0, y, rate);
+  EXPECT_EQ(cracked.neighbourRebuilds(), 2);
+  for (Index i = 0; i < cracked.particleCount(); ++i)
+    for (const Index j : cracked.neighbours().row(i)) ASSERT_EQ(left(i), left(j));
+}
