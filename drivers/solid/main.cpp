@@ -49,6 +49,8 @@ int run(SceneReader& reader, const Scene& scene, const DriverOptions& options) {
     }
     if (std::find(plan.methods.begin(), plan.methods.end(), "updated_lagrangian_sph") != plan.methods.end())
       results.push_back(runSolidSphCase<D>(plan, dx, folder, !options.quiet));
+    if (std::find(plan.methods.begin(), plan.methods.end(), "total_lagrangian_sph") != plan.methods.end())
+      results.push_back(runSolidTotalLagrangianCase<D>(plan, dx, folder, !options.quiet));
   }
 
   // cases.csv: one row per case, the errors of every probe
@@ -133,6 +135,11 @@ int run(SceneReader& reader, const Scene& scene, const DriverOptions& options) {
                       " and probes over it; leapfrog at its own step (integrator.name = " + scene.integrator.name +
                       " and cfl not used)");
     for (const std::string& note : standInNotes(scene, methodNamed("updated_lagrangian_sph"))) summary.notes.add(note);
+  }
+  if (std::find(plan.methods.begin(), plan.methods.end(), "total_lagrangian_sph") != plan.methods.end()) {
+    summary.notes.add("total_lagrangian_sph: the total-Lagrangian SPH on the same fill (cases tlsph_<spacing>), its "
+                      "defaults (h = 1.3 dx, hourglass factor 1), the same small amplitude, the scene's integrator");
+    for (const std::string& note : standInNotes(scene, methodNamed("total_lagrangian_sph"))) summary.notes.add(note);
   }
   summary.conclude(folder, &std::cout);
   return 0;

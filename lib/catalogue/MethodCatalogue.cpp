@@ -201,8 +201,16 @@ std::vector<MethodEntry> makeCatalogue() {
     m.name = "total_lagrangian_sph";
     m.title = "Total-Lagrangian SPH for elastic solids";
     m.summary = "reference-configuration pairs computed once, corrected kernel gradients, Saint Venant-Kirchhoff "
-                "stress, a variational hourglass penalty, no artificial terms; a case of the plate study.";
-    m.supports = {{2}, {"rectangle"}, {B::Free, B::Fixed}, {}, {"central_difference"}};
+                "stress, a variational hourglass penalty, no artificial terms; a case of the plate study and of the "
+                "solid study.";
+    m.supports = {{2},
+                  {"rectangle"},
+                  {B::Free, B::Fixed},
+                  {L::SurfaceTraction},
+                  {"central_difference"},
+                  false,
+                  {{B::Transmitting, B::Free}}};
+    m.supports.solidPrograms = {"solid"};  // a body-fitted fill at small amplitude, one material
     m.addOptions = noOptions;
     m.stepRule = "cfl x 2 / omega_max of the linearised operator (power iteration)";
     m.cost.baseMiB = {0, 30, 0};
@@ -210,7 +218,7 @@ std::vector<MethodEntry> makeCatalogue() {
     m.cost.particleStepsPerSecond = {0, 1.18e7, 0};
     m.cost.setupSecondsPerParticle = {0, 1.5e-5, 0};
     m.cost.measured = "plate.toml's tlsph case at H / dp = 5 (265 particles; memory per particle not resolved there)";
-    m.programs = {"plate"};
+    m.programs = {"plate", "solid"};
     list.push_back(m);
   }
   return list;

@@ -29,15 +29,14 @@
 
 #include "core/Error.hpp"
 #include "core/Stopwatch.hpp"
-#include "geometry/ParticleFill.hpp"
 #include "io/run/ProgressReporter.hpp"
 #include "io/run/RunSummary.hpp"
 #include "io/scene/Format.hpp"
-#include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
 #include "methods/updated_lagrangian_sph/UpdatedLagrangianSph.hpp"
 #include "observers/StabilityMonitor.hpp"
 #include "observers/TimeLoop.hpp"
 #include "studies/solid/SolidCase.hpp"
+#include "studies/solid/SolidParticleFill.hpp"
 #include "wiring/SolidIntegration.hpp"
 #include "wiring/SolidStateAdapter.hpp"
 #include "wiring/UpdatedLagrangianSphSpec.hpp"
@@ -55,55 +54,21 @@ SolidCaseResult runSolidSphCase(const SolidPlan<D>& plan, Real spacing, const st
   SolidCaseResult result = startCase("ulsph", "updated_lagrangian_sph", "fill", spacing);
   const Real eps = kSmallAmplitude;
 
-  // the body-fitted fill of the solid within the box: cells centred on the lattice's nodes
   const SceneSolid<D>& solid = plan.solid;
-  const Vec<D> lower = scene::vectorOf<D>(scene.geometry.lower);
-  const SolidParticles<D> filled = fill<D>(*solid.solid, spacing, lower);
-  ParticleSet<D> particles;
-  for (Index i = 0; i < filled.size(); ++i)
-    particles.add(filled.position[static_cast<std::size_t>(i)], filled.volume[static_cast<std::size_t>(i)]);
-  result.unknowns = filled.size();
-  for (Index i = 0; i < filled.size(); ++i) {
-    result.volume += filled.volume[static_cast<std::size_t>(i)];
-    result.cutCells += filled.surface[static_cast<std::size_t>(i)];
-  }
+  const FilledSolid<D> filled = fillSolid(plan, spacing, result);
 
   UpdatedLagrangianSphOptions options = smallAmplitudeWaveOptions(solid.materials[0]);
-  // the method measures its spacing from the mean volume, which the cut cells make smaller than dx
-  options.smoothingLengthRatio *= spacing / std::pow(result.volume / static_cast<Real>(filled.size()), Real(1) / D);
+  options.smoothingLengthRatio = filled.ratioFor(options.smoothingLengthRatio, spacing);
   if (!solid.cracks.empty())
     // the visibility criterion on the reference positions (at small amplitude the current ones)
     options.interacts = [&filled, &solid](Index i, Index j) {
-      return solid.cracks.visible(filled.position[static_cast<std::size_t>(i)], filled.position[static_cast<std::size_t>(j)]);
+      return solid.cracks.visible(filled.fill.position[static_cast<std::size_t>(i)],
+                                  filled.fill.position[static_cast<std::size_t>(j)]);
     };
-  UpdatedLagrangianSph<D> system(particles, options);
-
-  // the loads on the surface particles of their named surfaces
-  for (std::size_t l = 0; l < scene.loads.size(); ++l) {
-    const LoadSpec& load = scene.loads[l];  // surface_traction: the catalogue refuses the others
-    const Vec<D> centre = scene::vectorOf<D>(load.centre);
-    const bool pressure = load.traction.empty();
-    Real total = 0;
-    for (Index i = 0; i < filled.size(); ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      if (!filled.surface[k]) continue;
-      const Vec<D> x = filled.position[k];
-      const Vec<D> p = x - solid.solid->signedDistance(x) * solid.solid->normal(x);
-      if (solid.solid->surfaceName(p) != load.surface) continue;
-      const Real area = filled.area[k];
-      const Real s = D == 2 ? area : std::sqrt(area);
-      if (!(s > 0)) continue;
-      const Real w = std::clamp((load.radius - (p - centre).norm()) / s + 0.5, 0.0, 1.0);
-      if (w == 0) continue;
-      const Vec<D> traction = pressure ? Vec<D>(-load.pressure * filled.normal[k]) : scene::vectorOf<D>(load.traction);
-      system.addTraction({i}, eps * traction, load.timeFunction, w * area);
-      total += w * area;
-    }
-    if (!(total > 0))
-      throw InputError("load[" + std::to_string(l) + "].surface",
-                       "no surface particle of '" + load.surface + "' lies within " + scene::formatNumber(load.radius) +
-                           " of " + scene::formatPoint(load.centre) + " at spacing " + scene::formatNumber(spacing));
-  }
+  UpdatedLagrangianSph<D> system(filled.particles, options);
+  for (std::size_t l = 0; l < scene.loads.size(); ++l)
+    for (const auto& [particle, force] : surfaceForces(plan, filled, l, spacing))
+      system.addTraction({particle}, eps * force, scene.loads[l].timeFunction, 1.0);
   const Vector y0 = system.initialState();
   SolidIntegrationSettings integration;
   integration.integrator = "leapfrog";
@@ -114,36 +79,23 @@ SolidCaseResult runSolidSphCase(const SolidPlan<D>& plan, Real spacing, const st
   result.dt = result.stableStep;
 
   // probes: linear RK interpolation over the initial positions, along each direction, over eps
-  const ReproducingKernelShapeFunctions<D> shapes(particles, 1, 2.5 * spacing);
-  std::vector<std::vector<std::pair<Index, Real>>> rows;
   std::vector<bool> velocity;
-  ShapeFunctionValues<D> values;
-  for (const SolidProbe<D>& p : plan.probes) {
-    shapes.evaluate(p.position, 0, values);
-    std::vector<std::pair<Index, Real>> row;
-    for (Index k = 0; k < values.size(); ++k)
-      for (int c = 0; c < D; ++c)
-        if (p.direction[c] != 0)
-          row.emplace_back(D * values.nodes[static_cast<std::size_t>(k)] + c,
-                           p.direction[c] * values.value[static_cast<std::size_t>(k)] / eps);
-    rows.push_back(std::move(row));
-    velocity.push_back(p.velocity);
-  }
-  SampledProbes probes(probeNames(plan), rowSampler(std::move(rows), std::move(velocity)));
+  for (const SolidProbe<D>& p : plan.probes) velocity.push_back(p.velocity);
+  SampledProbes probes(probeNames(plan), rowSampler(probeRows(plan, filled, spacing, 1 / eps), std::move(velocity)));
 
-  SolidStateAdapter<D> adapter(system, particles);
+  SolidStateAdapter<D> adapter(system, filled.particles);
   StabilityMonitor monitor(scene.stability.options(D, loadsQuietAfter(scene)));
   adapter.add(monitor, 1);
   if (!plan.probes.empty()) adapter.add(probes, scene.output.probeEvery);
-  ProgressReporter reporter(scene.integrator.endTime, filled.size(), progress);
+  ProgressReporter reporter(scene.integrator.endTime, filled.fill.size(), progress);
   TimeLoop loop;
   loop.add(reporter);
   loop.add(adapter);
   result.setupSeconds = setup.seconds();
   const RunStatistics stats = runCase(loop, *integrator, scene.integrator.endTime, plan, probes, folder, result,
                                       [&](long particle) -> std::string {
-    if (particle >= filled.size()) return "";
-    const Vec<D> x = filled.position[static_cast<std::size_t>(particle)];
+    if (particle >= filled.fill.size()) return "";
+    const Vec<D> x = filled.fill.position[static_cast<std::size_t>(particle)];
     return "updated-Lagrangian SPH on the solid, case " + result.name + ": the particle starts at " +
            scene::formatPoint(std::vector<Real>(x.data(), x.data() + D));
   });

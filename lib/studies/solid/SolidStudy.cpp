@@ -79,8 +79,9 @@ SceneSchema solidSchema() {
   s.add("study.spacings", T::NumberArray).withUnit("m").defaultsToNote("geometry.spacing")
       .describedAs("lattice spacings, one case each (each must divide the box)");
   s.addChoice("method.name", "updated_lagrangian_sph");  // its small-amplitude defaults; no [method] keys here
+  s.addChoice("method.name", "total_lagrangian_sph");    // its defaults
   s.add("study.methods", T::StringArray).defaultsToNote("[method.name]")
-      .oneOf({"very_weak_sph", "reproducing_kernel", "updated_lagrangian_sph"})
+      .oneOf({"very_weak_sph", "reproducing_kernel", "updated_lagrangian_sph", "total_lagrangian_sph"})
       .describedAs("the methods run at each spacing, each scored the same way; [method] keys apply to method.name's "
                    "cases, the others run with their defaults");
   s.add("study.compare_staircase", T::Boolean).defaultsTo("true")

@@ -48,7 +48,7 @@ struct SolidPlan {
   SceneSolid<D> solid;
   std::vector<SolidProbe<D>> probes;
   std::vector<Real> spacings;  // the scene's first
-  std::vector<std::string> methods;  // study.methods: very_weak_sph, reproducing_kernel, updated_lagrangian_sph
+  std::vector<std::string> methods;  // study.methods: the methods of the catalogue that run solids
   std::vector<CutCells> cells; // very_weak_sph: cut, then staircase when compared
   CollocationSpec collocation; // reproducing_kernel: its shape functions
   int depth = 4;
@@ -67,7 +67,7 @@ struct SolidCaseResult {
   std::string name;
   std::string method;  // very_weak_sph or reproducing_kernel
   Real spacing = 0;
-  std::string cells;   // cut, staircase; nodes (collocation: lattice and surface nodes); fill (UL-SPH)
+  std::string cells;   // cut, staircase; nodes (collocation: lattice and surface nodes); fill (UL- and TL-SPH)
   Index unknowns = 0, extended = 0, cutCells = 0;
   Real volume = 0, smallestKept = 0;
   Real stableStep = 0, dt = 0;
@@ -98,6 +98,13 @@ SolidCaseResult runSolidCollocationCase(const SolidPlan<D>& plan, Real spacing, 
 inline constexpr Real kSmallAmplitude = 1e-4;  // the traction's factor; probes record v / eps
 template <int D>
 SolidCaseResult runSolidSphCase(const SolidPlan<D>& plan, Real spacing, const std::string& folder, bool progress);
+
+// One total-Lagrangian SPH case (total_lagrangian_sph) of `plan` at `spacing`: the UL-SPH case's fill,
+// loads and probes, the scene's central difference; written and scored as runSolidCase's. Named
+// tlsph_<spacing>.
+template <int D>
+SolidCaseResult runSolidTotalLagrangianCase(const SolidPlan<D>& plan, Real spacing, const std::string& folder,
+                                            bool progress);
 
 // The exact velocity (or displacement) along the inward normal of the half-plane at `x`.
 std::vector<Real> lambHalfPlaneSeries(const HalfPlaneLamb& lamb, const Material& material, const std::vector<Real>& x,

@@ -1,0 +1,91 @@
+#include "studies/solid/SolidParticleFill.hpp"
+
+#include "core/Error.hpp"
+#include "io/scene/Format.hpp"
+#include "methods/collocation/ReproducingKernelShapeFunctions.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mfwave::solid {
+
+template <int D>
+Real FilledSolid<D>::ratioFor(Real ratio, Real dx) const {
+  return ratio * dx / std::pow(volume / static_cast<Real>(fill.size()), Real(1) / D);
+}
+
+template <int D>
+FilledSolid<D> fillSolid(const SolidPlan<D>& plan, Real spacing, SolidCaseResult& result) {
+  FilledSolid<D> out;
+  out.fill = fill<D>(*plan.solid.solid, spacing, scene::vectorOf<D>(plan.scene.geometry.lower));
+  for (Index i = 0; i < out.fill.size(); ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    out.particles.add(out.fill.position[k], out.fill.volume[k]);
+    out.volume += out.fill.volume[k];
+    out.surfaceParticles += out.fill.surface[k];
+  }
+  result.unknowns = out.fill.size();
+  result.volume = out.volume;
+  result.cutCells = out.surfaceParticles;
+  return out;
+}
+
+template <int D>
+std::vector<std::pair<Index, Vec<D>>> surfaceForces(const SolidPlan<D>& plan, const FilledSolid<D>& filled,
+                                                    std::size_t l, Real spacing) {
+  const LoadSpec& load = plan.scene.loads[l];  // surface_traction: the catalogue refuses the others
+  const Solid<D>& solid = *plan.solid.solid;
+  const SolidParticles<D>& f = filled.fill;
+  const Vec<D> centre = scene::vectorOf<D>(load.centre);
+  const bool pressure = load.traction.empty();
+  std::vector<std::pair<Index, Vec<D>>> out;
+  for (Index i = 0; i < f.size(); ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (!f.surface[k]) continue;
+    const Vec<D> x = f.position[k];
+    const Vec<D> p = x - solid.signedDistance(x) * solid.normal(x);
+    if (solid.surfaceName(p) != load.surface) continue;
+    const Real area = f.area[k];
+    const Real s = D == 2 ? area : std::sqrt(area);
+    if (!(s > 0)) continue;
+    const Real w = std::clamp((load.radius - (p - centre).norm()) / s + 0.5, 0.0, 1.0);
+    if (w == 0) continue;
+    const Vec<D> traction = pressure ? Vec<D>(-load.pressure * f.normal[k]) : scene::vectorOf<D>(load.traction);
+    out.emplace_back(i, Vec<D>(w * area * traction));
+  }
+  if (out.empty())
+    throw InputError("load[" + std::to_string(l) + "].surface",
+                     "no surface particle of '" + load.surface + "' lies within " + scene::formatNumber(load.radius) +
+                         " of " + scene::formatPoint(load.centre) + " at spacing " + scene::formatNumber(spacing));
+  return out;
+}
+
+template <int D>
+std::vector<std::vector<std::pair<Index, Real>>> probeRows(const SolidPlan<D>& plan, const FilledSolid<D>& filled,
+                                                           Real spacing, Real scale) {
+  const ReproducingKernelShapeFunctions<D> shapes(filled.particles, 1, 2.5 * spacing);
+  std::vector<std::vector<std::pair<Index, Real>>> rows;
+  ShapeFunctionValues<D> values;
+  for (const SolidProbe<D>& p : plan.probes) {
+    shapes.evaluate(p.position, 0, values);
+    std::vector<std::pair<Index, Real>> row;
+    for (Index k = 0; k < values.size(); ++k)
+      for (int c = 0; c < D; ++c)
+        if (p.direction[c] != 0)
+          row.emplace_back(D * values.nodes[static_cast<std::size_t>(k)] + c,
+                           p.direction[c] * values.value[static_cast<std::size_t>(k)] * scale);
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+template struct FilledSolid<2>;
+template struct FilledSolid<3>;
+template FilledSolid<2> fillSolid<2>(const SolidPlan<2>&, Real, SolidCaseResult&);
+template FilledSolid<3> fillSolid<3>(const SolidPlan<3>&, Real, SolidCaseResult&);
+template std::vector<std::pair<Index, Vec<2>>> surfaceForces<2>(const SolidPlan<2>&, const FilledSolid<2>&, std::size_t, Real);
+template std::vector<std::pair<Index, Vec<3>>> surfaceForces<3>(const SolidPlan<3>&, const FilledSolid<3>&, std::size_t, Real);
+template std::vector<std::vector<std::pair<Index, Real>>> probeRows<2>(const SolidPlan<2>&, const FilledSolid<2>&, Real, Real);
+template std::vector<std::vector<std::pair<Index, Real>>> probeRows<3>(const SolidPlan<3>&, const FilledSolid<3>&, Real, Real);
+
+}  // namespace mfwave::solid
