@@ -28,13 +28,21 @@ def cases_of(folder):
     return read_table(os.path.join(folder, "cases.csv"))
 
 
-# The cases' kinds (cases.csv's cells column) and their line styles: the very weak SPH's cut cells and
-# staircase, RK collocation's nodes.
-CASE_STYLES = (("cut", "-"), ("staircase", ":"), ("nodes", "-."))
+# The cases' kinds (cases.csv's method and cells columns), their labels and line styles: the very weak
+# SPH's cut cells and staircase, RK collocation's nodes, the UL- and TL-SPH's fill.
+# (method, cells, label, error-plot marker, trace line)
+KINDS = (("very_weak_sph", "cut", "cut cells", "o-", "-"), ("very_weak_sph", "staircase", "staircase", "s:", ":"),
+         ("reproducing_kernel", "nodes", "RK collocation", "^-.", "-."),
+         ("updated_lagrangian_sph", "fill", "UL-SPH", "v--", "--"), ("total_lagrangian_sph", "fill", "TL-SPH", "d-", "-"))
 
 
-def finest(cases, cells):
-    chosen = [c for c in cases if c["cells"] == cells]
+def of_kind(cases, kind):
+    method, cells = kind[0], kind[1]
+    return [c for c in cases if c.get("method", "very_weak_sph") == method and c["cells"] == cells]
+
+
+def finest(cases, kind):
+    chosen = of_kind(cases, kind)
     return min(chosen, key=lambda c: float(c["spacing [m]"])) if chosen else None
 
 
@@ -61,8 +69,9 @@ def traces(folder, cases, probes):
     fig, axes = plt.subplots(len(probes), 1, figsize=(7, 2.4 * len(probes)), sharex=True)
     axes = axes if len(probes) > 1 else [axes]
     drawn_exact = False
-    for cells, style in CASE_STYLES:
-        case = finest(cases, cells)
+    for kind in KINDS:
+        style = kind[4]
+        case = finest(cases, kind)
         if not case:
             continue
         series = read_columns(os.path.join(folder, case["case"] + "-probes.csv"))
@@ -89,11 +98,11 @@ def errors(folder, cases, probes, compare):
     runs = [(folder, "")] + ([(compare, " (" + os.path.basename(os.path.normpath(compare)) + ")")] if compare else [])
     for run, suffix in runs:
         rows = cases_of(run)
-        for cells, marker in (("cut", "o-"), ("staircase", "s:"), ("nodes", "^-.")):
-            chosen = sorted((c for c in rows if c["cells"] == cells), key=lambda c: float(c["spacing [m]"]))
+        for kind in KINDS:
+            chosen = sorted(of_kind(rows, kind), key=lambda c: float(c["spacing [m]"]))
             if not chosen:
                 continue
-            label = "rk collocation" if cells == "nodes" else cells
+            label, marker = kind[2], kind[3]
             for ax, probe in zip(axes, probes):
                 key = probe["name"] + "_relative_l2"
                 ax.loglog([float(c["spacing [m]"]) for c in chosen], [float(c[key]) for c in chosen], marker,
@@ -110,7 +119,7 @@ def errors(folder, cases, probes, compare):
 
 
 def record(folder, cases, scene, probes):
-    case = finest(cases, "cut") or finest(cases, "nodes") or cases[0]
+    case = next((finest(cases, kind) for kind in KINDS if finest(cases, kind)), cases[0])
     series = read_columns(os.path.join(folder, case["case"] + "-probes.csv"))
     if len(probes) < 2:
         return
