@@ -115,6 +115,7 @@ std::vector<MethodEntry> makeCatalogue() {
     // lattice nodes well inside the solid, nodes with traction rows on its surfaces; one material (a
     // strong form across an interface would need rows of its own: traction continuity)
     m.supports.solidPrograms = {"solid"};
+    m.supports.fixedSurfaces = true;  // displacement rows at the surface nodes
     m.addOptions = addCollocationOptions;
     m.stepRule = "cfl x 2 / omega_max of the constrained system (power iteration), refused when its interior rows "
                  "grow (stability atlas)";
@@ -185,7 +186,8 @@ std::vector<MethodEntry> makeCatalogue() {
                   {{B::Transmitting, B::Free}}};
     // the rings: two annulus shapes with opposite initial velocities; solid: a body-fitted fill at small amplitude
     m.supports.solidPrograms = {"rings", "solid"};
-    m.supports.cracks = true;  // pairs across a crack are cut (the visibility criterion)
+    m.supports.cracks = true;         // pairs across a crack are cut (the visibility criterion)
+    m.supports.fixedSurfaces = true;  // the surface particles clamped
     m.addOptions = addUpdatedLagrangianSphKeys;
     m.stepRule = "cfl x the method's own CFL, viscous and force criteria, evaluated before every step";
     m.cost.baseMiB = {33, 32.1, 35};
@@ -211,6 +213,7 @@ std::vector<MethodEntry> makeCatalogue() {
                   false,
                   {{B::Transmitting, B::Free}}};
     m.supports.solidPrograms = {"solid"};  // a body-fitted fill at small amplitude, one material
+    m.supports.fixedSurfaces = true;       // the surface particles clamped
     m.addOptions = noOptions;
     m.stepRule = "cfl x 2 / omega_max of the linearised operator (power iteration)";
     m.cost.baseMiB = {0, 30, 0};

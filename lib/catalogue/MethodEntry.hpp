@@ -44,6 +44,8 @@ struct MethodSupport {
   bool materialRegions = false;
   // Cracks ([[crack]]) on those solids: the material's interactions cut across them.
   bool cracks = false;
+  // Named surfaces of those solids held fixed ([[surface_boundary]], type fixed).
+  bool fixedSurfaces = false;
 };
 
 // Measured cost of a whole run on one core, per dimension (index D - 1); 0 where not measured. The

@@ -59,17 +59,18 @@ std::vector<UnsupportedFeature> unsupportedFeatures(const Scene& scene, const Me
   return out;
 }
 
-std::vector<UnsupportedFeature> unsupportedSolidFeatures(const MethodEntry& method, bool regions, bool cracks) {
+std::vector<UnsupportedFeature> unsupportedSolidFeatures(const MethodEntry& method, const SolidFeatures& asked) {
   std::vector<UnsupportedFeature> out;
-  const auto require = [&](bool asked, bool MethodSupport::*field, const char* key, const char* feature) {
-    if (!asked || method.supports.*field) return;
+  const auto require = [&](bool wanted, bool MethodSupport::*field, const char* key, const char* feature) {
+    if (!wanted || method.supports.*field) return;
     std::vector<std::string> supportedBy;
     for (const MethodEntry& m : methodCatalogue())
       if (m.supports.*field) supportedBy.push_back(m.name);
     out.push_back({key, feature, supportedBy, method.name});
   };
-  require(regions, &MethodSupport::materialRegions, "region", "materials by region");
-  require(cracks, &MethodSupport::cracks, "crack", "cracks");
+  require(asked.regions, &MethodSupport::materialRegions, "region", "materials by region");
+  require(asked.cracks, &MethodSupport::cracks, "crack", "cracks");
+  require(asked.fixedSurfaces, &MethodSupport::fixedSurfaces, "surface_boundary", "fixed surfaces of a solid");
   return out;
 }
 

@@ -24,10 +24,17 @@ struct UnsupportedFeature {
 // Every feature of `scene` that `method` does not support (empty: it can run the scene).
 std::vector<UnsupportedFeature> unsupportedFeatures(const Scene& scene, const MethodEntry& method);
 
-// What of a scene's own solid `method` cannot represent: materials by region (key "region",
-// MethodSupport::materialRegions) when `regions`, cracks (key "crack", MethodSupport::cracks) when
-// `cracks`.
-std::vector<UnsupportedFeature> unsupportedSolidFeatures(const MethodEntry& method, bool regions, bool cracks);
+// What a scene's own solid asks beyond its shapes.
+struct SolidFeatures {
+  bool regions = false;        // [[region]] with materials
+  bool cracks = false;         // [[crack]]
+  bool fixedSurfaces = false;  // [[surface_boundary]] of type fixed
+};
+
+// What of them `method` cannot represent: materials by region (key "region",
+// MethodSupport::materialRegions), cracks ("crack", MethodSupport::cracks), fixed surfaces
+// ("surface_boundary", MethodSupport::fixedSurfaces).
+std::vector<UnsupportedFeature> unsupportedSolidFeatures(const MethodEntry& method, const SolidFeatures& asked);
 
 // What the method runs in place of what the scene asks, where it has a stand-in (MethodSupport::standIns):
 // one note per boundary entry, e.g. "boundary[0]: transmitting faces run fixed by reproducing_kernel

@@ -47,23 +47,28 @@ TEST(SceneSupport, AnUnsupportedLoadNamesItsKeyAndTheMethodsThatTakeIt) {
   }
 }
 
-TEST(SceneSupport, RegionsAndCracksAreRefusedByNameForTheMethodsThatCannotRepresentThem) {
-  EXPECT_TRUE(unsupportedSolidFeatures(methodNamed("very_weak_sph"), true, false).empty());
-  EXPECT_TRUE(unsupportedSolidFeatures(methodNamed("reproducing_kernel"), false, false).empty());
-  EXPECT_TRUE(unsupportedSolidFeatures(methodNamed("updated_lagrangian_sph"), false, true).empty());
+TEST(SceneSupport, RegionsCracksAndFixedSurfacesAreRefusedByNameForTheMethodsThatCannotRepresentThem) {
+  EXPECT_TRUE(unsupportedSolidFeatures(methodNamed("very_weak_sph"), {true, false, false}).empty());
+  EXPECT_TRUE(unsupportedSolidFeatures(methodNamed("reproducing_kernel"), {false, false, true}).empty());
+  EXPECT_TRUE(unsupportedSolidFeatures(methodNamed("updated_lagrangian_sph"), {false, true, true}).empty());
   for (const char* method : {"very_weak_sph", "reproducing_kernel", "total_lagrangian_sph"}) {
-    const auto problems = unsupportedSolidFeatures(methodNamed(method), false, true);
+    const auto problems = unsupportedSolidFeatures(methodNamed(method), {false, true, false});
     ASSERT_EQ(problems.size(), 1u) << method;
     EXPECT_EQ(problems[0].key, "crack");
     EXPECT_EQ(problems[0].message(), std::string(method) + " does not support cracks; supported by: updated_lagrangian_sph");
   }
   for (const char* method : {"reproducing_kernel", "updated_lagrangian_sph", "total_lagrangian_sph"}) {
-    const auto problems = unsupportedSolidFeatures(methodNamed(method), true, false);
+    const auto problems = unsupportedSolidFeatures(methodNamed(method), {true, false, false});
     ASSERT_EQ(problems.size(), 1u) << method;
     EXPECT_EQ(problems[0].key, "region");
     EXPECT_EQ(problems[0].message(), std::string(method) + " does not support materials by region; supported by: "
                                                            "very_weak_sph");
   }
+  const auto fixed = unsupportedSolidFeatures(methodNamed("very_weak_sph"), {false, false, true});
+  ASSERT_EQ(fixed.size(), 1u);
+  EXPECT_EQ(fixed[0].key, "surface_boundary");
+  EXPECT_EQ(fixed[0].message(), "very_weak_sph does not support fixed surfaces of a solid; supported by: "
+                                "reproducing_kernel, updated_lagrangian_sph, total_lagrangian_sph");
 }
 
 TEST(SceneSupport, DimensionAndIntegratorAreCheckedToo) {

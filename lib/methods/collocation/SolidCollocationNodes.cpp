@@ -158,7 +158,12 @@ SolidCollocationNodes<D> solidCollocationNodes(const CollocationSolid<D>& solid,
     else
       out.points.add(box[k], CollocationRowKind::Displacement);
   }
-  for (const Vec<D>& x : surface) out.points.add(x, CollocationRowKind::Traction, solid.normal(x).normalized());
+  for (const Vec<D>& x : surface) {
+    if (solid.clamped && solid.clamped(x))
+      out.points.add(x, CollocationRowKind::Displacement);
+    else
+      out.points.add(x, CollocationRowKind::Traction, solid.normal(x).normalized());
+  }
   out.interior = static_cast<Index>(interior.size());
   out.box = static_cast<Index>(box.size());
   out.surface = static_cast<Index>(surface.size());

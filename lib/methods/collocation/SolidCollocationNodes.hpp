@@ -12,7 +12,8 @@
 //                      closer than `minimum` dx to one kept before it (lattice order) is dropped,
 //                      and so is one closer than gap dx to a box face (the box's corner nodes
 //                      hold the solid there). Traction rows sigma(u) n = h with n the surface's
-//                      outward normal there (Luo-Liu-Huang eq. (13)).
+//                      outward normal there (Luo-Liu-Huang eq. (13)), or u = 0 where the solid
+//                      says the surface is clamped.
 //   box nodes          lattice nodes on the box's faces with d(x) <= 0: traction rows with the
 //                      face's normal where the node is on one face only and that face is free,
 //                      u = 0 otherwise.
@@ -38,6 +39,8 @@ struct CollocationSolid {
   std::function<Vec<D>(const Vec<D>&)> normal;   // unit outward normal of the surface nearest x
   Vec<D> lower = Vec<D>::Zero(), upper = Vec<D>::Zero();  // the box
   unsigned freeFaces = 0;                        // box faces (BoxFace bits) with traction rows
+  // Surface points held fixed (u = 0: displacement rows in place of traction rows); empty: none.
+  std::function<bool(const Vec<D>&)> clamped;
 };
 
 template <int D>

@@ -56,6 +56,7 @@ SolidCaseResult runSolidCollocationCase(const SolidPlan<D>& plan, Real spacing, 
   domain.lower = scene::vectorOf<D>(scene.geometry.lower);
   domain.upper = scene::vectorOf<D>(scene.geometry.upper);
   domain.freeFaces = facesWith(scene.boundaries, BoundaryType::Free);
+  if (!plan.fixedSurfaces.empty()) domain.clamped = [&plan](const Vec<D>& x) { return plan.fixedAt(x); };
   const SolidCollocationNodes<D> nodes = solidCollocationNodes<D>(domain, spacing);
   result.unknowns = nodes.size();
   result.cutCells = nodes.surface;  // the surface nodes stand where the cut cells do
@@ -71,7 +72,7 @@ SolidCaseResult runSolidCollocationCase(const SolidPlan<D>& plan, Real spacing, 
     const Vec<D> vector = pressure ? Vec<D>::Zero() : scene::vectorOf<D>(load.traction);
     Vector b = Vector::Zero(rows);
     for (Index i = 0; i < nodes.size(); ++i) {
-      if (!nodes.onSurface(i)) continue;
+      if (!nodes.onSurface(i) || nodes.points.kind[static_cast<std::size_t>(i)] != CollocationRowKind::Traction) continue;
       const Vec<D> x = nodes.position(i);
       if (solid.solid->surfaceName(x) != load.surface) continue;
       const Real s = nodes.surfaceSpacing[static_cast<std::size_t>(i)];

@@ -61,6 +61,21 @@ std::vector<std::pair<Index, Vec<D>>> surfaceForces(const SolidPlan<D>& plan, co
 }
 
 template <int D>
+std::vector<Index> fixedParticles(const SolidPlan<D>& plan, const FilledSolid<D>& filled) {
+  std::vector<Index> out;
+  if (plan.fixedSurfaces.empty()) return out;
+  const Solid<D>& solid = *plan.solid.solid;
+  const SolidParticles<D>& f = filled.fill;
+  for (Index i = 0; i < f.size(); ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (!f.surface[k]) continue;
+    const Vec<D> x = f.position[k];
+    if (plan.fixedAt(Vec<D>(x - solid.signedDistance(x) * solid.normal(x)))) out.push_back(i);
+  }
+  return out;
+}
+
+template <int D>
 std::vector<std::vector<std::pair<Index, Real>>> probeRows(const SolidPlan<D>& plan, const FilledSolid<D>& filled,
                                                            Real spacing, Real scale) {
   const ReproducingKernelShapeFunctions<D> shapes(filled.particles, 1, 2.5 * spacing);
@@ -85,6 +100,8 @@ template FilledSolid<2> fillSolid<2>(const SolidPlan<2>&, Real, SolidCaseResult&
 template FilledSolid<3> fillSolid<3>(const SolidPlan<3>&, Real, SolidCaseResult&);
 template std::vector<std::pair<Index, Vec<2>>> surfaceForces<2>(const SolidPlan<2>&, const FilledSolid<2>&, std::size_t, Real);
 template std::vector<std::pair<Index, Vec<3>>> surfaceForces<3>(const SolidPlan<3>&, const FilledSolid<3>&, std::size_t, Real);
+template std::vector<Index> fixedParticles<2>(const SolidPlan<2>&, const FilledSolid<2>&);
+template std::vector<Index> fixedParticles<3>(const SolidPlan<3>&, const FilledSolid<3>&);
 template std::vector<std::vector<std::pair<Index, Real>>> probeRows<2>(const SolidPlan<2>&, const FilledSolid<2>&, Real, Real);
 template std::vector<std::vector<std::pair<Index, Real>>> probeRows<3>(const SolidPlan<3>&, const FilledSolid<3>&, Real, Real);
 

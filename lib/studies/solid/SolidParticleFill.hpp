@@ -39,6 +39,11 @@ template <int D>
 std::vector<std::pair<Index, Vec<D>>> surfaceForces(const SolidPlan<D>& plan, const FilledSolid<D>& filled,
                                                     std::size_t l, Real spacing);
 
+// The surface particles on the plan's fixed surfaces ([[surface_boundary]]), by the surface point
+// nearest each.
+template <int D>
+std::vector<Index> fixedParticles(const SolidPlan<D>& plan, const FilledSolid<D>& filled);
+
 // The probes' rows over the particles' D components: linear reproducing-kernel (moving least
 // squares, m = 1, support 2.5 dx) interpolation at each probe over the particles' initial positions,
 // along its direction, times `scale`.

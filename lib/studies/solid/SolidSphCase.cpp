@@ -66,6 +66,7 @@ SolidCaseResult runSolidSphCase(const SolidPlan<D>& plan, Real spacing, const st
                                   filled.fill.position[static_cast<std::size_t>(j)]);
     };
   UpdatedLagrangianSph<D> system(filled.particles, options);
+  system.fixParticles(fixedParticles(plan, filled));  // [[surface_boundary]]: their surface particles clamped
   for (std::size_t l = 0; l < scene.loads.size(); ++l)
     for (const auto& [particle, force] : surfaceForces(plan, filled, l, spacing))
       system.addTraction({particle}, eps * force, scene.loads[l].timeFunction, 1.0);

@@ -75,6 +75,10 @@ SceneSchema solidSchema() {
       .describedAs("recorded field");
   s.add("probe_grid[].direction", T::NumberArray).withUnit("-").required()
       .describedAs("every receiver records the component along this vector (normalised)");
+  s.add("surface_boundary", T::TableArray)
+      .describedAs("named surfaces of the solid held fixed (u = 0); the others are free (the box's faces take [[boundary]])");
+  s.add("surface_boundary[].surface", T::String).required().describedAs("'<shape>.<surface>', e.g. 'inclusion.surface'");
+  s.add("surface_boundary[].type", T::String).required().oneOf({"fixed"}).describedAs("fixed: zero displacement");
   s.add("study", T::Table).describedAs("the cases of the solid study");
   s.add("study.spacings", T::NumberArray).withUnit("m").defaultsToNote("geometry.spacing")
       .describedAs("lattice spacings, one case each (each must divide the box)");
@@ -128,6 +132,12 @@ std::vector<Real> lambHalfPlaneSeries(const HalfPlaneLamb& lamb, const Material&
   std::vector<Real> out;
   for (const Real t : times) out.push_back(velocity ? exact.velocity(offset, depth, t) : exact.displacement(offset, depth, t));
   return out;
+}
+
+template <int D>
+bool SolidPlan<D>::fixedAt(const Vec<D>& x) const {
+  if (fixedSurfaces.empty()) return false;
+  return std::find(fixedSurfaces.begin(), fixedSurfaces.end(), solid.solid->surfaceName(x)) != fixedSurfaces.end();
 }
 
 template <int D>
@@ -185,10 +195,19 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
   if (scene.integrator.kind != IntegratorKind::CentralDifference)
     reader.fail("integrator.name", "the solid study runs central_difference (its lumped mass makes it explicit)");
   plan.solid = readSceneSolid<D>(reader, scene);
+  // fixed named surfaces: '<shape>.<surface>' of a [[shape]] (the box's faces take [[boundary]])
+  for (std::size_t i = 0; i < reader.count("surface_boundary"); ++i) {
+    const std::string key = scene::childPath(scene::indexPath("surface_boundary", i), "surface");
+    const std::string surface = reader.string(key);
+    const std::size_t dot = surface.find('.');
+    if (dot == std::string::npos || shapeIndex(reader, surface.substr(0, dot)) < 0)
+      reader.fail(key, "'" + surface + "' is not '<shape>.<surface>' of a [[shape]] (the box's faces take [[boundary]])");
+    (void)reader.string(scene::childPath(scene::indexPath("surface_boundary", i), "type"));  // fixed
+    plan.fixedSurfaces.push_back(surface);
+  }
+  const SolidFeatures asked{!plan.solid.regions.empty(), !plan.solid.cracks.empty(), !plan.fixedSurfaces.empty()};
   for (const std::string& name : plan.methods)
-    for (const UnsupportedFeature& f :
-         unsupportedSolidFeatures(methodNamed(name), !plan.solid.regions.empty(), !plan.solid.cracks.empty()))
-      reader.fail(f.key, f.message());
+    for (const UnsupportedFeature& f : unsupportedSolidFeatures(methodNamed(name), asked)) reader.fail(f.key, f.message());
   const auto runs = [&plan](const char* name) {
     return std::find(plan.methods.begin(), plan.methods.end(), name) != plan.methods.end();
   };
@@ -226,6 +245,8 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
     const std::string shape = load.surface.substr(0, dot);
     if (dot == std::string::npos || (shape != "box" && shapeIndex(reader, shape) < 0))
       reader.fail(key + ".surface", "'" + load.surface + "' is not '<shape>.<surface>' of a [[shape]] (or box)");
+    if (std::find(plan.fixedSurfaces.begin(), plan.fixedSurfaces.end(), load.surface) != plan.fixedSurfaces.end())
+      reader.fail(key + ".surface", "'" + load.surface + "' is held fixed by a [[surface_boundary]]: a load there does nothing");
   }
 
   for (std::size_t i = 0; i < scene.probes.size(); ++i) {
@@ -485,6 +506,8 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
   return result;
 }
 
+template struct SolidPlan<2>;
+template struct SolidPlan<3>;
 template SolidPlan<2> readSolidPlan<2>(SceneReader&, const Scene&);
 template SolidPlan<3> readSolidPlan<3>(SceneReader&, const Scene&);
 template SolidCaseResult runSolidCase<2>(const SolidPlan<2>&, Real, CutCells, const std::string&, bool, bool);

@@ -51,6 +51,9 @@ struct SolidPlan {
   std::vector<std::string> methods;  // study.methods: the methods of the catalogue that run solids
   std::vector<CutCells> cells; // very_weak_sph: cut, then staircase when compared
   CollocationSpec collocation; // reproducing_kernel: its shape functions
+  std::vector<std::string> fixedSurfaces;  // [[surface_boundary]] of type fixed: '<shape>.<surface>'
+  // Whether the surface point x (on the solid's surface) belongs to a fixed surface.
+  bool fixedAt(const Vec<D>& x) const;
   int depth = 4;
   Real smallCellFraction = 0.25;
   Real errorWindow = 0;

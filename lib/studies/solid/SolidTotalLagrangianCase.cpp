@@ -44,6 +44,7 @@ SolidCaseResult runSolidTotalLagrangianCase(const SolidPlan<D>& plan, Real spaci
   options.material = plan.solid.materials[0];
   options.smoothingLengthRatio = filled.ratioFor(options.smoothingLengthRatio, spacing);
   TotalLagrangianSph<D> method(filled.particles, options);
+  method.fixParticles(fixedParticles(plan, filled));  // [[surface_boundary]]: their surface particles clamped
   std::vector<SparseLoad> loads;
   const Real density = options.material.density();
   for (std::size_t l = 0; l < scene.loads.size(); ++l) {
