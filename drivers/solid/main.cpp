@@ -1,7 +1,9 @@
 // solid: runs a scene whose solid is made of shapes (a half-plane of any inclination, layers, a
-// cavity, a CAD surface) by the Galerkin very weak SPH on cut lattice cells, and by the staircase
-// of whole cells beside it, at each of study.spacings; loads anywhere (point forces, moment
-// tensors, tractions on a named surface), probes anywhere along any direction, and the errors
+// cavity, a CAD surface, cracks) by the Galerkin very weak SPH on cut lattice cells (and the staircase
+// of whole cells beside it), by RK collocation on lattice and surface nodes, and by the updated- and
+// total-Lagrangian SPH on a body-fitted fill (study.methods), at each of study.spacings; loads
+// anywhere (point forces, moment tensors, tractions on a named surface), fixed named surfaces,
+// probes anywhere along any direction, and the errors
 // against the exact 2-D Lamb response where the scene is a loaded half-plane (study.reference =
 // "lamb_strip"). Results: docs/studies/geometry.md. Plot: /usr/bin/python3 analysis/plot_solid.py OUT.
 //
@@ -150,8 +152,8 @@ int run(SceneReader& reader, const Scene& scene, const DriverOptions& options) {
 int main(int argc, char** argv) {
   const SceneSchema schema = solidSchema();
   DriverCommandLine cli(kProgram,
-                        "solid: a scene's own solid (shapes, regions, sources, receivers) by the Galerkin very weak SPH "
-                        "on cut lattice cells",
+                        "solid: a scene's own solid (shapes, regions, cracks, sources, receivers) by the Galerkin very "
+                        "weak SPH on cut lattice cells, RK collocation, and the updated- and total-Lagrangian SPH",
                         schema.describe());
   cli.setDefaultScene("lamb2d_inclined.toml");
   if (const auto exit = cli.parse(argc, argv)) return *exit;

@@ -45,12 +45,13 @@ std::optional<CatalogueScene> readCatalogueScene(const std::string& path, const 
                         "criteria, Monaghan alpha 1, corrected kernel gradients, unless the scene's "
                         "method.viscosity_alpha / method.kernel_gradient_correction say otherwise)");
   }
-  // A solid other than the box ([[shape]], [[region]], geometry.solid): only the methods that model
+  // A solid other than the box ([[shape]], [[region]], [[crack]], geometry.solid): only the methods that model
   // one (MethodSupport::solidPrograms); the scene is then read with the solid's keys, and the plan
   // counts the lattice nodes inside the solid.
   const toml::table& firstRoot = first.root();
   const char* solidKey = firstRoot.contains("shape")            ? "shape"
                          : firstRoot.contains("region")         ? "region"
+                         : firstRoot.contains("crack")          ? "crack"
                          : firstRoot.at_path("geometry.solid") ? "geometry.solid"
                                                                : nullptr;
   if (solidKey && entry->supports.solidPrograms.empty()) {

@@ -16,7 +16,8 @@ const std::vector<StudyProgram>& studyPrograms() {
       {"lamb2d", "the plane-strain Lamb problem: one surface_patch load on a rectangle", {"lamb2d"}, {"lamb2d.toml"},
        false},
       {"solid",
-       "a scene's own solid ([[shape]], geometry.solid, [[region]]) by the very weak SPH on cut cells or RK collocation",
+       "a scene's own solid ([[shape]], geometry.solid, [[region]], [[crack]]) by the very weak SPH on cut cells, RK "
+       "collocation, the UL- or TL-SPH",
        {"lamb2d_inclined", "lamb2d_halfplane", "layered_cavity"}, {}, false},
       {"wavefield", "any finite_difference scene: a scalar wave on a line, rectangle or block with point loads",
        {"block-ricker", "wavefield"}, {"block-ricker.toml"}, false},
@@ -66,8 +67,8 @@ ProgramChoice programForScene(const std::string& scenePath, const std::vector<st
       for (const std::string& f : p.sceneFiles)
         if (f == file) return {p.program, "the shipped scene " + file};
   const std::string method = root.at_path("method.name").value<std::string>().value_or("");
-  if (root.contains("shape") || root.contains("region") || root.at_path("geometry.solid"))
-    return {"solid", "the scene describes its solid ([[shape]], geometry.solid or [[region]])"};
+  if (root.contains("shape") || root.contains("region") || root.contains("crack") || root.at_path("geometry.solid"))
+    return {"solid", "the scene describes its solid ([[shape]], geometry.solid, [[region]] or [[crack]])"};
   const std::int64_t dimension = root.at_path("scene.dimension").value<std::int64_t>().value_or(0);
   if (method == "finite_difference") return {"wavefield", "method.name = finite_difference"};
   const toml::array* loads = root.at_path("load").as_array();
