@@ -214,6 +214,7 @@ std::vector<MethodEntry> makeCatalogue() {
                   {{B::Transmitting, B::Free}}};
     m.supports.solidPrograms = {"solid"};  // a body-fitted fill at small amplitude, one material
     m.supports.fixedSurfaces = true;       // the surface particles clamped
+    m.supports.cracks = true;              // reference pairs across a crack left out
     m.addOptions = noOptions;
     m.stepRule = "cfl x 2 / omega_max of the linearised operator (power iteration)";
     m.cost.baseMiB = {0, 30, 0};

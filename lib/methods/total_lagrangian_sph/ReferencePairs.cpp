@@ -12,7 +12,8 @@
 namespace mfwave {
 
 template <int D>
-ReferencePairs<D> makeReferencePairs(const ParticleSet<D>& particles, const Kernel& kernel) {
+ReferencePairs<D> makeReferencePairs(const ParticleSet<D>& particles, const Kernel& kernel,
+                                     const std::function<bool(Index, Index)>& interacts) {
   if (particles.ghostCount() > 0)
     throw InputError("particles", "ghost particles are not supported: the total-Lagrangian SPH has free surfaces "
                                   "and the kernel-gradient correction in place of ghosts");
@@ -36,7 +37,7 @@ ReferencePairs<D> makeReferencePairs(const ParticleSet<D>& particles, const Kern
     const Vec<D> xi = particles.position(i);
     Mat<D> moment = Mat<D>::Zero();
     for (Index j : list.row(i)) {
-      if (j == i) continue;
+      if (j == i || (interacts && !interacts(i, j))) continue;
       const Vec<D> r = xi - particles.position(j);
       if (!(r.norm() < support)) continue;
       const Vec<D> g = kernel.gradient(r);
@@ -57,8 +58,11 @@ ReferencePairs<D> makeReferencePairs(const ParticleSet<D>& particles, const Kern
   return pairs;
 }
 
-template ReferencePairs<1> makeReferencePairs<1>(const ParticleSet<1>&, const Kernel&);
-template ReferencePairs<2> makeReferencePairs<2>(const ParticleSet<2>&, const Kernel&);
-template ReferencePairs<3> makeReferencePairs<3>(const ParticleSet<3>&, const Kernel&);
+template ReferencePairs<1> makeReferencePairs<1>(const ParticleSet<1>&, const Kernel&,
+                                                 const std::function<bool(Index, Index)>&);
+template ReferencePairs<2> makeReferencePairs<2>(const ParticleSet<2>&, const Kernel&,
+                                                 const std::function<bool(Index, Index)>&);
+template ReferencePairs<3> makeReferencePairs<3>(const ParticleSet<3>&, const Kernel&,
+                                                 const std::function<bool(Index, Index)>&);
 
 }  // namespace mfwave

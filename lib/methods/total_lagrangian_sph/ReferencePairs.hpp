@@ -13,6 +13,7 @@
 #include "kernels/Kernel.hpp"
 #include "particles/ParticleSet.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace mfwave {
@@ -32,12 +33,17 @@ struct ReferencePairs {
 
 // Throws InputError("particles") for ghosts, an empty set or a non-positive volume, and when a
 // particle's moment matrix M_i is singular (fewer than D independent neighbours: a loose particle
-// or a line of them), naming the particle.
+// or a line of them), naming the particle. `interacts`, when given, keeps only the pairs (i, j) it
+// accepts (a crack's visibility criterion).
 template <int D>
-ReferencePairs<D> makeReferencePairs(const ParticleSet<D>& particles, const Kernel& kernel);
+ReferencePairs<D> makeReferencePairs(const ParticleSet<D>& particles, const Kernel& kernel,
+                                     const std::function<bool(Index, Index)>& interacts = {});
 
-extern template ReferencePairs<1> makeReferencePairs<1>(const ParticleSet<1>&, const Kernel&);
-extern template ReferencePairs<2> makeReferencePairs<2>(const ParticleSet<2>&, const Kernel&);
-extern template ReferencePairs<3> makeReferencePairs<3>(const ParticleSet<3>&, const Kernel&);
+extern template ReferencePairs<1> makeReferencePairs<1>(const ParticleSet<1>&, const Kernel&,
+                                                        const std::function<bool(Index, Index)>&);
+extern template ReferencePairs<2> makeReferencePairs<2>(const ParticleSet<2>&, const Kernel&,
+                                                        const std::function<bool(Index, Index)>&);
+extern template ReferencePairs<3> makeReferencePairs<3>(const ParticleSet<3>&, const Kernel&,
+                                                        const std::function<bool(Index, Index)>&);
 
 }  // namespace mfwave

@@ -48,7 +48,7 @@ TotalLagrangianSph<D>::TotalLagrangianSph(const ParticleSet<D>& particles, Total
   const Real spacing = std::pow(totalVolume / static_cast<Real>(particles.physicalCount()), 1.0 / D);
   smoothingLength_ = options_.smoothingLengthRatio * spacing;
   const std::unique_ptr<Kernel> kernel = makeKernel(options_.kernel, D, smoothingLength_);
-  pairs_ = makeReferencePairs<D>(particles, *kernel);
+  pairs_ = makeReferencePairs<D>(particles, *kernel, options_.interacts);
   const auto n = static_cast<std::size_t>(pairs_.count());
   fixed_.assign(n, 0);
   displacementGradient_.resize(n);

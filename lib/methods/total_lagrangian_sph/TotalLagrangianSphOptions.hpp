@@ -5,6 +5,7 @@
 #include "core/Material.hpp"
 #include "core/Types.hpp"
 
+#include <functional>
 #include <string>
 
 namespace mfwave {
@@ -19,6 +20,9 @@ struct TotalLagrangianSphOptions {
   // (factor E / 2) sum_i V_i sum_j V_j w_ij |x_ij - F_i X_ij|^2 of the part of each pair's
   // relative position that particle i's deformation gradient does not explain. 0 is off.
   Real hourglassFactor = 1;
+  // Which pairs of particles the material connects (by index): false across a crack (the visibility
+  // criterion; the reference pairs are made once). Empty: every pair within the support.
+  std::function<bool(Index, Index)> interacts;
 };
 
 }  // namespace mfwave

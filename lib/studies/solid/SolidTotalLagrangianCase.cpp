@@ -43,6 +43,11 @@ SolidCaseResult runSolidTotalLagrangianCase(const SolidPlan<D>& plan, Real spaci
   TotalLagrangianSphOptions options;
   options.material = plan.solid.materials[0];
   options.smoothingLengthRatio = filled.ratioFor(options.smoothingLengthRatio, spacing);
+  if (!plan.solid.cracks.empty())
+    options.interacts = [&filled, &plan](Index i, Index j) {
+      return plan.solid.cracks.visible(filled.fill.position[static_cast<std::size_t>(i)],
+                                       filled.fill.position[static_cast<std::size_t>(j)]);
+    };
   TotalLagrangianSph<D> method(filled.particles, options);
   method.fixParticles(fixedParticles(plan, filled));  // [[surface_boundary]]: their surface particles clamped
   std::vector<SparseLoad> loads;
