@@ -61,6 +61,26 @@ std::vector<std::pair<Index, Vec<D>>> surfaceForces(const SolidPlan<D>& plan, co
 }
 
 template <int D>
+std::function<bool(Index, Index)> crackFilter(const SolidPlan<D>& plan, const FilledSolid<D>& filled) {
+  if (plan.solid.cracks.empty()) return {};
+  return [&plan, &filled](Index i, Index j) {
+    return plan.solid.cracks.visible(filled.fill.position[static_cast<std::size_t>(i)],
+                                     filled.fill.position[static_cast<std::size_t>(j)]);
+  };
+}
+
+template <int D>
+std::function<std::string(long)> particleWhere(const FilledSolid<D>& filled, const std::string& method,
+                                               const std::string& caseName) {
+  return [&filled, method, caseName](long particle) -> std::string {
+    if (particle >= filled.fill.size()) return "";
+    const Vec<D> x = filled.fill.position[static_cast<std::size_t>(particle)];
+    return method + " on the solid, case " + caseName + ": the particle starts at " +
+           scene::formatPoint(std::vector<Real>(x.data(), x.data() + D));
+  };
+}
+
+template <int D>
 std::vector<Index> fixedParticles(const SolidPlan<D>& plan, const FilledSolid<D>& filled) {
   std::vector<Index> out;
   if (plan.fixedSurfaces.empty()) return out;
@@ -100,6 +120,10 @@ template FilledSolid<2> fillSolid<2>(const SolidPlan<2>&, Real, SolidCaseResult&
 template FilledSolid<3> fillSolid<3>(const SolidPlan<3>&, Real, SolidCaseResult&);
 template std::vector<std::pair<Index, Vec<2>>> surfaceForces<2>(const SolidPlan<2>&, const FilledSolid<2>&, std::size_t, Real);
 template std::vector<std::pair<Index, Vec<3>>> surfaceForces<3>(const SolidPlan<3>&, const FilledSolid<3>&, std::size_t, Real);
+template std::function<bool(Index, Index)> crackFilter<2>(const SolidPlan<2>&, const FilledSolid<2>&);
+template std::function<bool(Index, Index)> crackFilter<3>(const SolidPlan<3>&, const FilledSolid<3>&);
+template std::function<std::string(long)> particleWhere<2>(const FilledSolid<2>&, const std::string&, const std::string&);
+template std::function<std::string(long)> particleWhere<3>(const FilledSolid<3>&, const std::string&, const std::string&);
 template std::vector<Index> fixedParticles<2>(const SolidPlan<2>&, const FilledSolid<2>&);
 template std::vector<Index> fixedParticles<3>(const SolidPlan<3>&, const FilledSolid<3>&);
 template std::vector<std::vector<std::pair<Index, Real>>> probeRows<2>(const SolidPlan<2>&, const FilledSolid<2>&, Real, Real);

@@ -8,6 +8,7 @@
 #include "studies/solid/SolidCase.hpp"
 #include "studies/solid/SolidStudy.hpp"
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +39,18 @@ FilledSolid<D> fillSolid(const SolidPlan<D>& plan, Real spacing, SolidCaseResult
 template <int D>
 std::vector<std::pair<Index, Vec<D>>> surfaceForces(const SolidPlan<D>& plan, const FilledSolid<D>& filled,
                                                     std::size_t l, Real spacing);
+
+// The pairs of particles the material connects: false where the segment between their initial
+// positions crosses a [[crack]] (the visibility criterion); empty when the solid has no crack. It
+// refers to `plan` and `filled`, which must outlive it.
+template <int D>
+std::function<bool(Index, Index)> crackFilter(const SolidPlan<D>& plan, const FilledSolid<D>& filled);
+
+// runCase's `where` for a particle method: "<method> on the solid, case <name>: the particle starts at
+// (x, y)" ("" for an index beyond the fill).
+template <int D>
+std::function<std::string(long)> particleWhere(const FilledSolid<D>& filled, const std::string& method,
+                                               const std::string& caseName);
 
 // The surface particles on the plan's fixed surfaces ([[surface_boundary]]), by the surface point
 // nearest each.

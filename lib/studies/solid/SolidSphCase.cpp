@@ -59,12 +59,7 @@ SolidCaseResult runSolidSphCase(const SolidPlan<D>& plan, Real spacing, const st
 
   UpdatedLagrangianSphOptions options = smallAmplitudeWaveOptions(solid.materials[0]);
   options.smoothingLengthRatio = filled.ratioFor(options.smoothingLengthRatio, spacing);
-  if (!solid.cracks.empty())
-    // the visibility criterion on the reference positions (at small amplitude the current ones)
-    options.interacts = [&filled, &solid](Index i, Index j) {
-      return solid.cracks.visible(filled.fill.position[static_cast<std::size_t>(i)],
-                                  filled.fill.position[static_cast<std::size_t>(j)]);
-    };
+  options.interacts = crackFilter(plan, filled);  // the visibility criterion on the initial positions
   UpdatedLagrangianSph<D> system(filled.particles, options);
   system.fixParticles(fixedParticles(plan, filled));  // [[surface_boundary]]: their surface particles clamped
   for (std::size_t l = 0; l < scene.loads.size(); ++l)
@@ -94,12 +89,7 @@ SolidCaseResult runSolidSphCase(const SolidPlan<D>& plan, Real spacing, const st
   loop.add(adapter);
   result.setupSeconds = setup.seconds();
   const RunStatistics stats = runCase(loop, *integrator, scene.integrator.endTime, plan, probes, folder, result,
-                                      [&](long particle) -> std::string {
-    if (particle >= filled.fill.size()) return "";
-    const Vec<D> x = filled.fill.position[static_cast<std::size_t>(particle)];
-    return "updated-Lagrangian SPH on the solid, case " + result.name + ": the particle starts at " +
-           scene::formatPoint(std::vector<Real>(x.data(), x.data() + D));
-  });
+                                      particleWhere(filled, "updated-Lagrangian SPH", result.name));
   recordRun(result, stats);
   if (stats.steps > 0) result.dt = (stats.endTime - stats.startTime) / static_cast<Real>(stats.steps);
   writeAndScoreProbes(plan, probes.series(), folder, result);

@@ -43,11 +43,7 @@ SolidCaseResult runSolidTotalLagrangianCase(const SolidPlan<D>& plan, Real spaci
   TotalLagrangianSphOptions options;
   options.material = plan.solid.materials[0];
   options.smoothingLengthRatio = filled.ratioFor(options.smoothingLengthRatio, spacing);
-  if (!plan.solid.cracks.empty())
-    options.interacts = [&filled, &plan](Index i, Index j) {
-      return plan.solid.cracks.visible(filled.fill.position[static_cast<std::size_t>(i)],
-                                       filled.fill.position[static_cast<std::size_t>(j)]);
-    };
+  options.interacts = crackFilter(plan, filled);  // the reference pairs across a crack left out
   TotalLagrangianSph<D> method(filled.particles, options);
   method.fixParticles(fixedParticles(plan, filled));  // [[surface_boundary]]: their surface particles clamped
   std::vector<SparseLoad> loads;
@@ -82,12 +78,7 @@ SolidCaseResult runSolidTotalLagrangianCase(const SolidPlan<D>& plan, Real spaci
   if (!plan.probes.empty()) loop.add(probes, scene.output.probeEvery);
   result.setupSeconds = setup.seconds();
   const RunStatistics stats = runCase(loop, *integrator, scene.integrator.endTime, plan, probes, folder, result,
-                                      [&](long particle) -> std::string {
-    if (particle >= filled.fill.size()) return "";
-    const Vec<D> x = filled.fill.position[static_cast<std::size_t>(particle)];
-    return "total-Lagrangian SPH on the solid, case " + result.name + ": particle at " +
-           scene::formatPoint(std::vector<Real>(x.data(), x.data() + D));
-  });
+                                      particleWhere(filled, "total-Lagrangian SPH", result.name));
   recordRun(result, stats);
   writeAndScoreProbes(plan, probes.series(), folder, result);
   return result;
