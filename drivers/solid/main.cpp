@@ -22,7 +22,6 @@
 #include "io/scene/Scene.hpp"
 #include "studies/solid/SolidStudy.hpp"
 
-#include <algorithm>
 #include <iomanip>
 #include <iostream>
 
@@ -45,13 +44,13 @@ int run(SceneReader& reader, const Scene& scene, const DriverOptions& options) {
       results.push_back(runSolidCase<D>(plan, dx, cells, folder, first, !options.quiet));
       first = false;
     }
-    if (std::find(plan.methods.begin(), plan.methods.end(), "reproducing_kernel") != plan.methods.end()) {
+    if (plan.runs("reproducing_kernel")) {
       results.push_back(runSolidCollocationCase<D>(plan, dx, folder, first, !options.quiet));
       first = false;
     }
-    if (std::find(plan.methods.begin(), plan.methods.end(), "updated_lagrangian_sph") != plan.methods.end())
+    if (plan.runs("updated_lagrangian_sph"))
       results.push_back(runSolidSphCase<D>(plan, dx, folder, !options.quiet));
-    if (std::find(plan.methods.begin(), plan.methods.end(), "total_lagrangian_sph") != plan.methods.end())
+    if (plan.runs("total_lagrangian_sph"))
       results.push_back(runSolidTotalLagrangianCase<D>(plan, dx, folder, !options.quiet));
   }
 
@@ -124,13 +123,13 @@ int run(SceneReader& reader, const Scene& scene, const DriverOptions& options) {
     summary.notes.add("very_weak_sph: the Galerkin variant on cut lattice cells (depth " + std::to_string(plan.depth) +
                       ", small-cell fraction " + mfwave::scene::formatNumber(plan.smallCellFraction) + ")" +
                       (plan.cells.size() > 1 ? ", with the staircase baseline" : ""));
-  if (std::find(plan.methods.begin(), plan.methods.end(), "reproducing_kernel") != plan.methods.end()) {
+  if (plan.runs("reproducing_kernel")) {
     summary.notes.add("reproducing_kernel: RK collocation (" + plan.collocation.describe() +
                       ") on the lattice nodes at least half a spacing inside the solid and nodes on its surfaces with "
                       "traction rows (cases rk_<spacing>; cut_cells counts its surface nodes)");
     for (const std::string& note : standInNotes(scene, methodNamed("reproducing_kernel"))) summary.notes.add(note);
   }
-  if (std::find(plan.methods.begin(), plan.methods.end(), "updated_lagrangian_sph") != plan.methods.end()) {
+  if (plan.runs("updated_lagrangian_sph")) {
     summary.notes.add("updated_lagrangian_sph: the SPH for solids on a body-fitted fill (cases ulsph_<spacing>; "
                       "cut_cells counts its surface particles), the Lamb study's small-amplitude choices (alpha = 1, "
                       "kernel-gradient correction), traction times " + mfwave::scene::formatNumber(kSmallAmplitude) +
@@ -138,7 +137,7 @@ int run(SceneReader& reader, const Scene& scene, const DriverOptions& options) {
                       " and cfl not used)");
     for (const std::string& note : standInNotes(scene, methodNamed("updated_lagrangian_sph"))) summary.notes.add(note);
   }
-  if (std::find(plan.methods.begin(), plan.methods.end(), "total_lagrangian_sph") != plan.methods.end()) {
+  if (plan.runs("total_lagrangian_sph")) {
     summary.notes.add("total_lagrangian_sph: the total-Lagrangian SPH on the same fill (cases tlsph_<spacing>), its "
                       "defaults (h = 1.3 dx, hourglass factor 1), the same small amplitude, the scene's integrator");
     for (const std::string& note : standInNotes(scene, methodNamed("total_lagrangian_sph"))) summary.notes.add(note);

@@ -6,11 +6,13 @@
 #include "core/Error.hpp"
 #include "integrators/Integrator.hpp"
 #include "io/run/RunSummary.hpp"
+#include "methods/collocation/ShapeFunctions.hpp"
 #include "observers/Observer.hpp"
 #include "observers/TimeLoop.hpp"
 #include "observers/TimeSeries.hpp"
 #include "studies/solid/SolidStudy.hpp"
 
+#include <algorithm>
 #include <functional>
 #include <sstream>
 #include <string>
@@ -75,6 +77,34 @@ RunStatistics runCase(TimeLoop& loop, Integrator& integrator, Real endTime, cons
                                "-probes.csv holds the probes up to the stop]",
                            e.step(), e.time(), e.particle());
   }
+}
+
+// The share of a surface point's tributary piece of surface (of size `spacing` along the surface) that
+// lies within `radius` of a load's centre, at `distance` from it: clamp((r - d) / s + 1/2, 0, 1). On
+// points s apart along a line it is the trapezoid rule's 1 inside, 1/2 at an edge on a point and 0
+// outside, and wherever the edges fall the total is the load's to O(s^2).
+inline Real surfaceLoadShare(Real radius, Real distance, Real spacing) {
+  return std::clamp((radius - distance) / spacing + 0.5, 0.0, 1.0);
+}
+
+// Each probe's row over the D components of a method's nodes: sum_J psi_J(x_p) (d_p . u_J) for shape
+// functions psi (RK collocation's own, or the particle methods' interpolation), times `scale`.
+template <int D>
+std::vector<std::vector<std::pair<Index, Real>>> shapeFunctionRows(const ShapeFunctions<D>& shapes,
+                                                                   const std::vector<SolidProbe<D>>& probes, Real scale) {
+  std::vector<std::vector<std::pair<Index, Real>>> rows;
+  ShapeFunctionValues<D> values;
+  for (const SolidProbe<D>& p : probes) {
+    shapes.evaluate(p.position, 0, values);
+    std::vector<std::pair<Index, Real>> row;
+    for (Index k = 0; k < values.size(); ++k)
+      for (int c = 0; c < D; ++c)
+        if (p.direction[c] != 0)
+          row.emplace_back(D * values.nodes[static_cast<std::size_t>(k)] + c,
+                           p.direction[c] * values.value[static_cast<std::size_t>(k)] * scale);
+    rows.push_back(std::move(row));
+  }
+  return rows;
 }
 
 // The sampler of probes that are fixed linear combinations of the state's entries: probe i reads

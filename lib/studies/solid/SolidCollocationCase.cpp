@@ -34,6 +34,7 @@
 #include "observers/TimeLoop.hpp"
 #include "particles/BoxFace.hpp"
 #include "studies/solid/SolidCase.hpp"
+#include "systems/SparseLoads.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -64,7 +65,7 @@ SolidCaseResult runSolidCollocationCase(const SolidPlan<D>& plan, Real spacing, 
 
   // the loads at the surface nodes: one vector over the rows per load, scaled by its history
   const Index rows = D * nodes.size();
-  std::vector<std::pair<Vector, const TimeFunction*>> loads;
+  std::vector<SparseLoad> loads;
   for (std::size_t l = 0; l < scene.loads.size(); ++l) {
     const LoadSpec& load = scene.loads[l];  // surface_traction: the catalogue refuses the others
     const Vec<D> centre = scene::vectorOf<D>(load.centre);
@@ -76,7 +77,7 @@ SolidCaseResult runSolidCollocationCase(const SolidPlan<D>& plan, Real spacing, 
       const Vec<D> x = nodes.position(i);
       if (solid.solid->surfaceName(x) != load.surface) continue;
       const Real s = nodes.surfaceSpacing[static_cast<std::size_t>(i)];
-      const Real w = std::clamp((load.radius - (x - centre).norm()) / s + 0.5, 0.0, 1.0);
+      const Real w = surfaceLoadShare(load.radius, (x - centre).norm(), s);
       if (w == 0) continue;
       const Vec<D> n = nodes.points.normal[static_cast<std::size_t>(i)];
       b.template segment<D>(D * i) = w * (pressure ? Vec<D>(-load.pressure * n) : vector);
@@ -85,13 +86,13 @@ SolidCaseResult runSolidCollocationCase(const SolidPlan<D>& plan, Real spacing, 
       throw InputError("load[" + std::to_string(l) + "].surface",
                        "no surface node of '" + load.surface + "' lies within " + scene::formatNumber(load.radius) +
                            " of " + scene::formatPoint(load.centre) + " at spacing " + scene::formatNumber(spacing));
-    loads.emplace_back(std::move(b), &load.timeFunction);
+    loads.push_back(nonzeroLoad(b, &load.timeFunction));
   }
   CollocationSystem assembled = assembleCollocation<D>(*shapes, nodes.points, solid.materials[0]);
   if (!loads.empty())
     assembled.load = [loads, rows](Real t, Vector& b) {
       b.setZero(rows);
-      for (const auto& [vector, history] : loads) b += (*history)(t) * vector;
+      addSparseLoads(loads, t, b.data());
     };
   ConstrainedCollocationSystem system(std::move(assembled));
 
@@ -106,14 +107,10 @@ SolidCaseResult runSolidCollocationCase(const SolidPlan<D>& plan, Real spacing, 
 
   // probes: u^h (or its rate) along each direction at its position
   Eigen::MatrixXd functionals = Eigen::MatrixXd::Zero(system.system().cols(), static_cast<Index>(plan.probes.size()));
+  const std::vector<std::vector<std::pair<Index, Real>>> probeRows = shapeFunctionRows(*shapes, plan.probes, 1.0);
   std::vector<bool> rate;
-  ShapeFunctionValues<D> values;
   for (std::size_t p = 0; p < plan.probes.size(); ++p) {
-    shapes->evaluate(plan.probes[p].position, 0, values);
-    for (Index k = 0; k < values.size(); ++k)
-      for (int c = 0; c < D; ++c)
-        functionals(values.nodes[static_cast<std::size_t>(k)] * D + c, static_cast<Index>(p)) +=
-            plan.probes[p].direction[c] * values.value[static_cast<std::size_t>(k)];
+    for (const auto& [dof, w] : probeRows[p]) functionals(dof, static_cast<Index>(p)) += w;
     rate.push_back(plan.probes[p].velocity);
   }
   const CollocationSampler sampler(system, functionals);

@@ -48,7 +48,7 @@ std::vector<std::pair<Index, Vec<D>>> surfaceForces(const SolidPlan<D>& plan, co
     const Real area = f.area[k];
     const Real s = D == 2 ? area : std::sqrt(area);
     if (!(s > 0)) continue;
-    const Real w = std::clamp((load.radius - (p - centre).norm()) / s + 0.5, 0.0, 1.0);
+    const Real w = surfaceLoadShare(load.radius, (p - centre).norm(), s);
     if (w == 0) continue;
     const Vec<D> traction = pressure ? Vec<D>(-load.pressure * f.normal[k]) : scene::vectorOf<D>(load.traction);
     out.emplace_back(i, Vec<D>(w * area * traction));
@@ -99,19 +99,7 @@ template <int D>
 std::vector<std::vector<std::pair<Index, Real>>> probeRows(const SolidPlan<D>& plan, const FilledSolid<D>& filled,
                                                            Real spacing, Real scale) {
   const ReproducingKernelShapeFunctions<D> shapes(filled.particles, 1, 2.5 * spacing);
-  std::vector<std::vector<std::pair<Index, Real>>> rows;
-  ShapeFunctionValues<D> values;
-  for (const SolidProbe<D>& p : plan.probes) {
-    shapes.evaluate(p.position, 0, values);
-    std::vector<std::pair<Index, Real>> row;
-    for (Index k = 0; k < values.size(); ++k)
-      for (int c = 0; c < D; ++c)
-        if (p.direction[c] != 0)
-          row.emplace_back(D * values.nodes[static_cast<std::size_t>(k)] + c,
-                           p.direction[c] * values.value[static_cast<std::size_t>(k)] * scale);
-    rows.push_back(std::move(row));
-  }
-  return rows;
+  return shapeFunctionRows(shapes, plan.probes, scale);
 }
 
 template struct FilledSolid<2>;

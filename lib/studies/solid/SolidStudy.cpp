@@ -20,6 +20,7 @@
 #include "observers/TimeLoop.hpp"
 #include "particles/BoxFace.hpp"
 #include "systems/LinearSecondOrderSystem.hpp"
+#include "systems/SparseLoads.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -115,6 +116,16 @@ long shapeIndex(SceneReader& reader, const std::string& name) {
   return -1;
 }
 
+// Refuses at `key` a surface name that is not '<shape>.<surface>' of a [[shape]] (or of the box,
+// where `boxToo`).
+void checkSurfaceName(SceneReader& reader, const std::string& key, const std::string& surface, bool boxToo) {
+  const std::size_t dot = surface.find('.');
+  const std::string shape = surface.substr(0, dot);
+  if (dot == std::string::npos || ((!boxToo || shape != "box") && shapeIndex(reader, shape) < 0))
+    reader.fail(key, "'" + surface + "' is not '<shape>.<surface>' of a [[shape]] " +
+                         (boxToo ? "(or box)" : "(the box's faces take [[boundary]])"));
+}
+
 }  // namespace
 
 std::vector<Real> lambHalfPlaneSeries(const HalfPlaneLamb& lamb, const Material& material, const std::vector<Real>& x,
@@ -199,19 +210,14 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
   for (std::size_t i = 0; i < reader.count("surface_boundary"); ++i) {
     const std::string key = scene::childPath(scene::indexPath("surface_boundary", i), "surface");
     const std::string surface = reader.string(key);
-    const std::size_t dot = surface.find('.');
-    if (dot == std::string::npos || shapeIndex(reader, surface.substr(0, dot)) < 0)
-      reader.fail(key, "'" + surface + "' is not '<shape>.<surface>' of a [[shape]] (the box's faces take [[boundary]])");
+    checkSurfaceName(reader, key, surface, false);
     (void)reader.string(scene::childPath(scene::indexPath("surface_boundary", i), "type"));  // fixed
     plan.fixedSurfaces.push_back(surface);
   }
   const SolidFeatures asked{!plan.solid.regions.empty(), !plan.solid.cracks.empty(), !plan.fixedSurfaces.empty()};
   for (const std::string& name : plan.methods)
     for (const UnsupportedFeature& f : unsupportedSolidFeatures(methodNamed(name), asked)) reader.fail(f.key, f.message());
-  const auto runs = [&plan](const char* name) {
-    return std::find(plan.methods.begin(), plan.methods.end(), name) != plan.methods.end();
-  };
-  if (runs("reproducing_kernel")) {
+  if (plan.runs("reproducing_kernel")) {
     if (scene.method.name == "reproducing_kernel") {
       plan.collocation = readCollocationSpec(reader, scene.method.name, kProgram);
     } else {
@@ -220,10 +226,6 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
     const CollocationGrowingModes growth =
         rkGrowingModes(D, plan.collocation.order, plan.collocation.supportRatio, plan.solid.materials[0]);
     if (growth.growing()) reader.fail("method.support_ratio", growth.what + "; " + growth.advice);
-    for (std::size_t i = 0; i < plan.solid.regions.size(); ++i)
-      if (!plan.solid.initialVelocity[i].empty() || !plan.solid.initialDisplacement[i].empty())
-        reader.fail(scene::childPath(scene::indexPath("region", i), "initial_velocity"),
-                    "RK collocation in the solid study starts from rest");
   }
   const GeometrySpec& g = scene.geometry;
 
@@ -241,10 +243,7 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
       reader.fail(key + ".type", "the solid study takes point_force, moment_tensor and surface_traction loads (a "
                                  "surface_patch is a box face's: use surface_traction on '<shape>.<surface>')");
     if (load.type != LoadType::SurfaceTraction) continue;
-    const std::size_t dot = load.surface.find('.');
-    const std::string shape = load.surface.substr(0, dot);
-    if (dot == std::string::npos || (shape != "box" && shapeIndex(reader, shape) < 0))
-      reader.fail(key + ".surface", "'" + load.surface + "' is not '<shape>.<surface>' of a [[shape]] (or box)");
+    checkSurfaceName(reader, key + ".surface", load.surface, true);
     if (std::find(plan.fixedSurfaces.begin(), plan.fixedSurfaces.end(), load.surface) != plan.fixedSurfaces.end())
       reader.fail(key + ".surface", "'" + load.surface + "' is held fixed by a [[surface_boundary]]: a load there does nothing");
   }
@@ -344,7 +343,7 @@ SolidPlan<D> readSolidPlan(SceneReader& reader, const Scene& scene) {
   plan.depth = static_cast<int>(reader.integer("method.cut_depth"));
   plan.smallCellFraction = reader.number("method.small_cell_fraction");
   (void)reader.string("method.variant");
-  if (runs("very_weak_sph")) {
+  if (plan.runs("very_weak_sph")) {
     plan.cells.push_back(cells);
     if (staircaseToo) plan.cells.push_back(CutCells::Staircase);
   }
@@ -416,11 +415,13 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
   result.smallestKept = method.smallestKeptFraction();
 
   // loads, each a fixed vector scaled by its time function
-  std::vector<std::pair<Vector, const TimeFunction*>> loads;
+  std::vector<SparseLoad> loads;
   for (std::size_t i = 0; i < scene.loads.size(); ++i) {
     const LoadSpec& load = scene.loads[i];
     if (load.type == LoadType::PointForce) {
-      loads.emplace_back(method.pointForce(scene::vectorOf<D>(load.position), load.amplitude * scene::vectorOf<D>(load.direction)), &load.timeFunction);
+      loads.push_back(nonzeroLoad(method.pointForce(scene::vectorOf<D>(load.position),
+                                                    load.amplitude * scene::vectorOf<D>(load.direction)),
+                                  &load.timeFunction));
     } else if (load.type == LoadType::MomentTensor) {
       Mat<D> m;
       if constexpr (D == 2) {
@@ -429,7 +430,7 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
         m << load.moment[0], load.moment[3], load.moment[4], load.moment[3], load.moment[1], load.moment[5], load.moment[4],
             load.moment[5], load.moment[2];
       }
-      loads.emplace_back(method.momentTensor(scene::vectorOf<D>(load.position), m), &load.timeFunction);
+      loads.push_back(nonzeroLoad(method.momentTensor(scene::vectorOf<D>(load.position), m), &load.timeFunction));
     } else {
       const Vec<D> centre = scene::vectorOf<D>(load.centre);
       const Real radius = load.radius;
@@ -447,13 +448,13 @@ SolidCaseResult runSolidCase(const SolidPlan<D>& plan, Real spacing, CutCells ce
         throw InputError("load[" + std::to_string(i) + "].surface",
                          "no point of surface '" + surface + "' lies within " + scene::formatNumber(radius) + " of " +
                              scene::formatPoint(load.centre) + " (the solid's surfaces are named '<shape>.<surface>')");
-      loads.emplace_back(std::move(f), &load.timeFunction);
+      loads.push_back(nonzeroLoad(f, &load.timeFunction));
     }
   }
   const Index n = method.size();
   LinearSecondOrderSystem system(method.mass(), method.damping(), method.stiffness(), [&loads, n](Real t, Vector& f) {
     f.setZero(n);
-    for (const auto& [vector, history] : loads) f += (*history)(t) * vector;
+    addSparseLoads(loads, t, f.data());
   });
 
   // the step: cfl of the power iteration's stable step, or the scene's fixed step

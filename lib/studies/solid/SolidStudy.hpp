@@ -14,6 +14,7 @@
 #include "wiring/CollocationSpec.hpp"
 #include "wiring/SolidScene.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,6 +50,9 @@ struct SolidPlan {
   std::vector<SolidProbe<D>> probes;
   std::vector<Real> spacings;  // the scene's first
   std::vector<std::string> methods;  // study.methods: the methods of the catalogue that run solids
+  bool runs(const std::string& method) const {
+    return std::find(methods.begin(), methods.end(), method) != methods.end();
+  }
   std::vector<CutCells> cells; // very_weak_sph: cut, then staircase when compared
   CollocationSpec collocation; // reproducing_kernel: its shape functions
   std::vector<std::string> fixedSurfaces;  // [[surface_boundary]] of type fixed: '<shape>.<surface>'
